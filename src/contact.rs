@@ -1,0 +1,89 @@
+//! The contact law between rope and pulley lining, shared by every model level.
+//!
+//! Contact force per radian of wrap: `n = T − m'v²` (N/rad), the rope tension less the
+//! centrifugal tension of a rope of `m'` kg/m running at `v` m/s over the pulley.
+//! Coulomb's law: `|q| ≤ μ n`; utilization `u = |q| / (μ n) ∈ [0, 1]`.
+//! A node slips (`slip+` / `slip-` by the sign of q) when `u ≥ 0.999`, else it sticks.
+
+use crate::wrap::Piece;
+use std::fmt;
+
+/// Utilization at or above which a node is reported as slipping (MODEL §2).
+pub const SLIP_UTILIZATION: f64 = 0.999;
+/// Friction below this fraction of μn counts as zero for the positive/reverse arcs (MODEL §2).
+pub const ARC_THRESHOLD: f64 = 0.001;
+
+/// Contact state of a node.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum NodeState {
+    Stick,
+    SlipPositive,
+    SlipNegative,
+}
+
+impl NodeState {
+    pub fn as_str(self) -> &'static str {
+        match self {
+            NodeState::Stick => "stick",
+            NodeState::SlipPositive => "slip+",
+            NodeState::SlipNegative => "slip-",
+        }
+    }
+}
+
+impl fmt::Display for NodeState {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+/// Coulomb friction with a centrifugal correction of the contact force.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ContactLaw {
+    pub mu: f64,
+    /// m'v², N per rope.
+    pub centrifugal_n: f64,
+}
+
+impl ContactLaw {
+    pub fn new(mu: f64, centrifugal_n: f64) -> Self {
+        Self { mu, centrifugal_n }
+    }
+
+    /// Contact force per radian, `n = T − m'v²` (N/rad).
+    pub fn normal_n_per_rad(&self, tension_n: f64) -> f64 {
+        tension_n - self.centrifugal_n
+    }
+
+    /// `u = |q| / (μ n)`, clamped to [0, 1] against round-off of exact slip pieces.
+    pub fn utilization_of(&self, tension_n: f64, friction_n_per_rad: f64) -> f64 {
+        let capacity = self.mu * self.normal_n_per_rad(tension_n);
+        if capacity <= 0.0 {
+            return 1.0;
+        }
+        (friction_n_per_rad.abs() / capacity).min(1.0)
+    }
+
+    pub fn utilization(&self, piece: &Piece, theta_rad: f64) -> f64 {
+        self.utilization_of(piece.tension_n(theta_rad), piece.friction_n_per_rad(theta_rad))
+    }
+
+    /// Contact state from utilization and the sign of friction.
+    pub fn state(&self, utilization: f64, friction_n_per_rad: f64) -> NodeState {
+        if utilization < SLIP_UTILIZATION {
+            NodeState::Stick
+        } else if friction_n_per_rad > 0.0 {
+            NodeState::SlipPositive
+        } else {
+            NodeState::SlipNegative
+        }
+    }
+
+    /// Friction clamped into the Coulomb cone `[−μn, μn]`. Exact pieces satisfy the law
+    /// analytically; this removes the last-ulp excess of evaluating e^{kθ} in floating point,
+    /// so that every reported row obeys `|q| ≤ μn` exactly.
+    pub fn clamp_friction(&self, tension_n: f64, friction_n_per_rad: f64) -> f64 {
+        let cap = (self.mu * self.normal_n_per_rad(tension_n)).max(0.0);
+        friction_n_per_rad.clamp(-cap, cap)
+    }
+}

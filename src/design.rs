@@ -1,0 +1,114 @@
+//! The validated design: what a sheet describes once every value has been checked.
+//! All quantities are SI; angles are stored in radians (`_rad`) and reported in degrees.
+
+/// Standard gravity, used unless the sheet gives `g_m_s2`.
+pub const STANDARD_GRAVITY_M_S2: f64 = 9.81;
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct Design {
+    /// The sheet's file name as given on the command line (for messages and reports).
+    pub sheet: String,
+    pub title: String,
+    pub g_m_s2: f64,
+    pub pulley: Pulley,
+    pub rope: Rope,
+    pub requirements: Requirements,
+    pub scenes: Vec<Scene>,
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct Pulley {
+    pub diameter_m: f64,
+    pub mu: f64,
+    pub wrap_angle_rad: f64,
+    pub wrap_source: WrapSource,
+}
+
+/// Where the wrap angle came from.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum WrapSource {
+    Given,
+    /// Computed from the guide-pulley geometry (MODEL §3).
+    GuidePulley {
+        diameter_m: f64,
+        vertical_m: f64,
+        horizontal_m: f64,
+    },
+}
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Rope {
+    pub count: u32,
+    pub mass_per_m_kg: f64,
+    /// Axial stiffness EA of one rope (N).
+    pub ea_n: f64,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Requirements {
+    pub static_safety_factor_min: f64,
+    pub dynamic_safety_factor_min: f64,
+}
+
+impl Default for Requirements {
+    /// Coal-mine design practice: 1.75 static, 1.25 dynamic.
+    fn default() -> Self {
+        Self { static_safety_factor_min: 1.75, dynamic_safety_factor_min: 1.25 }
+    }
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct Scene {
+    pub name: String,
+    pub kind: SceneKind,
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub enum SceneKind {
+    Loads(LoadsScene),
+}
+
+impl SceneKind {
+    pub fn name(&self) -> &'static str {
+        match self {
+            SceneKind::Loads(_) => "loads",
+        }
+    }
+}
+
+/// A steady state under constant end loads (INTERFACE `kind = "loads"`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LoadsScene {
+    pub ends: EndLoads,
+    /// Acceleration of side 1 upward (m/s²).
+    pub accel_m_s2: f64,
+    /// Rope speed, positive from side 1 to side 2 (m/s).
+    pub speed_m_s: f64,
+    /// Which way the rope last ran (used when the speed is 0).
+    pub direction: Direction,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum EndLoads {
+    /// Everything hanging below each tangent point, all ropes together (kg).
+    Masses { m1_kg: f64, m2_kg: f64 },
+    /// Tension per rope at each tangent point in this state (N).
+    Tensions { t1_n: f64, t2_n: f64 },
+}
+
+/// Travel direction: `Lift` = side 1 goes up, the rope runs from side 1 to side 2 (v > 0).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Direction {
+    Lift,
+    Lower,
+}
+
+impl Direction {
+    /// +1 for lift, −1 for lower.
+    pub fn sign(self) -> f64 {
+        match self {
+            Direction::Lift => 1.0,
+            Direction::Lower => -1.0,
+        }
+    }
+}

@@ -1,0 +1,253 @@
+//! Level 0: the classical anti-slip checks in closed form (MODEL §3).
+//!
+//! * end tensions per rope: `T1 = m1 (g + a) / n`, `T2 = m2 (g − a) / n` (a > 0: side 1 accelerates up);
+//! * Euler/capstan limit `e^{μα}` and the tension ratio with the centrifugal term,
+//!   `r = (T_hi − m'v²) / (T_lo − m'v²)`; gross slip when `r > e^{μα}`;
+//! * anti-slip safety factor `σ = (T_lo − m'v²)(e^{μα} − 1) / (T_hi − T_lo)`, static at a = 0, v = 0;
+//! * dynamic (active) angle `β = ln r / μ`, reserve angle `α − β`, critical friction `μ_c = ln r / α`.
+//!
+//! Assumptions: quasi-static rope on a rigid groove, one friction coefficient, all ropes share
+//! the load equally.
+
+use crate::design::{Design, EndLoads, LoadsScene, Rope};
+use serde::Serialize;
+
+/// Tensions at the two tangent points (per rope) and the state that produced them.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct EndState {
+    pub t1_n: f64,
+    pub t2_n: f64,
+    pub speed_m_s: f64,
+    pub accel_m_s2: f64,
+    /// Centrifugal tension m'v² of one rope (N).
+    pub centrifugal_n: f64,
+}
+
+impl EndState {
+    /// The state of a `loads` scene: `T1 = m1(g + a)/n`, `T2 = m2(g − a)/n`, or the given tensions.
+    pub fn of(scene: &LoadsScene, g_m_s2: f64, rope: &Rope) -> Self {
+        let (t1_n, t2_n) = match scene.ends {
+            EndLoads::Masses { m1_kg, m2_kg } => {
+                let n = f64::from(rope.count);
+                (m1_kg * (g_m_s2 + scene.accel_m_s2) / n, m2_kg * (g_m_s2 - scene.accel_m_s2) / n)
+            }
+            EndLoads::Tensions { t1_n, t2_n } => (t1_n, t2_n),
+        };
+        Self {
+            t1_n,
+            t2_n,
+            speed_m_s: scene.speed_m_s,
+            accel_m_s2: scene.accel_m_s2,
+            centrifugal_n: rope.mass_per_m_kg * scene.speed_m_s * scene.speed_m_s,
+        }
+    }
+
+    /// The same hoist at rest (a = 0, v = 0). Given tensions are taken as `m(g ± a)/n` and
+    /// the inertial part removed: `T1s = T1 g/(g + a)`, `T2s = T2 g/(g − a)`.
+    pub fn at_rest(scene: &LoadsScene, g_m_s2: f64, rope: &Rope) -> Self {
+        let a = scene.accel_m_s2;
+        let (t1_n, t2_n) = match scene.ends {
+            EndLoads::Masses { m1_kg, m2_kg } => {
+                let n = f64::from(rope.count);
+                (m1_kg * g_m_s2 / n, m2_kg * g_m_s2 / n)
+            }
+            EndLoads::Tensions { t1_n, t2_n } => (t1_n * g_m_s2 / (g_m_s2 + a), t2_n * g_m_s2 / (g_m_s2 - a)),
+        };
+        Self { t1_n, t2_n, speed_m_s: 0.0, accel_m_s2: 0.0, centrifugal_n: 0.0 }
+    }
+
+    pub fn t_hi_n(&self) -> f64 {
+        self.t1_n.max(self.t2_n)
+    }
+
+    pub fn t_lo_n(&self) -> f64 {
+        self.t1_n.min(self.t2_n)
+    }
+
+    /// `(T_hi − m'v²) / (T_lo − m'v²)`.
+    pub fn tension_ratio(&self) -> f64 {
+        (self.t_hi_n() - self.centrifugal_n) / (self.t_lo_n() - self.centrifugal_n)
+    }
+}
+
+/// Euler/capstan limit `e^{μα}`.
+pub fn euler_limit(mu: f64, wrap_angle_rad: f64) -> f64 {
+    (mu * wrap_angle_rad).exp()
+}
+
+/// Anti-slip safety factor `σ = (T_lo − m'v²)(e^{μα} − 1)/(T_hi − T_lo)`;
+/// `None` when the tensions are equal (no tension difference: unbounded margin).
+pub fn safety_factor(state: &EndState, euler_limit: f64) -> Option<f64> {
+    let diff = state.t_hi_n() - state.t_lo_n();
+    if diff <= 0.0 {
+        return None;
+    }
+    let sf = (state.t_lo_n() - state.centrifugal_n) * (euler_limit - 1.0) / diff;
+    sf.is_finite().then_some(sf)
+}
+
+/// A number with a name and a unit, as printed in a check.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Quantity {
+    pub name: String,
+    pub value: f64,
+    pub unit: &'static str,
+}
+
+fn q(name: &str, value: f64, unit: &'static str) -> Quantity {
+    Quantity { name: name.to_string(), value, unit }
+}
+
+/// How a check's value compares with its limit.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Relation {
+    AtMost,
+    AtLeast,
+}
+
+/// One design check, with everything needed to redo it by hand.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Check {
+    pub name: &'static str,
+    pub formula: &'static str,
+    pub inputs: Vec<Quantity>,
+    pub intermediates: Vec<Quantity>,
+    /// `None` for an unbounded safety factor (equal tensions).
+    pub value: Option<f64>,
+    pub relation: Relation,
+    pub limit: f64,
+    pub pass: bool,
+}
+
+/// Everything level 0 gives for one state.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Classical {
+    pub state: EndState,
+    pub static_state: EndState,
+    pub mu: f64,
+    pub wrap_angle_rad: f64,
+    pub euler_limit: f64,
+    pub tension_ratio: f64,
+    pub safety_factor: Option<f64>,
+    pub static_safety_factor: Option<f64>,
+    /// At the scene's own acceleration; `None` for a scene at a = 0 (no dynamic state).
+    pub dynamic_safety_factor: Option<f64>,
+    pub dynamic_angle_rad: f64,
+    pub reserve_angle_rad: f64,
+    pub critical_mu: f64,
+    pub gross_slip: bool,
+    pub checks: Vec<Check>,
+}
+
+impl Classical {
+    pub fn checks_pass(&self) -> bool {
+        self.checks.iter().all(|c| c.pass)
+    }
+}
+
+/// Level 0 for a `loads` scene.
+pub fn loads(design: &Design, scene: &LoadsScene) -> Classical {
+    let state = EndState::of(scene, design.g_m_s2, &design.rope);
+    let static_state = EndState::at_rest(scene, design.g_m_s2, &design.rope);
+    classical(design, state, static_state)
+}
+
+/// Level 0 for a given state and its state at rest.
+pub fn classical(design: &Design, state: EndState, static_state: EndState) -> Classical {
+    let mu = design.pulley.mu;
+    let alpha = design.pulley.wrap_angle_rad;
+    let limit = euler_limit(mu, alpha);
+    let ratio = state.tension_ratio();
+    let ln_ratio = ratio.ln();
+    let gross_slip = ratio > limit;
+    let sf = safety_factor(&state, limit);
+    let static_sf = safety_factor(&static_state, limit);
+    let dynamic_sf = if state.accel_m_s2 != 0.0 { sf } else { None };
+    let req = design.requirements;
+
+    let mut checks = vec![Check {
+        name: "gross slip (Euler/capstan)",
+        formula: "(T_hi − m'v²) / (T_lo − m'v²) ≤ e^{μα}",
+        inputs: vec![
+            q("T1", state.t1_n, "N"),
+            q("T2", state.t2_n, "N"),
+            q("m'v²", state.centrifugal_n, "N"),
+            q("μ", mu, ""),
+            q("α", alpha.to_degrees(), "deg"),
+        ],
+        intermediates: vec![
+            q("μα", mu * alpha, "rad"),
+            q("e^{μα}", limit, ""),
+            q("ratio", ratio, ""),
+            q("β = ln(ratio)/μ", (ln_ratio / mu).to_degrees(), "deg"),
+        ],
+        value: Some(ratio),
+        relation: Relation::AtMost,
+        limit,
+        pass: !gross_slip,
+    }];
+    checks.push(safety_check(
+        "static safety factor",
+        "σ_s = T_lo (e^{μα} − 1) / (T_hi − T_lo), at rest (a = 0, v = 0)",
+        &static_state,
+        limit,
+        static_sf,
+        req.static_safety_factor_min,
+    ));
+    if state.accel_m_s2 != 0.0 {
+        checks.push(safety_check(
+            "dynamic safety factor",
+            "σ_d = (T_lo − m'v²)(e^{μα} − 1) / (T_hi − T_lo), this state",
+            &state,
+            limit,
+            dynamic_sf,
+            req.dynamic_safety_factor_min,
+        ));
+    }
+
+    Classical {
+        state,
+        static_state,
+        mu,
+        wrap_angle_rad: alpha,
+        euler_limit: limit,
+        tension_ratio: ratio,
+        safety_factor: sf,
+        static_safety_factor: static_sf,
+        dynamic_safety_factor: dynamic_sf,
+        dynamic_angle_rad: ln_ratio / mu,
+        reserve_angle_rad: alpha - ln_ratio / mu,
+        critical_mu: ln_ratio / alpha,
+        gross_slip,
+        checks,
+    }
+}
+
+fn safety_check(
+    name: &'static str,
+    formula: &'static str,
+    state: &EndState,
+    euler_limit: f64,
+    value: Option<f64>,
+    minimum: f64,
+) -> Check {
+    Check {
+        name,
+        formula,
+        inputs: vec![
+            q("T1", state.t1_n, "N"),
+            q("T2", state.t2_n, "N"),
+            q("m'v²", state.centrifugal_n, "N"),
+            q("e^{μα}", euler_limit, ""),
+        ],
+        intermediates: vec![
+            q("T_lo − m'v²", state.t_lo_n() - state.centrifugal_n, "N"),
+            q("T_hi − T_lo", state.t_hi_n() - state.t_lo_n(), "N"),
+        ],
+        value,
+        relation: Relation::AtLeast,
+        limit: minimum,
+        pass: value.is_none_or(|v| v >= minimum),
+    }
+}

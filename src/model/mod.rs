@@ -1,0 +1,7 @@
+//! Model levels. Each level answers a scene with more physics than the one before:
+//! level 0 the classical closed-form checks, level 1 the steady rolling distribution of
+//! creep theory. All levels share the wrap discretization ([`crate::wrap`]) and the contact
+//! law ([`crate::contact`]).
+
+pub mod level0;
+pub mod level1;

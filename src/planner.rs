@@ -1,0 +1,55 @@
+//! The scene planner: the cheapest model level that answers what a scene asks for (MODEL §7).
+//!
+//! | scene | asks for | level |
+//! |---|---|---|
+//! | any | anti-slip checks only (`wrapcalc check`, `--level 0`) | 0 (closed form) |
+//! | `loads` | checks + distribution | 1 (creep theory, exact for constant end loads) |
+
+use crate::design::{Scene, SceneKind};
+
+/// Highest level this version implements.
+pub const MAX_LEVEL: u8 = 1;
+
+/// What the caller wants from a run.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Request {
+    /// Level-0 checks only (`wrapcalc check`).
+    ChecksOnly,
+    /// Everything a scene's kind can give, at the level the planner picks or the one forced.
+    Full { forced_level: Option<u8> },
+}
+
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Plan {
+    pub level: u8,
+    pub reason: String,
+}
+
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("scene \"{scene}\": level {level} is not available in this version (levels 0–{MAX_LEVEL}); use --level auto")]
+pub struct PlanError {
+    pub scene: String,
+    pub level: u8,
+}
+
+/// Chooses the level for one scene.
+pub fn plan(scene: &Scene, request: Request) -> Result<Plan, PlanError> {
+    match (request, &scene.kind) {
+        (Request::ChecksOnly, _) => {
+            Ok(Plan { level: 0, reason: "anti-slip checks only: closed form (level 0)".into() })
+        }
+        (Request::Full { forced_level: Some(level) }, _) if level > MAX_LEVEL => {
+            Err(PlanError { scene: scene.name.clone(), level })
+        }
+        (Request::Full { forced_level: Some(0) }, _) => {
+            Ok(Plan { level: 0, reason: "forced by --level 0: checks only, no distribution".into() })
+        }
+        (Request::Full { forced_level: Some(level) }, SceneKind::Loads(_)) => {
+            Ok(Plan { level, reason: format!("forced by --level {level}") })
+        }
+        (Request::Full { forced_level: None }, SceneKind::Loads(_)) => Ok(Plan {
+            level: 1,
+            reason: "constant end loads: the steady distribution of creep theory is exact (level 1)".into(),
+        }),
+    }
+}

@@ -1,0 +1,99 @@
+//! Reports: one small module per output format, and the writer that puts a report in place
+//! whole or not at all.
+//!
+//! A report is written into a fresh temporary directory beside the target and renamed into
+//! place; an existing report is moved aside first and deleted only once the new one is in
+//! place, so a failure never leaves a half-written or half-overwritten report.
+
+pub mod csv_out;
+pub mod plot;
+pub mod summary;
+pub mod table;
+
+use crate::run::RunResult;
+use std::fs::{self, File};
+use std::io::BufWriter;
+use std::path::{Path, PathBuf};
+use summary::Summary;
+
+#[derive(Debug, thiserror::Error)]
+pub enum ReportError {
+    #[error("cannot write the report to {path}: {source}")]
+    Io { path: String, source: std::io::Error },
+    #[error("cannot write {path}: {source}")]
+    Csv { path: String, source: csv::Error },
+    #[error(transparent)]
+    Plot(#[from] plot::PlotError),
+}
+
+fn io(path: &Path) -> impl FnOnce(std::io::Error) -> ReportError + '_ {
+    move |source| ReportError::Io { path: path.display().to_string(), source }
+}
+
+/// What to write besides the summary.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ReportOptions {
+    pub plots: bool,
+}
+
+/// Writes the complete report for `run` to `dir`, atomically.
+pub fn write(dir: &Path, summary: &Summary, run: &RunResult, options: ReportOptions) -> Result<(), ReportError> {
+    let parent = match dir.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
+        _ => PathBuf::from("."),
+    };
+    fs::create_dir_all(&parent).map_err(io(&parent))?;
+    let staging = tempfile::Builder::new().prefix(".wrapcalc-new-").tempdir_in(&parent).map_err(io(&parent))?;
+    write_into(staging.path(), summary, run, options)?;
+    swap_into_place(staging, dir, &parent)
+}
+
+fn write_into(dir: &Path, summary: &Summary, run: &RunResult, options: ReportOptions) -> Result<(), ReportError> {
+    let json_path = dir.join("summary.json");
+    fs::write(&json_path, summary.to_json() + "\n").map_err(io(&json_path))?;
+    let csv_path = dir.join("summary.csv");
+    let f = File::create(&csv_path).map_err(io(&csv_path))?;
+    csv_out::write_summary(BufWriter::new(f), summary)
+        .map_err(|source| ReportError::Csv { path: csv_path.display().to_string(), source })?;
+    for scene in &run.scenes {
+        let Some(wrap) = &scene.wrap else { continue };
+        let scene_dir = dir.join(&scene.name);
+        fs::create_dir_all(&scene_dir).map_err(io(&scene_dir))?;
+        let dist_path = scene_dir.join("distribution.csv");
+        let f = File::create(&dist_path).map_err(io(&dist_path))?;
+        csv_out::write_distribution(BufWriter::new(f), &[&wrap.distribution])
+            .map_err(|source| ReportError::Csv { path: dist_path.display().to_string(), source })?;
+        if options.plots {
+            let title =
+                format!("{} — level {}, {}", scene.name, scene.plan.level, table::state_label(&scene.classical.state));
+            plot::plot_distribution(&scene_dir.join("distribution.png"), &title, &wrap.distribution)?;
+        }
+    }
+    Ok(())
+}
+
+/// Moves the staged report to `dir`, replacing an existing one without ever deleting it first.
+fn swap_into_place(staging: tempfile::TempDir, dir: &Path, parent: &Path) -> Result<(), ReportError> {
+    let old = if dir.exists() {
+        let aside = tempfile::Builder::new().prefix(".wrapcalc-old-").tempdir_in(parent).map_err(io(parent))?;
+        let aside_path = aside.keep();
+        // The rename target must not exist: move the old report into the fresh directory.
+        let old_path = aside_path.join("report");
+        fs::rename(dir, &old_path).map_err(io(dir))?;
+        Some((aside_path, old_path))
+    } else {
+        None
+    };
+    let staged = staging.keep();
+    if let Err(e) = fs::rename(&staged, dir) {
+        if let Some((_, old_path)) = &old {
+            let _ = fs::rename(old_path, dir);
+        }
+        let _ = fs::remove_dir_all(&staged);
+        return Err(io(dir)(e));
+    }
+    if let Some((aside_path, _)) = old {
+        let _ = fs::remove_dir_all(aside_path);
+    }
+    Ok(())
+}

@@ -1,0 +1,125 @@
+//! The scalar summary of a run, as written to summary.json and summary.csv (INTERFACE.md).
+
+use crate::model::level0::Check;
+use crate::roots::RootStats;
+use crate::run::{RunResult, SceneResult};
+use serde::Serialize;
+
+/// One scene's scalar fields, in the order INTERFACE.md lists them; `None` is null / empty.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SceneSummary {
+    pub name: String,
+    pub kind: &'static str,
+    pub level: u8,
+    pub level_reason: String,
+    pub t_s: Option<f64>,
+    pub t1_n: f64,
+    pub t2_n: f64,
+    pub speed_m_s: f64,
+    pub accel_m_s2: f64,
+    pub mu: f64,
+    pub wrap_angle_deg: f64,
+    pub euler_limit: f64,
+    pub tension_ratio: f64,
+    pub safety_factor: Option<f64>,
+    pub static_safety_factor: Option<f64>,
+    pub dynamic_safety_factor: Option<f64>,
+    pub dynamic_angle_deg: f64,
+    pub reserve_angle_deg: f64,
+    pub idle_arc_deg: Option<f64>,
+    pub positive_arc_deg: Option<f64>,
+    pub reverse_arc_deg: Option<f64>,
+    pub jdp_deg: Option<f64>,
+    pub max_utilization: Option<f64>,
+    pub gross_slip: bool,
+    pub critical_mu: f64,
+    pub checks_pass: bool,
+    pub nodes: Option<usize>,
+    pub runtime_ms: f64,
+    /// Extension: centrifugal tension m'v² per rope (N).
+    pub centrifugal_n: f64,
+}
+
+impl SceneSummary {
+    pub fn of(r: &SceneResult) -> Self {
+        let c = &r.classical;
+        let w = r.wrap.as_ref().map(|w| &w.summary);
+        Self {
+            name: r.name.clone(),
+            kind: r.kind,
+            level: r.plan.level,
+            level_reason: r.plan.reason.clone(),
+            t_s: None,
+            t1_n: c.state.t1_n,
+            t2_n: c.state.t2_n,
+            speed_m_s: c.state.speed_m_s,
+            accel_m_s2: c.state.accel_m_s2,
+            mu: c.mu,
+            wrap_angle_deg: c.wrap_angle_rad.to_degrees(),
+            euler_limit: c.euler_limit,
+            tension_ratio: c.tension_ratio,
+            safety_factor: c.safety_factor,
+            static_safety_factor: c.static_safety_factor,
+            dynamic_safety_factor: c.dynamic_safety_factor,
+            dynamic_angle_deg: c.dynamic_angle_rad.to_degrees(),
+            reserve_angle_deg: c.reserve_angle_rad.to_degrees(),
+            idle_arc_deg: w.map(|w| w.idle_arc_rad.to_degrees()),
+            positive_arc_deg: w.map(|w| w.positive_arc_rad.to_degrees()),
+            reverse_arc_deg: w.map(|w| w.reverse_arc_rad.to_degrees()),
+            jdp_deg: w.and_then(|w| w.jdp_rad.map(f64::to_degrees)),
+            max_utilization: w.map(|w| w.max_utilization),
+            gross_slip: c.gross_slip,
+            critical_mu: c.critical_mu,
+            checks_pass: r.checks_pass(),
+            nodes: r.nodes,
+            runtime_ms: r.runtime_ms,
+            centrifugal_n: c.state.centrifugal_n,
+        }
+    }
+}
+
+/// A scene in summary.json: the scalar fields plus its checks and solver verdicts.
+#[derive(Debug, Clone, Serialize)]
+pub struct SceneJson {
+    #[serde(flatten)]
+    pub summary: SceneSummary,
+    pub checks: Vec<Check>,
+    pub root_finding: Option<RootStats>,
+}
+
+/// The whole summary.json document.
+#[derive(Debug, Clone, Serialize)]
+pub struct Summary {
+    pub sheet: String,
+    pub title: String,
+    pub version: &'static str,
+    pub all_checks_pass: bool,
+    pub runtime_ms: f64,
+    pub scenes: Vec<SceneJson>,
+}
+
+impl Summary {
+    pub fn of(sheet: &str, title: &str, run: &RunResult) -> Self {
+        Self {
+            sheet: sheet.to_string(),
+            title: title.to_string(),
+            version: env!("CARGO_PKG_VERSION"),
+            all_checks_pass: run.all_checks_pass(),
+            runtime_ms: run.runtime_ms,
+            scenes: run
+                .scenes
+                .iter()
+                .map(|s| SceneJson {
+                    summary: SceneSummary::of(s),
+                    checks: s.classical.checks.clone(),
+                    root_finding: s.wrap.as_ref().map(|w| w.summary.roots),
+                })
+                .collect(),
+        }
+    }
+
+    pub fn to_json(&self) -> String {
+        // Serializing plain structs of finite numbers and strings cannot fail.
+        serde_json::to_string_pretty(self).unwrap_or_else(|e| format!("{{\"error\": \"{e}\"}}"))
+    }
+}

@@ -1,0 +1,136 @@
+//! The human report on the terminal: a table of scenes, then every check with its formula,
+//! inputs and intermediate values so that it can be redone by hand.
+
+use crate::model::level0::{Check, EndState, Relation};
+use crate::run::RunResult;
+use std::fmt::Write;
+
+/// Colour only when the output is a terminal and `NO_COLOR` is unset (decided by the caller).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Style {
+    pub color: bool,
+}
+
+impl Style {
+    fn verdict(&self, pass: bool) -> String {
+        match (pass, self.color) {
+            (true, true) => "\x1b[32mPASS\x1b[0m".into(),
+            (false, true) => "\x1b[1;31mFAIL\x1b[0m".into(),
+            (true, false) => "PASS".into(),
+            (false, false) => "FAIL".into(),
+        }
+    }
+}
+
+/// "T1 = 207.7 kN, T2 = 211.9 kN, v = 0 m/s, a = 0.6 m/s²".
+pub fn state_label(s: &EndState) -> String {
+    format!(
+        "T1 = {:.1} kN, T2 = {:.1} kN, v = {} m/s, a = {} m/s²",
+        s.t1_n / 1e3,
+        s.t2_n / 1e3,
+        s.speed_m_s,
+        s.accel_m_s2
+    )
+}
+
+fn opt(v: Option<f64>, digits: usize) -> String {
+    v.map_or_else(|| "—".into(), |v| format!("{v:.digits$}"))
+}
+
+fn factor(v: Option<f64>) -> String {
+    v.map_or_else(|| "∞".into(), |v| format!("{v:.3}"))
+}
+
+/// Renders the table report.
+pub fn render(title: &str, sheet: &str, run: &RunResult, style: Style) -> String {
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "wrapcalc {} — {}{}",
+        env!("CARGO_PKG_VERSION"),
+        sheet,
+        if title.is_empty() { String::new() } else { format!(": {title}") }
+    );
+    let _ = writeln!(out);
+    let name_w = run.scenes.iter().map(|s| s.name.len()).max().unwrap_or(5).max(5);
+    let _ = writeln!(
+        out,
+        "{:<name_w$}  lvl  {:>9}  {:>9}  {:>7}  {:>7}  {:>7}  {:>7}  {:>7}  {:>7}  {:>7}  {:>7}  {:>7}  verdict",
+        "scene", "T1 kN", "T2 kN", "ratio", "e^μα", "σ", "σ_s", "σ_d", "β °", "pos °", "rev °", "JDP °"
+    );
+    for s in &run.scenes {
+        let c = &s.classical;
+        let w = s.wrap.as_ref().map(|w| &w.summary);
+        let _ = writeln!(
+            out,
+            "{:<name_w$}  {:>3}  {:>9.2}  {:>9.2}  {:>7.4}  {:>7.4}  {:>7}  {:>7}  {:>7}  {:>7.2}  {:>7}  {:>7}  {:>7}  {}{}",
+            s.name,
+            s.plan.level,
+            c.state.t1_n / 1e3,
+            c.state.t2_n / 1e3,
+            c.tension_ratio,
+            c.euler_limit,
+            factor(c.safety_factor),
+            factor(c.static_safety_factor),
+            if c.state.accel_m_s2 != 0.0 { factor(c.dynamic_safety_factor) } else { "—".into() },
+            c.dynamic_angle_rad.to_degrees(),
+            opt(w.map(|w| w.positive_arc_rad.to_degrees()), 2),
+            opt(w.map(|w| w.reverse_arc_rad.to_degrees()), 2),
+            opt(w.and_then(|w| w.jdp_rad.map(f64::to_degrees)), 2),
+            style.verdict(s.checks_pass()),
+            if c.gross_slip { "  GROSS SLIP" } else { "" },
+        );
+    }
+    let _ = writeln!(out);
+    let _ = writeln!(out, "Checks (per rope; σ = ∞ when T1 = T2):");
+    for s in &run.scenes {
+        let _ = writeln!(
+            out,
+            "\n[{}] {} — level {}: {}",
+            s.name,
+            state_label(&s.classical.state),
+            s.plan.level,
+            s.plan.reason
+        );
+        for check in &s.classical.checks {
+            render_check(&mut out, check, style);
+        }
+    }
+    let _ = writeln!(
+        out,
+        "\n{} — {} scene(s) in {:.2} ms",
+        if run.all_checks_pass() { "all checks pass" } else { "SOME CHECKS FAIL" },
+        run.scenes.len(),
+        run.runtime_ms
+    );
+    out
+}
+
+fn render_check(out: &mut String, check: &Check, style: Style) {
+    let rel = match check.relation {
+        Relation::AtMost => "≤",
+        Relation::AtLeast => "≥",
+    };
+    let _ = writeln!(
+        out,
+        "  {:<28} {} {} {:.4}  {}",
+        check.name,
+        factor(check.value),
+        rel,
+        check.limit,
+        style.verdict(check.pass)
+    );
+    let _ = writeln!(out, "      formula: {}", check.formula);
+    let fmt_q = |qs: &[crate::model::level0::Quantity]| {
+        qs.iter()
+            .map(|q| match q.unit {
+                "" => format!("{} = {:.6}", q.name, q.value),
+                "N" => format!("{} = {:.1} N", q.name, q.value),
+                unit => format!("{} = {:.4} {}", q.name, q.value, unit),
+            })
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let _ = writeln!(out, "      inputs:  {}", fmt_q(&check.inputs));
+    let _ = writeln!(out, "      values:  {}", fmt_q(&check.intermediates));
+}

@@ -1,0 +1,148 @@
+//! Diagnostics that point at the value in the sheet: file, line:column, scene, key, the bad
+//! value and what is allowed.
+
+use std::fmt;
+use std::ops::Range;
+
+/// One problem found in a sheet.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Diagnostic {
+    pub file: String,
+    /// 1-based line and column of the value (0 when the file could not be read at all).
+    pub line: usize,
+    pub column: usize,
+    pub scene: Option<String>,
+    /// Dotted key path, e.g. `pulley.mu` or `scene[2].m1_kg`.
+    pub key: String,
+    /// The offending value as written in the sheet, when there is one.
+    pub value: Option<String>,
+    /// What is wrong and what is allowed.
+    pub message: String,
+}
+
+impl fmt::Display for Diagnostic {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}", self.file)?;
+        if self.line > 0 {
+            write!(f, ":{}:{}", self.line, self.column)?;
+        }
+        write!(f, ":")?;
+        if let Some(scene) = &self.scene {
+            write!(f, " scene \"{scene}\":")?;
+        }
+        if !self.key.is_empty() {
+            write!(f, " {}", self.key)?;
+        }
+        if let Some(value) = &self.value {
+            write!(f, " = {value}")?;
+        }
+        write!(f, ": {}", self.message)
+    }
+}
+
+/// Every problem found in a sheet (never empty).
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub struct SheetError {
+    pub diagnostics: Vec<Diagnostic>,
+}
+
+impl fmt::Display for SheetError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        for (i, d) in self.diagnostics.iter().enumerate() {
+            if i > 0 {
+                writeln!(f)?;
+            }
+            write!(f, "{d}")?;
+        }
+        if self.diagnostics.len() > 1 {
+            write!(f, "\n{} errors in the sheet", self.diagnostics.len())?;
+        }
+        Ok(())
+    }
+}
+
+/// Collects diagnostics for one sheet, turning byte spans into line:column.
+pub(crate) struct Collector<'a> {
+    pub file: &'a str,
+    pub text: &'a str,
+    pub diagnostics: Vec<Diagnostic>,
+}
+
+impl<'a> Collector<'a> {
+    pub fn new(file: &'a str, text: &'a str) -> Self {
+        Self { file, text, diagnostics: Vec::new() }
+    }
+
+    /// 1-based line and column (in characters) of a byte offset.
+    pub fn line_col(&self, offset: usize) -> (usize, usize) {
+        let offset = offset.min(self.text.len());
+        let before = self.text.get(..offset).unwrap_or(self.text);
+        let line = before.matches('\n').count() + 1;
+        let line_start = before.rfind('\n').map_or(0, |i| i + 1);
+        let column = before[line_start..].chars().count() + 1;
+        (line, column)
+    }
+
+    /// The sheet's text at a span, trimmed and shortened for a message.
+    pub fn snippet(&self, span: &Range<usize>) -> Option<String> {
+        let s = self.text.get(span.clone())?.trim();
+        if s.is_empty() {
+            return None;
+        }
+        let mut out: String = s.chars().take(60).collect();
+        if s.chars().count() > 60 {
+            out.push('…');
+        }
+        Some(out)
+    }
+
+    pub fn push(&mut self, span: Option<Range<usize>>, scene: Option<&str>, key: &str, message: impl Into<String>) {
+        let (line, column) = span.as_ref().map_or((0, 0), |s| self.line_col(s.start));
+        let value = span.as_ref().and_then(|s| self.snippet(s));
+        self.diagnostics.push(Diagnostic {
+            file: self.file.to_string(),
+            line,
+            column,
+            scene: scene.map(str::to_string),
+            key: key.to_string(),
+            value,
+            message: message.into(),
+        });
+    }
+
+    /// A problem with no value to show (e.g. a missing key: the span is the enclosing table).
+    pub fn push_at(&mut self, span: Option<Range<usize>>, scene: Option<&str>, key: &str, message: impl Into<String>) {
+        let (line, column) = span.as_ref().map_or((0, 0), |s| self.line_col(s.start));
+        self.diagnostics.push(Diagnostic {
+            file: self.file.to_string(),
+            line,
+            column,
+            scene: scene.map(str::to_string),
+            key: key.to_string(),
+            value: None,
+            message: message.into(),
+        });
+    }
+
+    /// A serde/TOML error from deserializing one section of the sheet.
+    pub fn push_toml(&mut self, err: &toml::de::Error, scene: Option<&str>, section: &str) {
+        let message = err.message().trim().to_string();
+        let key = unknown_field(&message).map_or_else(|| section.to_string(), |f| join_key(section, &f));
+        self.push(err.span(), scene, &key, message);
+    }
+
+    pub fn into_error(self) -> SheetError {
+        SheetError { diagnostics: self.diagnostics }
+    }
+}
+
+/// `section.key`, or `key` at the top level.
+pub(crate) fn join_key(section: &str, key: &str) -> String {
+    if section.is_empty() { key.to_string() } else { format!("{section}.{key}") }
+}
+
+/// The field name in serde's "unknown field `x`, expected ..." message.
+fn unknown_field(message: &str) -> Option<String> {
+    let rest = message.strip_prefix("unknown field `")?;
+    Some(rest[..rest.find('`')?].to_string())
+}

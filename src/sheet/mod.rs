@@ -1,0 +1,131 @@
+//! Design sheets: TOML in, a validated [`Design`] out, or every problem found.
+//!
+//! The document is parsed once with spans; each section (`[pulley]`, `[rope]`,
+//! `[requirements]`, every `[[scene]]`) is deserialized on its own so that an error in one does
+//! not hide errors in the others; then every value is checked (finite, in range, consistent).
+//! Each diagnostic names the file, line:column, scene, key path, the bad value and what is allowed.
+
+mod diag;
+mod raw;
+mod validate;
+
+pub use diag::{Diagnostic, SheetError};
+
+use crate::design::Design;
+use diag::Collector;
+use serde::Deserialize;
+use serde::de::IntoDeserializer;
+use std::path::Path;
+use toml::Spanned;
+use toml::de::{DeTable, DeValue};
+
+/// Top-level keys a sheet may have.
+const TOP_LEVEL_KEYS: &[&str] = &["title", "g_m_s2", "pulley", "rope", "requirements", "scene"];
+
+/// Reads and validates a sheet file.
+pub fn load(path: &Path) -> Result<Design, SheetError> {
+    let file = path.display().to_string();
+    let text = match std::fs::read(path) {
+        Ok(bytes) => match String::from_utf8(bytes) {
+            Ok(text) => text,
+            Err(_) => return Err(file_error(&file, "the file is not UTF-8 text; a design sheet is a TOML file")),
+        },
+        Err(e) if path.is_dir() => {
+            return Err(file_error(&file, &format!("is a directory, not a design sheet ({e})")));
+        }
+        Err(e) => return Err(file_error(&file, &format!("cannot read the design sheet: {e}"))),
+    };
+    parse(&file, &text)
+}
+
+fn file_error(file: &str, message: &str) -> SheetError {
+    let mut c = Collector::new(file, "");
+    c.push_at(None, None, "", message);
+    SheetError { diagnostics: c.diagnostics }
+}
+
+/// Parses and validates sheet text; `file` is used in messages only.
+pub fn parse(file: &str, text: &str) -> Result<Design, SheetError> {
+    let mut c = Collector::new(file, text);
+    if text.trim().is_empty() {
+        c.push_at(None, None, "", "the sheet is empty; it needs at least [pulley], [rope] and one [[scene]]");
+        return Err(c.into_error());
+    }
+    let root = match DeTable::parse(text) {
+        Ok(root) => root,
+        Err(e) => {
+            c.push_toml(&e, None, "");
+            return Err(c.into_error());
+        }
+    };
+    let doc_span = root.span();
+    let mut sections = validate::Sections { doc_span, ..Default::default() };
+    for (key, value) in root.into_inner() {
+        let key_span = key.span();
+        match key.get_ref().as_ref() {
+            "title" => sections.title = section(&mut c, value, "title"),
+            "g_m_s2" => sections.g_m_s2 = section(&mut c, value, "g_m_s2"),
+            "pulley" => sections.pulley = section(&mut c, value, "pulley"),
+            "rope" => sections.rope = section(&mut c, value, "rope"),
+            "requirements" => sections.requirements = section(&mut c, value, "requirements"),
+            "scene" => sections.scenes = Some(scene_tables(&mut c, value)),
+            other => c.push(
+                Some(key_span),
+                None,
+                other,
+                format!("unknown key; a sheet's top-level keys are {}", TOP_LEVEL_KEYS.join(", ")),
+            ),
+        }
+    }
+    let design = validate::design(&mut c, sections);
+    match design {
+        Some(d) if c.diagnostics.is_empty() => Ok(d),
+        _ => Err(SheetError { diagnostics: c.diagnostics }),
+    }
+}
+
+/// Deserializes one section, recording its error.
+fn section<T: for<'de> Deserialize<'de>>(
+    c: &mut Collector,
+    value: Spanned<DeValue<'_>>,
+    name: &str,
+) -> Option<Spanned<T>> {
+    match Spanned::<T>::deserialize(value.into_deserializer()) {
+        Ok(v) => Some(v),
+        Err(e) => {
+            c.push_toml(&e, None, name);
+            None
+        }
+    }
+}
+
+/// The `[[scene]]` array: each table deserialized on its own (`None` where it failed).
+fn scene_tables(c: &mut Collector, value: Spanned<DeValue<'_>>) -> Vec<validate::SceneSlot> {
+    let span = value.span();
+    match value.into_inner() {
+        DeValue::Array(items) => items
+            .into_iter()
+            .enumerate()
+            .map(|(i, item)| {
+                let label = format!("scene[{}]", i + 1);
+                let name = item.get_ref().as_table().and_then(|t| {
+                    t.iter()
+                        .find(|(k, _)| k.get_ref() == "name")
+                        .and_then(|(_, v)| v.get_ref().as_str().map(str::to_string))
+                });
+                let raw = match Spanned::<raw::RawScene>::deserialize(item.into_deserializer()) {
+                    Ok(v) => Some(v),
+                    Err(e) => {
+                        c.push_toml(&e, name.as_deref(), &label);
+                        None
+                    }
+                };
+                validate::SceneSlot { label, raw }
+            })
+            .collect(),
+        _ => {
+            c.push(Some(span), None, "scene", "expected an array of tables: write each scene as [[scene]]");
+            Vec::new()
+        }
+    }
+}

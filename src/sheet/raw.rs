@@ -1,0 +1,53 @@
+//! The sheet as written: serde types that keep the span of every value and reject unknown keys.
+//! Every key is optional here so that all missing keys can be reported at once by validation.
+
+use serde::Deserialize;
+use toml::Spanned;
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawPulley {
+    pub diameter_m: Option<Spanned<f64>>,
+    pub mu: Option<Spanned<f64>>,
+    pub wrap_angle_deg: Option<Spanned<f64>>,
+    pub guide: Option<Spanned<RawGuide>>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawGuide {
+    pub diameter_m: Option<Spanned<f64>>,
+    pub vertical_m: Option<Spanned<f64>>,
+    pub horizontal_m: Option<Spanned<f64>>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawRope {
+    pub count: Option<Spanned<i64>>,
+    pub mass_per_m_kg: Option<Spanned<f64>>,
+    pub ea_n: Option<Spanned<f64>>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawRequirements {
+    pub static_safety_factor_min: Option<Spanned<f64>>,
+    pub dynamic_safety_factor_min: Option<Spanned<f64>>,
+}
+
+/// A `[[scene]]` table. The keys of every kind are accepted here; validation rejects those
+/// that do not belong to the scene's kind.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawScene {
+    pub name: Option<Spanned<String>>,
+    pub kind: Option<Spanned<String>>,
+    pub m1_kg: Option<Spanned<f64>>,
+    pub m2_kg: Option<Spanned<f64>>,
+    pub t1_n: Option<Spanned<f64>>,
+    pub t2_n: Option<Spanned<f64>>,
+    pub accel_m_s2: Option<Spanned<f64>>,
+    pub speed_m_s: Option<Spanned<f64>>,
+    pub direction: Option<Spanned<String>>,
+}

@@ -1,0 +1,465 @@
+//! Checks every value of a deserialized sheet and builds the [`Design`].
+
+use super::diag::{Collector, join_key};
+use super::raw::{RawGuide, RawPulley, RawRequirements, RawRope, RawScene};
+use crate::design::{
+    Design, Direction, EndLoads, LoadsScene, Pulley, Requirements, Rope, STANDARD_GRAVITY_M_S2, Scene, SceneKind,
+    WrapSource,
+};
+use crate::geometry::wrap_angle_from_guide_rad;
+use std::collections::HashMap;
+use std::ops::Range;
+use toml::Spanned;
+
+/// Largest friction coefficient accepted (linings are 0.2–0.3; above 2 is a typo).
+pub const MU_MAX: f64 = 2.0;
+/// Largest wrap angle accepted, degrees.
+pub const WRAP_ANGLE_MAX_DEG: f64 = 540.0;
+/// Largest rope speed accepted, m/s (hoists run below 25 m/s).
+pub const SPEED_MAX_M_S: f64 = 100.0;
+/// Largest number of ropes accepted.
+pub const ROPE_COUNT_MAX: i64 = 64;
+
+/// The sections found in the document (each `None` where absent or malformed).
+#[derive(Default)]
+pub struct Sections {
+    pub doc_span: Range<usize>,
+    pub title: Option<Spanned<String>>,
+    pub g_m_s2: Option<Spanned<f64>>,
+    pub pulley: Option<Spanned<RawPulley>>,
+    pub rope: Option<Spanned<RawRope>>,
+    pub requirements: Option<Spanned<RawRequirements>>,
+    pub scenes: Option<Vec<SceneSlot>>,
+}
+
+/// One `[[scene]]` table: its label (`scene[i]`) and contents when they deserialized.
+pub struct SceneSlot {
+    pub label: String,
+    pub raw: Option<Spanned<RawScene>>,
+}
+
+/// A numeric rule: a predicate and the words that say what is allowed.
+struct Rule {
+    ok: fn(f64) -> bool,
+    allowed: &'static str,
+}
+
+const POSITIVE: Rule = Rule { ok: |x| x > 0.0, allowed: "a finite number > 0" };
+const NON_NEGATIVE: Rule = Rule { ok: |x| x >= 0.0, allowed: "a finite number ≥ 0" };
+const ANY: Rule = Rule { ok: |_| true, allowed: "a finite number" };
+
+/// Where a value sits: the scene it belongs to and its section's key prefix.
+#[derive(Clone, Copy)]
+struct At<'a> {
+    scene: Option<&'a str>,
+    section: &'a str,
+    table_span: &'a Range<usize>,
+}
+
+impl At<'_> {
+    fn key(&self, key: &str) -> String {
+        join_key(self.section, key)
+    }
+}
+
+/// A number that must be present.
+fn required(c: &mut Collector, at: At, key: &str, value: &Option<Spanned<f64>>, rule: Rule) -> Option<f64> {
+    match value {
+        Some(v) => checked(c, at, key, v, rule),
+        None => {
+            c.push_at(
+                Some(at.table_span.clone()),
+                at.scene,
+                &at.key(key),
+                format!("missing; expected {}", rule.allowed),
+            );
+            None
+        }
+    }
+}
+
+/// A number that may be absent (then `default`).
+fn optional(
+    c: &mut Collector,
+    at: At,
+    key: &str,
+    value: &Option<Spanned<f64>>,
+    rule: Rule,
+    default: f64,
+) -> Option<f64> {
+    match value {
+        Some(v) => checked(c, at, key, v, rule),
+        None => Some(default),
+    }
+}
+
+fn checked(c: &mut Collector, at: At, key: &str, value: &Spanned<f64>, rule: Rule) -> Option<f64> {
+    let x = *value.get_ref();
+    if x.is_finite() && (rule.ok)(x) {
+        Some(x)
+    } else {
+        c.push(Some(value.span()), at.scene, &at.key(key), format!("expected {}", rule.allowed));
+        None
+    }
+}
+
+/// A number with an explicit allowed range (inclusive bounds unless said otherwise).
+fn in_range(
+    c: &mut Collector,
+    at: At,
+    key: &str,
+    value: &Spanned<f64>,
+    ok: impl Fn(f64) -> bool,
+    allowed: &str,
+) -> Option<f64> {
+    let x = *value.get_ref();
+    if x.is_finite() && ok(x) {
+        Some(x)
+    } else {
+        c.push(Some(value.span()), at.scene, &at.key(key), format!("expected {allowed}"));
+        None
+    }
+}
+
+pub fn design(c: &mut Collector, s: Sections) -> Option<Design> {
+    let top = At { scene: None, section: "", table_span: &s.doc_span };
+    let title = s.title.map_or_else(String::new, |t| t.into_inner());
+    let g_m_s2 = match &s.g_m_s2 {
+        Some(g) => in_range(c, top, "g_m_s2", g, |g| g > 0.0 && g <= 30.0, "a gravity 0 < g ≤ 30 m/s²"),
+        None => Some(STANDARD_GRAVITY_M_S2),
+    };
+    let pulley = match &s.pulley {
+        Some(p) => pulley(c, p),
+        None => {
+            c.push_at(
+                Some(s.doc_span.clone()),
+                None,
+                "pulley",
+                "missing section [pulley] (diameter_m, mu, wrap_angle_deg)",
+            );
+            None
+        }
+    };
+    let rope = match &s.rope {
+        Some(r) => rope(c, r),
+        None => {
+            c.push_at(Some(s.doc_span.clone()), None, "rope", "missing section [rope] (count, mass_per_m_kg, ea_n)");
+            None
+        }
+    };
+    let requirements = s.requirements.as_ref().map_or(Some(Requirements::default()), |r| requirements(c, r));
+    let scenes = match &s.scenes {
+        Some(slots) if !slots.is_empty() => scenes(c, slots, g_m_s2, rope.as_ref()),
+        _ => {
+            c.push_at(Some(s.doc_span.clone()), None, "scene", "no [[scene]]: a sheet needs at least one scene");
+            None
+        }
+    };
+    Some(Design {
+        sheet: c.file.to_string(),
+        title,
+        g_m_s2: g_m_s2?,
+        pulley: pulley?,
+        rope: rope?,
+        requirements: requirements?,
+        scenes: scenes?,
+    })
+}
+
+fn pulley(c: &mut Collector, p: &Spanned<RawPulley>) -> Option<Pulley> {
+    let span = p.span();
+    let at = At { scene: None, section: "pulley", table_span: &span };
+    let p = p.get_ref();
+    let diameter_m = required(c, at, "diameter_m", &p.diameter_m, POSITIVE);
+    let mu = match &p.mu {
+        Some(mu) => in_range(c, at, "mu", mu, |m| m > 0.0 && m <= MU_MAX, "a friction coefficient 0 < μ ≤ 2"),
+        None => {
+            c.push_at(Some(span.clone()), None, "pulley.mu", "missing; expected a friction coefficient 0 < μ ≤ 2");
+            None
+        }
+    };
+    let wrap = match (&p.wrap_angle_deg, &p.guide) {
+        (Some(_), Some(g)) => {
+            c.push(
+                Some(g.span()),
+                None,
+                "pulley.guide",
+                "give either pulley.wrap_angle_deg or the [pulley.guide] geometry, not both",
+            );
+            None
+        }
+        (Some(a), None) => {
+            in_range(c, at, "wrap_angle_deg", a, |a| a > 0.0 && a <= WRAP_ANGLE_MAX_DEG, "a wrap angle 0 < α ≤ 540°")
+                .map(|deg| (deg.to_radians(), WrapSource::Given))
+        }
+        (None, Some(g)) => guide(c, g, diameter_m),
+        (None, None) => {
+            c.push_at(
+                Some(span.clone()),
+                None,
+                "pulley.wrap_angle_deg",
+                "missing; give wrap_angle_deg or a [pulley.guide] section (diameter_m, vertical_m, horizontal_m)",
+            );
+            None
+        }
+    };
+    let (wrap_angle_rad, wrap_source) = wrap?;
+    Some(Pulley { diameter_m: diameter_m?, mu: mu?, wrap_angle_rad, wrap_source })
+}
+
+fn guide(c: &mut Collector, g: &Spanned<RawGuide>, pulley_diameter_m: Option<f64>) -> Option<(f64, WrapSource)> {
+    let span = g.span();
+    let at = At { scene: None, section: "pulley.guide", table_span: &span };
+    let g = g.get_ref();
+    let diameter_m = required(c, at, "diameter_m", &g.diameter_m, POSITIVE);
+    let vertical_m = required(c, at, "vertical_m", &g.vertical_m, POSITIVE);
+    let horizontal_m = required(c, at, "horizontal_m", &g.horizontal_m, NON_NEGATIVE);
+    let (pd, gd, v, h) = (pulley_diameter_m?, diameter_m?, vertical_m?, horizontal_m?);
+    match wrap_angle_from_guide_rad(pd, gd, v, h) {
+        Some(alpha) => Some((alpha, WrapSource::GuidePulley { diameter_m: gd, vertical_m: v, horizontal_m: h })),
+        None => {
+            c.push_at(
+                Some(span.clone()),
+                None,
+                "pulley.guide",
+                format!(
+                    "the pulleys overlap: the centre distance √(vertical² + horizontal²) = {:.3} m must exceed the sum of the radii {:.3} m",
+                    v.hypot(h),
+                    0.5 * (pd + gd)
+                ),
+            );
+            None
+        }
+    }
+}
+
+fn rope(c: &mut Collector, r: &Spanned<RawRope>) -> Option<Rope> {
+    let span = r.span();
+    let at = At { scene: None, section: "rope", table_span: &span };
+    let r = r.get_ref();
+    let count = match &r.count {
+        Some(n) if (1..=ROPE_COUNT_MAX).contains(n.get_ref()) => u32::try_from(*n.get_ref()).ok(),
+        Some(n) => {
+            c.push(
+                Some(n.span()),
+                None,
+                "rope.count",
+                format!("expected a whole number of ropes from 1 to {ROPE_COUNT_MAX}"),
+            );
+            None
+        }
+        None => {
+            c.push_at(Some(span.clone()), None, "rope.count", "missing; expected the number of hoisting ropes (≥ 1)");
+            None
+        }
+    };
+    let mass_per_m_kg = required(c, at, "mass_per_m_kg", &r.mass_per_m_kg, POSITIVE);
+    let ea_n = required(c, at, "ea_n", &r.ea_n, POSITIVE);
+    Some(Rope { count: count?, mass_per_m_kg: mass_per_m_kg?, ea_n: ea_n? })
+}
+
+fn requirements(c: &mut Collector, r: &Spanned<RawRequirements>) -> Option<Requirements> {
+    let span = r.span();
+    let at = At { scene: None, section: "requirements", table_span: &span };
+    let r = r.get_ref();
+    let d = Requirements::default();
+    let s =
+        optional(c, at, "static_safety_factor_min", &r.static_safety_factor_min, POSITIVE, d.static_safety_factor_min);
+    let dy = optional(
+        c,
+        at,
+        "dynamic_safety_factor_min",
+        &r.dynamic_safety_factor_min,
+        POSITIVE,
+        d.dynamic_safety_factor_min,
+    );
+    Some(Requirements { static_safety_factor_min: s?, dynamic_safety_factor_min: dy? })
+}
+
+/// Scene names become directory names in the report.
+fn valid_scene_name(name: &str) -> bool {
+    !name.is_empty()
+        && name.len() <= 100
+        && !name.starts_with('.')
+        && name.chars().all(|ch| ch.is_ascii_alphanumeric() || matches!(ch, '-' | '_' | '.'))
+}
+
+fn scenes(c: &mut Collector, slots: &[SceneSlot], g_m_s2: Option<f64>, rope: Option<&Rope>) -> Option<Vec<Scene>> {
+    let mut seen: HashMap<String, usize> = HashMap::new();
+    let mut out = Vec::with_capacity(slots.len());
+    let mut all_ok = true;
+    for slot in slots {
+        let Some(raw) = &slot.raw else {
+            all_ok = false;
+            continue;
+        };
+        let table_span = raw.span();
+        let raw = raw.get_ref();
+        let name = match &raw.name {
+            Some(n) if valid_scene_name(n.get_ref()) => {
+                if let Some(first) = seen.insert(n.get_ref().clone(), out.len()) {
+                    let _ = first;
+                    c.push(
+                        Some(n.span()),
+                        Some(n.get_ref()),
+                        &join_key(&slot.label, "name"),
+                        "duplicate scene name; names must be unique",
+                    );
+                    None
+                } else {
+                    Some(n.get_ref().clone())
+                }
+            }
+            Some(n) => {
+                c.push(
+                    Some(n.span()),
+                    None,
+                    &join_key(&slot.label, "name"),
+                    "expected a scene name of letters, digits, '-', '_' or '.', not starting with '.' (it names the scene's report folder)",
+                );
+                None
+            }
+            None => {
+                c.push_at(
+                    Some(table_span.clone()),
+                    None,
+                    &join_key(&slot.label, "name"),
+                    "missing; every scene needs a name",
+                );
+                None
+            }
+        };
+        let at =
+            At { scene: name.as_deref().or(Some(slot.label.as_str())), section: &slot.label, table_span: &table_span };
+        let kind = match &raw.kind {
+            Some(k) if k.get_ref() == "loads" => loads(c, at, raw, g_m_s2, rope).map(SceneKind::Loads),
+            Some(k) if matches!(k.get_ref().as_str(), "history" | "duty-cycle") => {
+                c.push(
+                    Some(k.span()),
+                    at.scene,
+                    &at.key("kind"),
+                    "this kind of scene is not supported by this version; supported: \"loads\"",
+                );
+                None
+            }
+            Some(k) => {
+                c.push(Some(k.span()), at.scene, &at.key("kind"), "unknown scene kind; expected \"loads\"");
+                None
+            }
+            None => {
+                c.push_at(Some(table_span.clone()), at.scene, &at.key("kind"), "missing; expected kind = \"loads\"");
+                None
+            }
+        };
+        match (name, kind) {
+            (Some(name), Some(kind)) => out.push(Scene { name, kind }),
+            _ => all_ok = false,
+        }
+    }
+    all_ok.then_some(out)
+}
+
+fn loads(c: &mut Collector, at: At, raw: &RawScene, g_m_s2: Option<f64>, rope: Option<&Rope>) -> Option<LoadsScene> {
+    let masses = raw.m1_kg.is_some() || raw.m2_kg.is_some();
+    let tensions = raw.t1_n.is_some() || raw.t2_n.is_some();
+    let ends = match (masses, tensions) {
+        (true, true) => {
+            let span = raw.t1_n.as_ref().or(raw.t2_n.as_ref()).map(|v| v.span());
+            c.push(
+                span,
+                at.scene,
+                &at.key("t1_n"),
+                "give either masses (m1_kg, m2_kg) or tensions (t1_n, t2_n), not both",
+            );
+            None
+        }
+        (false, true) => {
+            let t1 = required(c, at, "t1_n", &raw.t1_n, POSITIVE);
+            let t2 = required(c, at, "t2_n", &raw.t2_n, POSITIVE);
+            Some(EndLoads::Tensions { t1_n: t1?, t2_n: t2? })
+        }
+        (true, false) => {
+            let m1 = required(c, at, "m1_kg", &raw.m1_kg, POSITIVE);
+            let m2 = required(c, at, "m2_kg", &raw.m2_kg, POSITIVE);
+            Some(EndLoads::Masses { m1_kg: m1?, m2_kg: m2? })
+        }
+        (false, false) => {
+            c.push_at(
+                Some(at.table_span.clone()),
+                at.scene,
+                &at.key("m1_kg"),
+                "missing end loads; give m1_kg and m2_kg (kg, all ropes) or t1_n and t2_n (N per rope)",
+            );
+            None
+        }
+    };
+    let accel = match (&raw.accel_m_s2, g_m_s2) {
+        (Some(a), Some(g)) => in_range(
+            c,
+            at,
+            "accel_m_s2",
+            a,
+            |a| a.abs() < g,
+            "an acceleration with |a| < g (m/s², side 1 upward positive)",
+        ),
+        (Some(a), None) => checked(c, at, "accel_m_s2", a, ANY),
+        (None, _) => Some(0.0),
+    };
+    let speed = match &raw.speed_m_s {
+        Some(v) => in_range(
+            c,
+            at,
+            "speed_m_s",
+            v,
+            |v| v.abs() <= SPEED_MAX_M_S,
+            "a rope speed |v| ≤ 100 m/s (positive: side 1 → side 2)",
+        ),
+        None => Some(0.0),
+    };
+    let direction = match &raw.direction {
+        None => Some(speed.map_or(Direction::Lift, |v| if v < 0.0 { Direction::Lower } else { Direction::Lift })),
+        Some(d) => {
+            let parsed = match d.get_ref().as_str() {
+                "lift" => Some(Direction::Lift),
+                "lower" => Some(Direction::Lower),
+                _ => None,
+            };
+            match (parsed, speed) {
+                (None, _) => {
+                    c.push(Some(d.span()), at.scene, &at.key("direction"), "expected \"lift\" or \"lower\"");
+                    None
+                }
+                (Some(dir), Some(v)) if v != 0.0 && dir.sign() != v.signum() => {
+                    c.push(
+                        Some(d.span()),
+                        at.scene,
+                        &at.key("direction"),
+                        "contradicts the sign of speed_m_s (\"lift\" is v > 0: rope running side 1 → side 2)",
+                    );
+                    None
+                }
+                (Some(dir), _) => Some(dir),
+            }
+        }
+    };
+    let scene = LoadsScene { ends: ends?, accel_m_s2: accel?, speed_m_s: speed?, direction: direction? };
+    // The state must keep the rope on the pulley: both contact forces T − m'v² positive.
+    if let (Some(g), Some(rope)) = (g_m_s2, rope) {
+        let state = crate::model::level0::EndState::of(&scene, g, rope);
+        let lo = state.t1_n.min(state.t2_n);
+        if lo <= state.centrifugal_n {
+            let span = raw.speed_m_s.as_ref().map(|v| v.span());
+            c.push(
+                span,
+                at.scene,
+                &at.key("speed_m_s"),
+                format!(
+                    "the centrifugal tension m'v² = {:.0} N reaches the lower rope tension {:.0} N: the rope would lift off the pulley",
+                    state.centrifugal_n, lo
+                ),
+            );
+            return None;
+        }
+    }
+    Some(scene)
+}
