@@ -65,6 +65,10 @@ impl ContactLaw {
     }
 
     pub fn utilization(&self, piece: &Piece, theta_rad: f64) -> f64 {
+        if piece.base_n == self.centrifugal_n && piece.amp_n > 0.0 {
+            // Exponential of the contact force itself: u = |k|/μ everywhere on the piece.
+            return (piece.rate_per_rad.abs() / self.mu).min(1.0);
+        }
         self.utilization_of(piece.tension_n(theta_rad), piece.friction_n_per_rad(theta_rad))
     }
 

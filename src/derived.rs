@@ -69,8 +69,8 @@ pub fn summarize(field: &TensionField, law: &ContactLaw) -> Result<WrapSummary, 
     let mut states: Vec<(f64, f64, NodeState)> = Vec::new();
     let mut max_utilization: f64 = 0.0;
     for piece in &field.pieces {
-        let mid = 0.5 * (piece.theta0_rad + piece.theta1_rad);
-        let positive = piece.friction_n_per_rad(mid) > 0.0;
+        // q = −A k e^{k(θ−θ0)}: its sign is that of −A k on the whole piece.
+        let positive = -piece.amp_n * piece.rate_per_rad > 0.0;
         max_utilization =
             max_utilization.max(law.utilization(piece, piece.theta0_rad)).max(law.utilization(piece, piece.theta1_rad));
         for (s, e, above) in split(piece, law, ARC_THRESHOLD, &mut roots)? {
@@ -118,7 +118,7 @@ pub fn summarize(field: &TensionField, law: &ContactLaw) -> Result<WrapSummary, 
 }
 
 /// Samples a field on the output grid (`nodes` pitches plus every breakpoint and zone boundary).
-/// `slip_velocity` gives the rope's slip speed at a tension (model-specific).
+/// `slip_velocity(θ, T)` gives the rope's slip speed (model-specific).
 pub fn distribution(
     t_s: f64,
     field: &TensionField,
@@ -126,7 +126,7 @@ pub fn distribution(
     summary: &WrapSummary,
     nodes: usize,
     gross_slip: bool,
-    slip_velocity: impl Fn(f64) -> Option<f64>,
+    slip_velocity: impl Fn(f64, f64) -> Option<f64>,
 ) -> Distribution {
     let alpha = field.wrap_angle_rad();
     let boundaries = field
@@ -147,7 +147,7 @@ pub fn distribution(
                 friction_n_per_rad: friction,
                 utilization,
                 state: law.state(utilization, friction),
-                slip_velocity_m_s: slip_velocity(tension_n),
+                slip_velocity_m_s: slip_velocity(theta, tension_n),
             }
         })
         .collect();

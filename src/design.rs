@@ -66,14 +66,36 @@ pub struct Scene {
 #[derive(Debug, Clone, PartialEq)]
 pub enum SceneKind {
     Loads(LoadsScene),
+    History(HistoryScene),
 }
 
 impl SceneKind {
     pub fn name(&self) -> &'static str {
         match self {
             SceneKind::Loads(_) => "loads",
+            SceneKind::History(_) => "history",
         }
     }
+}
+
+/// One sample of a load history: tensions per rope at the tangent points and rope speed.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct HistorySample {
+    pub t_s: f64,
+    pub t1_n: f64,
+    pub t2_n: f64,
+    pub speed_m_s: f64,
+}
+
+/// A load history at the rope ends (INTERFACE `kind = "history"`), piecewise linear in time.
+#[derive(Debug, Clone, PartialEq)]
+pub struct HistoryScene {
+    /// At least two samples, strictly increasing in time.
+    pub samples: Vec<HistorySample>,
+    /// Extra times whose distribution is reported (within the history).
+    pub snapshots_s: Vec<f64>,
+    /// Which way the rope last ran before the history starts (for its initial state).
+    pub direction: Direction,
 }
 
 /// A steady state under constant end loads (INTERFACE `kind = "loads"`).

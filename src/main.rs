@@ -47,6 +47,9 @@ struct RunArgs {
     nodes: usize,
     #[arg(long, value_enum, default_value_t = Format::Table)]
     format: Format,
+    /// Solver of the discrete level's increments: the exact O(N) clamp, or clarabel's convex program.
+    #[arg(long, value_enum, default_value_t = SolverArg::Fast)]
+    solver: SolverArg,
     /// Do not draw the PNG plots.
     #[arg(long)]
     no_plots: bool,
@@ -67,6 +70,21 @@ struct CheckArgs {
 enum Format {
     Table,
     Json,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum SolverArg {
+    Fast,
+    Clarabel,
+}
+
+impl From<SolverArg> for wrapcalc::model::level2::Solver {
+    fn from(s: SolverArg) -> Self {
+        match s {
+            SolverArg::Fast => Self::Fast,
+            SolverArg::Clarabel => Self::Clarabel,
+        }
+    }
 }
 
 #[derive(Clone, Copy, PartialEq, Eq)]
@@ -104,8 +122,7 @@ fn execute(cli: Cli) -> anyhow::Result<bool> {
         Command::Check(args) => {
             let design = sheet::load(&args.sheet)?;
             let scenes: Vec<&Scene> = design.scenes.iter().collect();
-            let result =
-                run::run(&design, &scenes, Options { request: Request::ChecksOnly, nodes: run::DEFAULT_NODES })?;
+            let result = run::run(&design, &scenes, Options { request: Request::ChecksOnly, ..Options::default() })?;
             print_result(&design, &result, args.format, false);
             Ok(result.all_checks_pass())
         }
@@ -119,7 +136,7 @@ fn run_command(args: RunArgs) -> anyhow::Result<bool> {
         LevelArg::Auto => None,
         LevelArg::Level(l) => Some(l),
     };
-    let options = Options { request: Request::Full { forced_level }, nodes: args.nodes };
+    let options = Options { request: Request::Full { forced_level }, nodes: args.nodes, solver: args.solver.into() };
     let result = run::run(&design, &scenes, options)?;
     let out_dir = args.out.clone().unwrap_or_else(|| default_out_dir(&args.sheet));
     let summary = Summary::of(&design.sheet, &design.title, &result);

@@ -4,11 +4,12 @@
 //! |---|---|---|
 //! | any | anti-slip checks only (`wrapcalc check`, `--level 0`) | 0 (closed form) |
 //! | `loads` | checks + distribution | 1 (creep theory, exact for constant end loads) |
+//! | `history` | checks + history + distributions | 2 (discrete stick–slip model: the stuck rope remembers the history) |
 
 use crate::design::{Scene, SceneKind};
 
 /// Highest level this version implements.
-pub const MAX_LEVEL: u8 = 1;
+pub const MAX_LEVEL: u8 = 2;
 
 /// What the caller wants from a run.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -26,10 +27,15 @@ pub struct Plan {
 }
 
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("scene \"{scene}\": level {level} is not available in this version (levels 0–{MAX_LEVEL}); use --level auto")]
-pub struct PlanError {
-    pub scene: String,
-    pub level: u8,
+pub enum PlanError {
+    #[error(
+        "scene \"{scene}\": level {level} is not available in this version (levels 0–{MAX_LEVEL}); use --level auto"
+    )]
+    NotAvailable { scene: String, level: u8 },
+    #[error(
+        "scene \"{scene}\": level {level} cannot answer a {kind} scene ({why}); use --level auto or a level ≥ {needed}"
+    )]
+    TooLow { scene: String, kind: &'static str, level: u8, needed: u8, why: &'static str },
 }
 
 /// Chooses the level for one scene.
@@ -39,17 +45,29 @@ pub fn plan(scene: &Scene, request: Request) -> Result<Plan, PlanError> {
             Ok(Plan { level: 0, reason: "anti-slip checks only: closed form (level 0)".into() })
         }
         (Request::Full { forced_level: Some(level) }, _) if level > MAX_LEVEL => {
-            Err(PlanError { scene: scene.name.clone(), level })
+            Err(PlanError::NotAvailable { scene: scene.name.clone(), level })
         }
         (Request::Full { forced_level: Some(0) }, _) => {
             Ok(Plan { level: 0, reason: "forced by --level 0: checks only, no distribution".into() })
         }
-        (Request::Full { forced_level: Some(level) }, SceneKind::Loads(_)) => {
+        (Request::Full { forced_level: Some(1) }, SceneKind::History(_)) => Err(PlanError::TooLow {
+            scene: scene.name.clone(),
+            kind: "history",
+            level: 1,
+            needed: 2,
+            why: "creep theory has no memory of the load history",
+        }),
+        (Request::Full { forced_level: Some(level) }, _) => {
             Ok(Plan { level, reason: format!("forced by --level {level}") })
         }
         (Request::Full { forced_level: None }, SceneKind::Loads(_)) => Ok(Plan {
             level: 1,
             reason: "constant end loads: the steady distribution of creep theory is exact (level 1)".into(),
+        }),
+        (Request::Full { forced_level: None }, SceneKind::History(_)) => Ok(Plan {
+            level: 2,
+            reason: "a load history: the stuck rope remembers it, which needs the discrete stick–slip model (level 2)"
+                .into(),
         }),
     }
 }

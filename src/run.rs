@@ -2,9 +2,10 @@
 //! Stages per scene: plan → level 0 checks → (level ≥ 1) tension field → summary → distribution.
 
 use crate::derived::{self, WrapSummary};
-use crate::design::{Design, Scene, SceneKind};
-use crate::model::level0::{self, Classical};
+use crate::design::{Design, Direction, HistorySample, HistoryScene, LoadsScene, Scene, SceneKind};
+use crate::model::level0::{self, Classical, EndState};
 use crate::model::level1;
+use crate::model::level2::{self, HistoryRow, Level2Error, Params, Solver, StepStats, WrapState};
 use crate::planner::{self, Plan, PlanError, Request};
 use crate::roots::RootError;
 use crate::wrap::Distribution;
@@ -19,11 +20,13 @@ pub const MAX_NODES: usize = 1_000_000;
 pub struct Options {
     pub request: Request,
     pub nodes: usize,
+    /// Solver of the discrete level's increments.
+    pub solver: Solver,
 }
 
 impl Default for Options {
     fn default() -> Self {
-        Self { request: Request::Full { forced_level: None }, nodes: DEFAULT_NODES }
+        Self { request: Request::Full { forced_level: None }, nodes: DEFAULT_NODES, solver: Solver::Fast }
     }
 }
 
@@ -37,6 +40,8 @@ pub enum RunError {
     NonFinite { scene: String, field: &'static str },
     #[error("--nodes {0}: expected a node count from 1 to {MAX_NODES}")]
     Nodes(usize),
+    #[error("scene \"{scene}\": {source}")]
+    Level2 { scene: String, source: Level2Error },
 }
 
 /// The wrap distribution of a scene (levels ≥ 1).
@@ -46,13 +51,27 @@ pub struct WrapResult {
     pub distribution: Distribution,
 }
 
+/// What a time scene adds: history rows, the θ–t utilization map, solver tallies.
+#[derive(Debug, Clone, PartialEq)]
+pub struct HistoryOutput {
+    pub rows: Vec<HistoryRow>,
+    pub map: Vec<Vec<f64>>,
+    pub stats: StepStats,
+}
+
 #[derive(Debug, Clone, PartialEq)]
 pub struct SceneResult {
     pub name: String,
     pub kind: &'static str,
     pub plan: Plan,
     pub classical: Classical,
+    /// The reported (final) state of the wrap.
     pub wrap: Option<WrapResult>,
+    /// Distributions at snapshot times before the final state.
+    pub snapshots: Vec<Distribution>,
+    pub history: Option<HistoryOutput>,
+    /// Time of the reported state (time scenes).
+    pub t_s: Option<f64>,
     pub nodes: Option<usize>,
     pub runtime_ms: f64,
 }
@@ -88,41 +107,174 @@ pub fn run(design: &Design, scenes: &[&Scene], options: Options) -> Result<RunRe
 fn run_scene(design: &Design, scene: &Scene, options: Options) -> Result<SceneResult, RunError> {
     let start = Instant::now();
     let plan = planner::plan(scene, options.request)?;
-    let SceneKind::Loads(loads) = &scene.kind;
-    let classical = level0::loads(design, loads);
-    let wrap = if plan.level >= 1 {
-        let rolling = level1::steady_rolling(
-            design.pulley.mu,
-            design.pulley.wrap_angle_rad,
-            &classical.state,
-            loads.direction.sign(),
-            design.rope.ea_n,
-        );
-        let summary = derived::summarize(&rolling.field, &rolling.law)
-            .map_err(|source| RunError::Roots { scene: scene.name.clone(), source })?;
-        let distribution = derived::distribution(
-            0.0,
-            &rolling.field,
-            &rolling.law,
-            &summary,
-            options.nodes,
-            rolling.gross_slip,
-            |t| rolling.slip_velocity_m_s(t),
-        );
-        Some(WrapResult { summary, distribution })
-    } else {
-        None
+    let mut result = match &scene.kind {
+        SceneKind::Loads(loads) => run_loads(design, scene, loads, plan, options)?,
+        SceneKind::History(history) => run_history(design, scene, history, plan, options)?,
     };
-    let result = SceneResult {
+    result.runtime_ms = start.elapsed().as_secs_f64() * 1e3;
+    ensure_finite(&result)?;
+    Ok(result)
+}
+
+fn empty(scene: &Scene, plan: Plan, classical: Classical) -> SceneResult {
+    SceneResult {
         name: scene.name.clone(),
         kind: scene.kind.name(),
         plan,
         classical,
-        nodes: wrap.as_ref().map(|_| options.nodes),
-        wrap,
-        runtime_ms: start.elapsed().as_secs_f64() * 1e3,
+        wrap: None,
+        snapshots: Vec::new(),
+        history: None,
+        t_s: None,
+        nodes: None,
+        runtime_ms: 0.0,
+    }
+}
+
+fn params(design: &Design, solver: Solver) -> Params {
+    Params {
+        mu: design.pulley.mu,
+        wrap_angle_rad: design.pulley.wrap_angle_rad,
+        radius_m: 0.5 * design.pulley.diameter_m,
+        mass_per_m_kg: design.rope.mass_per_m_kg,
+        ea_n: design.rope.ea_n,
+        solver,
+    }
+}
+
+fn run_loads(
+    design: &Design,
+    scene: &Scene,
+    loads: &LoadsScene,
+    plan: Plan,
+    options: Options,
+) -> Result<SceneResult, RunError> {
+    let classical = level0::loads(design, loads);
+    let mut result = empty(scene, plan, classical);
+    match result.plan.level {
+        0 => {}
+        1 => {
+            let rolling = level1::steady_rolling(
+                design.pulley.mu,
+                design.pulley.wrap_angle_rad,
+                &result.classical.state,
+                loads.direction.sign(),
+                design.rope.ea_n,
+            );
+            let summary = derived::summarize(&rolling.field, &rolling.law)
+                .map_err(|source| RunError::Roots { scene: scene.name.clone(), source })?;
+            let distribution = derived::distribution(
+                0.0,
+                &rolling.field,
+                &rolling.law,
+                &summary,
+                options.nodes,
+                rolling.gross_slip,
+                |_, t| rolling.slip_velocity_m_s(t),
+            );
+            result.wrap = Some(WrapResult { summary, distribution });
+            result.nodes = Some(options.nodes);
+        }
+        _ => {
+            // The steady state as a history: the rope runs through the wrap one and a half times
+            // under these loads (at the scene's speed, or creeping in its direction at rest).
+            let state = result.classical.state;
+            let samples = steady_run(design, &state, loads.direction);
+            let entry = if samples[0].speed_m_s >= 0.0 { state.t1_n } else { state.t2_n };
+            let initial = WrapState::uniform(design.pulley.wrap_angle_rad, options.nodes, entry);
+            let run = level2::run_history(params(design, options.solver), &samples, &[], initial, options.nodes)
+                .map_err(|source| RunError::Level2 { scene: scene.name.clone(), source })?;
+            let last = run.snapshots.into_iter().last();
+            result.wrap = last
+                .map(|s| WrapResult { summary: s.summary, distribution: Distribution { t_s: 0.0, ..s.distribution } });
+            result.nodes = Some(options.nodes);
+        }
+    }
+    Ok(result)
+}
+
+/// Creep speed used to reach the state "after the rope last ran" for a scene at rest (m/s).
+const CREEP_SPEED_M_S: f64 = 0.1;
+
+/// A history that runs the rope 1.5 wrap lengths through the wrap at constant loads, ending
+/// at the scene's own speed.
+fn steady_run(design: &Design, state: &EndState, direction: Direction) -> Vec<HistorySample> {
+    let run_speed = if state.speed_m_s != 0.0 { state.speed_m_s } else { CREEP_SPEED_M_S * direction.sign() };
+    let length_m = 1.5 * design.pulley.wrap_angle_rad * 0.5 * design.pulley.diameter_m;
+    let t_run = length_m / run_speed.abs();
+    let at = |t_s: f64, speed_m_s: f64| HistorySample { t_s, t1_n: state.t1_n, t2_n: state.t2_n, speed_m_s };
+    let mut samples = vec![at(0.0, run_speed), at(t_run, run_speed)];
+    if state.speed_m_s == 0.0 {
+        samples.push(at(t_run * 1.001, 0.0));
+    }
+    samples
+}
+
+fn run_history(
+    design: &Design,
+    scene: &Scene,
+    history: &HistoryScene,
+    plan: Plan,
+    options: Options,
+) -> Result<SceneResult, RunError> {
+    let samples = &history.samples;
+    let c_of = |v: f64| design.rope.mass_per_m_kg * v * v;
+    let states: Vec<(f64, EndState)> = samples
+        .iter()
+        .enumerate()
+        .map(|(i, s)| {
+            let slope = |a: &HistorySample, b: &HistorySample| (b.speed_m_s - a.speed_m_s) / (b.t_s - a.t_s);
+            let accel = match (samples.get(i + 1), i.checked_sub(1).and_then(|j| samples.get(j))) {
+                (Some(next), _) => slope(s, next),
+                (None, Some(prev)) => slope(prev, s),
+                _ => 0.0,
+            };
+            (
+                s.t_s,
+                EndState {
+                    t1_n: s.t1_n,
+                    t2_n: s.t2_n,
+                    speed_m_s: s.speed_m_s,
+                    accel_m_s2: accel,
+                    centrifugal_n: c_of(s.speed_m_s),
+                },
+            )
+        })
+        .collect();
+    let classical = level0::over_history(design, &states);
+    let mut result = empty(scene, plan, classical);
+    result.t_s = samples.last().map(|s| s.t_s);
+    if result.plan.level < 2 {
+        return Ok(result);
+    }
+    let first = states[0].1;
+    let alpha = design.pulley.wrap_angle_rad;
+    // Uniform rope when the history starts balanced, else the steady rolling state of its first loads.
+    let initial = if first.t1_n == first.t2_n {
+        WrapState::uniform(alpha, options.nodes, first.t1_n)
+    } else {
+        let rolling =
+            level1::steady_rolling(design.pulley.mu, alpha, &first, history.direction.sign(), design.rope.ea_n);
+        WrapState::from_field(alpha, options.nodes, &rolling.field)
     };
-    ensure_finite(&result)?;
+    let run =
+        level2::run_history(params(design, options.solver), samples, &history.snapshots_s, initial, options.nodes)
+            .map_err(|source| RunError::Level2 { scene: scene.name.clone(), source })?;
+    let mut snapshots: Vec<level2::Snapshot> = run.snapshots;
+    let last = snapshots.pop();
+    result.snapshots = snapshots.into_iter().map(|s| s.distribution).collect();
+    if let Some(last) = last {
+        result.classical.gross_slip |= last.distribution.gross_slip;
+        result.wrap = Some(WrapResult { summary: last.summary, distribution: last.distribution });
+    }
+    if run.rows.iter().any(|r| r.gross_slip) {
+        result.classical.gross_slip = true;
+        if let Some(check) = result.classical.checks.first_mut() {
+            check.pass = false;
+        }
+    }
+    result.history = Some(HistoryOutput { rows: run.rows, map: run.map, stats: run.stats });
+    result.nodes = Some(options.nodes);
     Ok(result)
 }
 
@@ -139,9 +291,12 @@ fn ensure_finite(r: &SceneResult) -> Result<(), RunError> {
     ];
     fields.extend(c.safety_factor.map(|v| ("safety_factor", v)));
     fields.extend(c.static_safety_factor.map(|v| ("static_safety_factor", v)));
+    let distributions = r.wrap.iter().map(|w| &w.distribution).chain(&r.snapshots);
     if let Some(w) = &r.wrap {
         fields.push(("max_utilization", w.summary.max_utilization));
-        for s in &w.distribution.samples {
+    }
+    for d in distributions {
+        for s in &d.samples {
             fields.push(("distribution.tension_n", s.tension_n));
             fields.push(("distribution.friction_n_per_rad", s.friction_n_per_rad));
             fields.push(("distribution.normal_n_per_rad", s.normal_n_per_rad));

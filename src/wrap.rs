@@ -68,18 +68,18 @@ impl TensionField {
     }
 
     /// The piece that contains θ; at a breakpoint, the one with the higher utilization, so
-    /// that a closed slip zone includes its boundary.
+    /// that a closed slip zone includes its boundary. O(log n).
     pub fn piece_at(&self, theta_rad: f64, law: &ContactLaw) -> &Piece {
-        let mut best: Option<&Piece> = None;
-        for p in &self.pieces {
-            if theta_rad >= p.theta0_rad - 1e-12 && theta_rad <= p.theta1_rad + 1e-12 {
-                best = match best {
-                    Some(b) if law.utilization(b, theta_rad) >= law.utilization(p, theta_rad) => Some(b),
-                    _ => Some(p),
-                };
+        let last = self.pieces.len().saturating_sub(1);
+        let i = self.pieces.partition_point(|p| p.theta1_rad < theta_rad).min(last);
+        let here = &self.pieces[i];
+        // At (or within round-off of) a breakpoint the neighbour may also contain θ.
+        match self.pieces.get(i + 1) {
+            Some(next) if (next.theta0_rad - theta_rad).abs() <= 1e-12 => {
+                if law.utilization(next, theta_rad) > law.utilization(here, theta_rad) { next } else { here }
             }
+            _ => here,
         }
-        best.unwrap_or_else(|| self.pieces.last().expect("a tension field has at least one piece"))
     }
 
     /// Interior breakpoints between pieces (rad).

@@ -36,7 +36,7 @@ fn sheet(mu: f64, wrap_deg: f64, count: u32, mass_per_m_kg: f64, scenes: &str) -
 
 fn run_all(design: &Design, nodes: usize) -> RunResult {
     let scenes: Vec<_> = design.scenes.iter().collect();
-    run::run(design, &scenes, Options { request: Request::Full { forced_level: None }, nodes }).expect("run")
+    run::run(design, &scenes, Options { nodes, ..Options::default() }).expect("run")
 }
 
 fn scene<'a>(r: &'a RunResult, name: &str) -> &'a SceneResult {
@@ -282,7 +282,16 @@ fn speed_zero_uses_the_last_travel_direction() {
     assert_eq!((first("down"), last("down")), (NodeState::SlipPositive, NodeState::Stick));
     // At rest nothing moves: zero slip velocity everywhere.
     for n in ["up", "down"] {
-        assert!(scene(&r, n).wrap.as_ref().expect("level 1").distribution.samples.iter().all(|x| x.slip_velocity_m_s == Some(0.0)));
+        assert!(
+            scene(&r, n)
+                .wrap
+                .as_ref()
+                .expect("level 1")
+                .distribution
+                .samples
+                .iter()
+                .all(|x| x.slip_velocity_m_s == Some(0.0))
+        );
     }
 }
 
@@ -302,7 +311,8 @@ fn equal_tensions_have_no_friction_and_an_unbounded_safety_factor() {
 fn check_only_request_builds_no_distribution() {
     let d = sheet(0.25, 180.0, 1, 5.0, &loads_scene("x", 110_000.0, 100_000.0, 0.0, "lift"));
     let scenes: Vec<_> = d.scenes.iter().collect();
-    let r = run::run(&d, &scenes, Options { request: Request::ChecksOnly, nodes: 90 }).expect("run");
+    let r =
+        run::run(&d, &scenes, Options { request: Request::ChecksOnly, nodes: 90, ..Options::default() }).expect("run");
     assert_eq!(r.scenes[0].plan.level, 0);
     assert!(r.scenes[0].wrap.is_none());
 }

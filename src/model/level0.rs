@@ -166,27 +166,7 @@ pub fn classical(design: &Design, state: EndState, static_state: EndState) -> Cl
     let dynamic_sf = if state.accel_m_s2 != 0.0 { sf } else { None };
     let req = design.requirements;
 
-    let mut checks = vec![Check {
-        name: "gross slip (Euler/capstan)",
-        formula: "(T_hi − m'v²) / (T_lo − m'v²) ≤ e^{μα}",
-        inputs: vec![
-            q("T1", state.t1_n, "N"),
-            q("T2", state.t2_n, "N"),
-            q("m'v²", state.centrifugal_n, "N"),
-            q("μ", mu, ""),
-            q("α", alpha.to_degrees(), "deg"),
-        ],
-        intermediates: vec![
-            q("μα", mu * alpha, "rad"),
-            q("e^{μα}", limit, ""),
-            q("ratio", ratio, ""),
-            q("β = ln(ratio)/μ", (ln_ratio / mu).to_degrees(), "deg"),
-        ],
-        value: Some(ratio),
-        relation: Relation::AtMost,
-        limit,
-        pass: !gross_slip,
-    }];
+    let mut checks = vec![gross_slip_check(&state, mu, alpha)];
     checks.push(safety_check(
         "static safety factor",
         "σ_s = T_lo (e^{μα} − 1) / (T_hi − T_lo), at rest (a = 0, v = 0)",
@@ -222,6 +202,96 @@ pub fn classical(design: &Design, state: EndState, static_state: EndState) -> Cl
         gross_slip,
         checks,
     }
+}
+
+/// The Euler/capstan check of one state.
+fn gross_slip_check(state: &EndState, mu: f64, alpha: f64) -> Check {
+    let limit = euler_limit(mu, alpha);
+    let ratio = state.tension_ratio();
+    Check {
+        name: "gross slip (Euler/capstan)",
+        formula: "(T_hi − m'v²) / (T_lo − m'v²) ≤ e^{μα}",
+        inputs: vec![
+            q("T1", state.t1_n, "N"),
+            q("T2", state.t2_n, "N"),
+            q("m'v²", state.centrifugal_n, "N"),
+            q("μ", mu, ""),
+            q("α", alpha.to_degrees(), "deg"),
+        ],
+        intermediates: vec![
+            q("μα", mu * alpha, "rad"),
+            q("e^{μα}", limit, ""),
+            q("ratio", ratio, ""),
+            q("β = ln(ratio)/μ", (ratio.ln() / mu).to_degrees(), "deg"),
+        ],
+        value: Some(ratio),
+        relation: Relation::AtMost,
+        limit,
+        pass: ratio <= limit,
+    }
+}
+
+/// Level 0 over the states of a history, `(t_s, state)`: the summary describes the last state;
+/// the checks are those of the worst instants — highest tension ratio, lowest safety factor at
+/// rest (v = 0, a = 0: static) and in motion (dynamic) — each with its time among the inputs.
+pub fn over_history(design: &Design, states: &[(f64, EndState)]) -> Classical {
+    let mu = design.pulley.mu;
+    let alpha = design.pulley.wrap_angle_rad;
+    let limit = euler_limit(mu, alpha);
+    let req = design.requirements;
+    let (t_last, last) = states
+        .last()
+        .copied()
+        .unwrap_or((0.0, EndState { t1_n: 1.0, t2_n: 1.0, speed_m_s: 0.0, accel_m_s2: 0.0, centrifugal_n: 0.0 }));
+    let mut c = classical(design, last, last);
+    let sf_key = |s: &EndState| safety_factor(s, limit).unwrap_or(f64::INFINITY);
+    let worst_by = |pred: &dyn Fn(&EndState) -> bool| {
+        states.iter().filter(|(_, s)| pred(s)).min_by(|a, b| sf_key(&a.1).total_cmp(&sf_key(&b.1))).copied()
+    };
+    let at_rest = |s: &EndState| s.speed_m_s == 0.0 && s.accel_m_s2 == 0.0;
+    let worst_ratio = states.iter().max_by(|a, b| a.1.tension_ratio().total_cmp(&b.1.tension_ratio())).copied();
+    let with_time = |mut check: Check, t: f64| {
+        check.inputs.insert(0, q("t", t, "s"));
+        check
+    };
+    c.checks.clear();
+    if let Some((t, s)) = worst_ratio {
+        c.checks.push(with_time(gross_slip_check(&s, mu, alpha), t));
+        c.gross_slip = s.tension_ratio() > limit;
+    }
+    c.static_safety_factor = None;
+    c.dynamic_safety_factor = None;
+    if let Some((t, s)) = worst_by(&at_rest) {
+        c.static_safety_factor = safety_factor(&s, limit);
+        c.static_state = s;
+        c.checks.push(with_time(
+            safety_check(
+                "static safety factor",
+                "σ_s = T_lo (e^{μα} − 1) / (T_hi − T_lo), worst instant at rest",
+                &s,
+                limit,
+                c.static_safety_factor,
+                req.static_safety_factor_min,
+            ),
+            t,
+        ));
+    }
+    if let Some((t, s)) = worst_by(&|s| !at_rest(s)) {
+        c.dynamic_safety_factor = safety_factor(&s, limit);
+        c.checks.push(with_time(
+            safety_check(
+                "dynamic safety factor",
+                "σ_d = (T_lo − m'v²)(e^{μα} − 1) / (T_hi − T_lo), worst instant in motion",
+                &s,
+                limit,
+                c.dynamic_safety_factor,
+                req.dynamic_safety_factor_min,
+            ),
+            t,
+        ));
+    }
+    let _ = t_last;
+    c
 }
 
 fn safety_check(

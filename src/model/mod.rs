@@ -5,3 +5,4 @@
 
 pub mod level0;
 pub mod level1;
+pub mod level2;

@@ -47,3 +47,13 @@ pub fn write_distribution<W: Write>(out: W, blocks: &[&Distribution]) -> csv::Re
     w.flush()?;
     Ok(())
 }
+
+/// history.csv: one row per reported time (INTERFACE.md).
+pub fn write_history<W: Write>(out: W, rows: &[crate::model::level2::HistoryRow]) -> csv::Result<()> {
+    let mut w = csv::Writer::from_writer(out);
+    for row in rows {
+        w.serialize(row)?;
+    }
+    w.flush()?;
+    Ok(())
+}

@@ -61,8 +61,15 @@ fn write_into(dir: &Path, summary: &Summary, run: &RunResult, options: ReportOpt
         fs::create_dir_all(&scene_dir).map_err(io(&scene_dir))?;
         let dist_path = scene_dir.join("distribution.csv");
         let f = File::create(&dist_path).map_err(io(&dist_path))?;
-        csv_out::write_distribution(BufWriter::new(f), &[&wrap.distribution])
+        let blocks: Vec<_> = scene.snapshots.iter().chain(std::iter::once(&wrap.distribution)).collect();
+        csv_out::write_distribution(BufWriter::new(f), &blocks)
             .map_err(|source| ReportError::Csv { path: dist_path.display().to_string(), source })?;
+        if let Some(history) = &scene.history {
+            let path = scene_dir.join("history.csv");
+            let f = File::create(&path).map_err(io(&path))?;
+            csv_out::write_history(BufWriter::new(f), &history.rows)
+                .map_err(|source| ReportError::Csv { path: path.display().to_string(), source })?;
+        }
         if options.plots {
             let title =
                 format!("{} — level {}, {}", scene.name, scene.plan.level, table::state_label(&scene.classical.state));

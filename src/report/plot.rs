@@ -1,10 +1,361 @@
-//! Placeholder until the plot module lands.
+//! PNG plot of one distribution over the wrap: rope tension T(θ) on top, friction q(θ) with its
+//! Coulomb limits ±μn below, both over the wrap angle, with the slip zones shaded and the JDP
+//! marked. The font is embedded (no system fonts needed); drawing never panics, every failure
+//! comes back as a [`PlotError`].
+
+use crate::contact::NodeState;
+use crate::wrap::{Distribution, Sample};
+use plotters::coord::Shift;
+use plotters::coord::types::RangedCoordf64;
+use plotters::element::DashedPathElement;
+use plotters::prelude::*;
+use plotters::style::register_font;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+use std::path::Path;
+use std::sync::OnceLock;
+
+static FONT_BYTES: &[u8] = include_bytes!("../../assets/DejaVuSans.ttf");
+const FAMILY: &str = "sans-serif";
+const WIDTH: u32 = 1200;
+const HEIGHT: u32 = 900;
+const CAPTION_H: u32 = 52;
+const LEGEND_ROW_H: u32 = 28;
+const Y_LABEL_W: u32 = 100;
+const MARGIN: u32 = 16;
+
+const TENSION: RGBColor = RGBColor(20, 70, 160);
+const FRICTION: RGBColor = RGBColor(200, 40, 30);
+const LIMIT: RGBColor = RGBColor(110, 110, 110);
+const JDP: RGBColor = RGBColor(20, 130, 60);
+const SLIP_POS: RGBColor = RGBColor(255, 216, 190);
+const SLIP_NEG: RGBColor = RGBColor(200, 224, 255);
+
+/// The plot could not be drawn or written.
 #[derive(Debug, thiserror::Error)]
 #[error("cannot draw {path}: {message}")]
 pub struct PlotError {
     pub path: String,
     pub message: String,
 }
-pub fn plot_distribution(_path: &std::path::Path, _title: &str, _dist: &crate::wrap::Distribution) -> Result<(), PlotError> {
+
+type Area<'b> = DrawingArea<BitMapBackend<'b>, Shift>;
+type Chart<'a, 'b> = ChartContext<'a, BitMapBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+
+/// A legend entry: a line (colour, width, dashed) or a filled box, and its label.
+enum Swatch {
+    Line(RGBColor, u32, bool),
+    Fill(RGBColor),
+}
+
+/// Registers the embedded font once; false if it could not be registered.
+fn font_ready() -> bool {
+    static READY: OnceLock<bool> = OnceLock::new();
+    *READY.get_or_init(|| register_font(FAMILY, FontStyle::Normal, FONT_BYTES).is_ok())
+}
+
+fn font(size: u32) -> FontDesc<'static> {
+    (FAMILY, size).into_font()
+}
+
+/// Draws T(θ) and q(θ) with ±μn bounds, stick/slip shading and the JDP to a PNG file.
+pub fn plot_distribution(path: &Path, title: &str, dist: &Distribution) -> Result<(), PlotError> {
+    let fail = |message: String| PlotError { path: path.display().to_string(), message };
+    if !font_ready() {
+        return Err(fail("the embedded font cannot be loaded".to_string()));
+    }
+    let root = BitMapBackend::new(path, (WIDTH, HEIGHT)).into_drawing_area();
+    draw(&root, title, dist).map_err(fail)?;
+    root.present().map_err(|e| fail(e.to_string()))
+}
+
+fn draw(root: &Area, title: &str, dist: &Distribution) -> Result<(), String> {
+    let e = |e: DrawingAreaErrorKind<_>| e.to_string();
+    root.fill(&WHITE).map_err(e)?;
+    let (caption, body) = root.split_vertically(CAPTION_H);
+    draw_caption(&caption, title, dist.gross_slip)?;
+    let (top, bottom) = body.split_vertically((HEIGHT - CAPTION_H) / 2);
+
+    let x_max = [dist.wrap_angle_deg, dist.samples.iter().map(|s| s.theta_deg).fold(0.0, f64::max)]
+        .into_iter()
+        .find(|w| w.is_finite() && *w > 0.0)
+        .unwrap_or(1.0);
+    // θ within round-off of the axis is pulled onto it; values beyond 1e12 kN are dropped as
+    // garbage (they would overflow the axis arithmetic).
+    let tol = 1e-6 * x_max;
+    let on_axis = move |t: f64| (t >= -tol && t <= x_max + tol).then(|| t.clamp(0.0, x_max));
+    let series = |f: &dyn Fn(&Sample) -> f64| -> Vec<(f64, f64)> {
+        let point = |s: &Sample| Some((on_axis(s.theta_deg)?, f(s) / 1000.0)).filter(|p| p.1.abs() <= 1e12);
+        dist.samples.iter().filter_map(point).collect()
+    };
+    let tension = series(&|s| s.tension_n);
+    let friction = series(&|s| s.friction_n_per_rad);
+    let upper = series(&|s| dist.mu * s.normal_n_per_rad);
+    let lower: Vec<(f64, f64)> = upper.iter().map(|&(x, y)| (x, -y)).collect();
+    let jdp = dist.jdp_deg.and_then(on_axis);
+
+    // Top panel: tension, padded by at least ±1 % of its level so a flat line stays readable.
+    let y = padded_range(tension.iter().map(|p| p.1), 0.01);
+    let mut legend = vec![(Swatch::Line(TENSION, 3, false), "tension T".to_string())];
+    legend.extend(zone_legend(dist, jdp));
+    let chart = panel(&top, dist, &legend, (x_max, y), "tension T (kN per rope)", false)?;
+    thick_line(&chart, &tension, TENSION)?;
+    mark_jdp(&chart, jdp, y)?;
+
+    // Bottom panel: friction against the Coulomb limits.
+    let all = friction.iter().chain(&upper).chain(&lower).map(|p| p.1).chain([0.0]);
+    let y = padded_range(all, 0.0);
+    let mut legend = vec![
+        (Swatch::Line(FRICTION, 3, false), "friction q".to_string()),
+        (Swatch::Line(LIMIT, 2, true), "±μn (Coulomb limit)".to_string()),
+    ];
+    legend.extend(zone_legend(dist, jdp));
+    let chart = panel(&bottom, dist, &legend, (x_max, y), "friction q (kN/rad)", true)?;
+    let area = chart.plotting_area();
+    area.draw(&PathElement::new(vec![(0.0, 0.0), (x_max, 0.0)], BLACK.stroke_width(1))).map_err(e)?;
+    for bound in [upper, lower] {
+        if let [p] = bound[..] {
+            area.draw(&Circle::new(p, 4, LIMIT.filled())).map_err(e)?;
+        }
+        area.draw(&DashedPathElement::new(bound, 12, 7, LIMIT.stroke_width(2))).map_err(e)?;
+    }
+    thick_line(&chart, &friction, FRICTION)?;
+    mark_jdp(&chart, jdp, y)
+}
+
+/// The title, centred, followed by a red " — GROSS SLIP" when the whole wrap slides; a title
+/// too long for the image is set smaller (down to 22 px), then shortened with an ellipsis.
+fn draw_caption(area: &Area, title: &str, gross_slip: bool) -> Result<(), String> {
+    let suffix = if gross_slip { " — GROSS SLIP" } else { "" };
+    let width = |text: &str, size: u32| {
+        area.estimate_text_size(text, &font(size).into()).map(|d| d.0).map_err(|e| e.to_string())
+    };
+    let room = WIDTH - 2 * MARGIN;
+    let mut size = 26;
+    while size > 22 && width(title, size)? + width(suffix, size)? > room {
+        size -= 1;
+    }
+    let mut text = title.to_string();
+    if width(&text, size)? + width(suffix, size)? > room {
+        let shortened = |t: &str| format!("{}...", t.trim_end());
+        while !text.is_empty() && width(&shortened(&text), size)? + width(suffix, size)? > room {
+            text.pop();
+        }
+        text = shortened(&text);
+    }
+    let (w1, w2) = (width(&text, size)?, width(suffix, size)?);
+    let x = (WIDTH.saturating_sub(w1 + w2) / 2) as i32;
+    let y = (CAPTION_H / 2 + 4) as i32;
+    let at = |c: &RGBColor| font(size).color(c).pos(Pos::new(HPos::Left, VPos::Center));
+    area.draw_text(&text, &at(&BLACK), (x, y)).map_err(|e| e.to_string())?;
+    if gross_slip {
+        area.draw_text(suffix, &at(&RED), (x + w1 as i32, y)).map_err(|e| e.to_string())?;
+    }
     Ok(())
+}
+
+/// Adds the slip shadings present in the distribution and the JDP to a legend.
+fn zone_legend(dist: &Distribution, jdp: Option<f64>) -> Vec<(Swatch, String)> {
+    let mut legend = Vec::new();
+    if dist.zones.iter().any(|z| z.state == NodeState::SlipPositive) {
+        legend.push((Swatch::Fill(SLIP_POS), "slip+ (positive friction slipping)".to_string()));
+    }
+    if dist.zones.iter().any(|z| z.state == NodeState::SlipNegative) {
+        legend.push((Swatch::Fill(SLIP_NEG), "slip− (reverse friction slipping)".to_string()));
+    }
+    if let Some(j) = jdp {
+        legend.push((Swatch::Line(JDP, 2, false), jdp_label(j)));
+    }
+    legend
+}
+
+/// One panel: a legend strip on top, then the axes with the slip zones shaded behind the mesh.
+fn panel<'a, 'b>(
+    area: &Area<'b>,
+    dist: &Distribution,
+    legend: &[(Swatch, String)],
+    (x_max, (y0, y1)): (f64, (f64, f64)),
+    y_desc: &str,
+    x_desc: bool,
+) -> Result<Chart<'a, 'b>, String> {
+    let e = |e: DrawingAreaErrorKind<_>| e.to_string();
+    let label = font(17).color(&BLACK).pos(Pos::new(HPos::Left, VPos::Center));
+    // Lay the legend out in rows that fit the plot width.
+    let (left, right) = ((MARGIN + Y_LABEL_W) as i32, (WIDTH - MARGIN) as i32);
+    let mut placed = Vec::with_capacity(legend.len());
+    let (mut x, mut row) = (left, 0);
+    for (swatch, text) in legend {
+        let w = 38 + area.estimate_text_size(text, &label).map_err(e)?.0 as i32 + 26;
+        if x + w > right && x > left {
+            (x, row) = (left, row + 1);
+        }
+        placed.push((swatch, text, x, row));
+        x += w;
+    }
+    let (strip, plot) = area.split_vertically(8 + LEGEND_ROW_H * (row as u32 + 1));
+    for (swatch, text, x, row) in placed {
+        let y = 8 + LEGEND_ROW_H as i32 * row + LEGEND_ROW_H as i32 / 2;
+        match swatch {
+            Swatch::Fill(c) => strip.draw(&Rectangle::new([(x, y - 9), (x + 30, y + 9)], c.filled())),
+            Swatch::Line(c, w, false) => strip.draw(&PathElement::new(vec![(x, y), (x + 30, y)], c.stroke_width(*w))),
+            Swatch::Line(c, w, true) => {
+                strip.draw(&DashedPathElement::new(vec![(x, y), (x + 30, y)], 8, 5, c.stroke_width(*w)))
+            }
+        }
+        .map_err(e)?;
+        strip.draw_text(text, &label, (x + 38, y + 1)).map_err(e)?;
+    }
+
+    let mut chart = ChartBuilder::on(&plot)
+        .margin(MARGIN)
+        .margin_top(4)
+        .x_label_area_size(if x_desc { 56 } else { 32 })
+        .y_label_area_size(Y_LABEL_W)
+        .build_cartesian_2d(0.0..x_max, y0..y1)
+        .map_err(e)?;
+    for z in &dist.zones {
+        let color = match z.state {
+            NodeState::SlipPositive => SLIP_POS,
+            NodeState::SlipNegative => SLIP_NEG,
+            NodeState::Stick => continue,
+        };
+        let (a, b) = (z.start_deg.clamp(0.0, x_max), z.end_deg.clamp(0.0, x_max));
+        if a.is_finite() && b.is_finite() && b > a {
+            chart.plotting_area().draw(&Rectangle::new([(a, y0), (b, y1)], color.filled())).map_err(e)?;
+        }
+    }
+    let (x_fmt, y_fmt) = (tick_format(0.0, x_max), tick_format(y0, y1));
+    chart
+        .configure_mesh()
+        .x_desc(if x_desc { "wrap angle θ (deg)" } else { "" })
+        .y_desc(y_desc)
+        .x_labels(12)
+        .y_labels(8)
+        .x_label_formatter(&x_fmt)
+        .y_label_formatter(&y_fmt)
+        .label_style(font(16))
+        .axis_desc_style(font(18))
+        .light_line_style(TRANSPARENT)
+        .bold_line_style(RGBColor(205, 205, 205))
+        .draw()
+        .map_err(e)?;
+    Ok(chart)
+}
+
+/// The JDP as a vertical line through the panel, labelled at its top.
+fn mark_jdp(chart: &Chart, jdp: Option<f64>, (y0, y1): (f64, f64)) -> Result<(), String> {
+    let Some(j) = jdp else { return Ok(()) };
+    let area = chart.plotting_area();
+    let e = |e: DrawingAreaErrorKind<_>| e.to_string();
+    area.draw(&PathElement::new(vec![(j, y0), (j, y1)], JDP.stroke_width(2))).map_err(e)?;
+    let (h, dx) = if j > 0.8 * area.get_x_range().end { (HPos::Right, -6) } else { (HPos::Left, 6) };
+    let style = font(17).color(&JDP).pos(Pos::new(h, VPos::Top));
+    let label = EmptyElement::at((j, y1)) + Text::new(jdp_label(j), (dx, 6), style);
+    area.draw(&label).map_err(e)
+}
+
+fn jdp_label(j: f64) -> String {
+    if j < 1e6 { format!("JDP {j:.1}°") } else { format!("JDP {j:.3e}°") }
+}
+
+/// A 3 px line drawn as nine 1 px paths offset by a pixel (plotters' thick-line polygons
+/// distort the ends and corners of nearly flat curves).
+fn thick_line(chart: &Chart, points: &[(f64, f64)], color: RGBColor) -> Result<(), String> {
+    let area = chart.plotting_area();
+    if let [p] = points {
+        return area.draw(&Circle::new(*p, 5, color.filled())).map_err(|e| e.to_string());
+    }
+    let (w, h) = area.dim_in_pixel();
+    let (xr, yr) = (area.get_x_range(), area.get_y_range());
+    let (px, py) = ((xr.end - xr.start) / f64::from(w.max(1)), (yr.end - yr.start) / f64::from(h.max(1)));
+    for (dx, dy) in (-1..=1).flat_map(|i| (-1..=1).map(move |j| (f64::from(i) * px, f64::from(j) * py))) {
+        let shifted: Vec<(f64, f64)> = points.iter().map(|&(x, y)| (x + dx, y + dy)).collect();
+        area.draw(&PathElement::new(shifted, color.stroke_width(1))).map_err(|e| e.to_string())?;
+    }
+    Ok(())
+}
+
+/// Data range of the finite values, padded by 6 % of the span and at least `rel_min` of the
+/// magnitude, never empty and never infinite.
+fn padded_range(values: impl Iterator<Item = f64>, rel_min: f64) -> (f64, f64) {
+    let (lo, hi) =
+        values.filter(|v| v.is_finite()).fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| (lo.min(v), hi.max(v)));
+    if lo > hi {
+        return (0.0, 1.0);
+    }
+    let mag = lo.abs().max(hi.abs());
+    let mut pad = ((hi - lo) * 0.06).max(mag * rel_min);
+    if pad.is_nan() || pad <= mag * 1e-9 {
+        pad = if mag > 0.0 { mag * 0.01 } else { 1.0 };
+    }
+    let (a, b) = (lo - pad, hi + pad);
+    if a.is_finite() && b.is_finite() && b > a { (a, b) } else { (-1.0, 1.0) }
+}
+
+/// A tick-label formatter for an axis over [lo, hi]: as many decimals as about eight ticks
+/// need, in scientific notation for magnitudes a plain number would spell out too long.
+fn tick_format(lo: f64, hi: f64) -> impl Fn(&f64) -> String {
+    let (mag, step) = (lo.abs().max(hi.abs()), (hi - lo) / 8.0);
+    let digits = |x: f64| if x.is_finite() { x.ceil().clamp(0.0, 9.0) as usize } else { 0 };
+    let sci = mag >= 1e6 || (mag > 0.0 && mag < 1e-4);
+    let decimals = if sci { digits((mag / step).log10()).min(6) } else { digits(-step.log10()) };
+    move |v: &f64| {
+        let s = if sci { format!("{v:.decimals$e}") } else { format!("{v:.decimals$}") };
+        match s.strip_prefix('-') {
+            Some(rest) if rest.bytes().all(|c| matches!(c, b'0' | b'.')) => rest.to_string(),
+            Some(rest) => format!("−{rest}"),
+            None => s,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::wrap::Zone;
+
+    fn row(theta_deg: f64, tension_n: f64, friction_n_per_rad: f64, state: NodeState) -> Sample {
+        let normal_n_per_rad = tension_n;
+        Sample {
+            theta_deg,
+            tension_n,
+            normal_n_per_rad,
+            friction_n_per_rad,
+            utilization: 1.0,
+            state,
+            slip_velocity_m_s: None,
+        }
+    }
+
+    #[test]
+    fn draws_normal_and_degenerate_inputs_without_panicking() {
+        let dir = tempfile::tempdir().expect("temp dir");
+        let zone = |start_deg, end_deg, state| Zone { start_deg, end_deg, state };
+        let slip = (0..=20).map(|i| 160.0 + 27.42 * f64::from(i) / 20.0).map(|t: f64| {
+            let tension = 2.2e5 * (-0.25 * (t - 160.0).to_radians()).exp();
+            row(t, tension, 0.25 * tension, NodeState::SlipPositive)
+        });
+        let samples: Vec<Sample> = [row(0.0, 2.2e5, 0.0, NodeState::Stick), row(160.0, 2.2e5, 0.0, NodeState::Stick)]
+            .into_iter()
+            .chain(slip)
+            .collect();
+        let zones = vec![zone(0.0, 160.0, NodeState::Stick), zone(160.0, 187.42, NodeState::SlipPositive)];
+        let full = Distribution {
+            t_s: 0.0,
+            mu: 0.25,
+            wrap_angle_deg: 187.42,
+            samples,
+            zones,
+            jdp_deg: Some(160.0),
+            gross_slip: false,
+        };
+        let one = Distribution { samples: full.samples[..1].to_vec(), gross_slip: true, ..full.clone() };
+        let empty =
+            Distribution { samples: Vec::new(), wrap_angle_deg: f64::NAN, jdp_deg: Some(f64::NAN), ..full.clone() };
+        for (name, dist) in [("full", &full), ("one", &one), ("empty", &empty)] {
+            let path = dir.path().join(format!("{name}.png"));
+            plot_distribution(&path, name, dist).expect("plot");
+            assert!(path.metadata().map(|m| m.len() > 10_000).unwrap_or(false), "{name}: no image");
+        }
+        assert!(plot_distribution(&dir.path().join("missing/x.png"), "x", &full).is_err());
+    }
 }

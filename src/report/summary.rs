@@ -1,6 +1,7 @@
 //! The scalar summary of a run, as written to summary.json and summary.csv (INTERFACE.md).
 
 use crate::model::level0::Check;
+use crate::model::level2::StepStats;
 use crate::roots::RootStats;
 use crate::run::{RunResult, SceneResult};
 use serde::Serialize;
@@ -49,7 +50,7 @@ impl SceneSummary {
             kind: r.kind,
             level: r.plan.level,
             level_reason: r.plan.reason.clone(),
-            t_s: None,
+            t_s: r.t_s,
             t1_n: c.state.t1_n,
             t2_n: c.state.t2_n,
             speed_m_s: c.state.speed_m_s,
@@ -85,6 +86,8 @@ pub struct SceneJson {
     pub summary: SceneSummary,
     pub checks: Vec<Check>,
     pub root_finding: Option<RootStats>,
+    /// Increments, node events and clarabel verdicts of the discrete level.
+    pub solver: Option<StepStats>,
 }
 
 /// The whole summary.json document.
@@ -113,6 +116,7 @@ impl Summary {
                     summary: SceneSummary::of(s),
                     checks: s.classical.checks.clone(),
                     root_finding: s.wrap.as_ref().map(|w| w.summary.roots),
+                    solver: s.history.as_ref().map(|h| h.stats),
                 })
                 .collect(),
         }

@@ -6,6 +6,7 @@
 //! Each diagnostic names the file, line:column, scene, key path, the bad value and what is allowed.
 
 mod diag;
+mod history;
 mod raw;
 mod validate;
 

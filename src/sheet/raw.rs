@@ -45,9 +45,13 @@ pub struct RawScene {
     pub kind: Option<Spanned<String>>,
     pub m1_kg: Option<Spanned<f64>>,
     pub m2_kg: Option<Spanned<f64>>,
-    pub t1_n: Option<Spanned<f64>>,
-    pub t2_n: Option<Spanned<f64>>,
+    /// A number (loads) or an array (history).
+    pub t1_n: Option<Spanned<toml::Value>>,
+    pub t2_n: Option<Spanned<toml::Value>>,
     pub accel_m_s2: Option<Spanned<f64>>,
-    pub speed_m_s: Option<Spanned<f64>>,
+    pub speed_m_s: Option<Spanned<toml::Value>>,
     pub direction: Option<Spanned<String>>,
+    pub t_s: Option<Spanned<Vec<f64>>>,
+    pub csv: Option<Spanned<String>>,
+    pub snapshots_s: Option<Spanned<Vec<f64>>>,
 }

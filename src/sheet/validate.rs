@@ -50,14 +50,14 @@ const ANY: Rule = Rule { ok: |_| true, allowed: "a finite number" };
 
 /// Where a value sits: the scene it belongs to and its section's key prefix.
 #[derive(Clone, Copy)]
-struct At<'a> {
-    scene: Option<&'a str>,
-    section: &'a str,
-    table_span: &'a Range<usize>,
+pub(super) struct At<'a> {
+    pub scene: Option<&'a str>,
+    pub section: &'a str,
+    pub table_span: &'a Range<usize>,
 }
 
 impl At<'_> {
-    fn key(&self, key: &str) -> String {
+    pub fn key(&self, key: &str) -> String {
         join_key(self.section, key)
     }
 }
@@ -333,21 +333,26 @@ fn scenes(c: &mut Collector, slots: &[SceneSlot], g_m_s2: Option<f64>, rope: Opt
             At { scene: name.as_deref().or(Some(slot.label.as_str())), section: &slot.label, table_span: &table_span };
         let kind = match &raw.kind {
             Some(k) if k.get_ref() == "loads" => loads(c, at, raw, g_m_s2, rope).map(SceneKind::Loads),
-            Some(k) if matches!(k.get_ref().as_str(), "history" | "duty-cycle") => {
+            Some(k) if k.get_ref() == "history" => {
+                super::history::history(c, at.scene, &slot.label, &table_span, raw, rope).map(SceneKind::History)
+            }
+            Some(k) if k.get_ref() == "duty-cycle" => {
+                let msg = "this kind of scene is not supported by this version; supported: \"loads\", \"history\"";
+                c.push(Some(k.span()), at.scene, &at.key("kind"), msg);
+                None
+            }
+            Some(k) => {
                 c.push(
                     Some(k.span()),
                     at.scene,
                     &at.key("kind"),
-                    "this kind of scene is not supported by this version; supported: \"loads\"",
+                    "unknown scene kind; expected \"loads\" or \"history\"",
                 );
                 None
             }
-            Some(k) => {
-                c.push(Some(k.span()), at.scene, &at.key("kind"), "unknown scene kind; expected \"loads\"");
-                None
-            }
             None => {
-                c.push_at(Some(table_span.clone()), at.scene, &at.key("kind"), "missing; expected kind = \"loads\"");
+                let msg = "missing; expected kind = \"loads\" or \"history\"";
+                c.push_at(Some(table_span.clone()), at.scene, &at.key("kind"), msg);
                 None
             }
         };
@@ -359,12 +364,62 @@ fn scenes(c: &mut Collector, slots: &[SceneSlot], g_m_s2: Option<f64>, rope: Opt
     all_ok.then_some(out)
 }
 
+/// A key that must hold one number in this kind of scene.
+fn scalar(c: &mut Collector, at: At, key: &str, value: &Option<Spanned<toml::Value>>) -> Option<Option<Spanned<f64>>> {
+    match value {
+        None => Some(None),
+        Some(v) => match v.get_ref() {
+            toml::Value::Float(x) => Some(Some(Spanned::new(v.span(), *x))),
+            toml::Value::Integer(i) => Some(Some(Spanned::new(v.span(), *i as f64))),
+            _ => {
+                c.push(
+                    Some(v.span()),
+                    at.scene,
+                    &at.key(key),
+                    "expected a number in a loads scene (arrays belong to history scenes)",
+                );
+                None
+            }
+        },
+    }
+}
+
+/// Rejects keys that belong to another kind of scene.
+pub(super) fn foreign_keys(c: &mut Collector, at: At, kind: &str, keys: &[(&str, Option<Range<usize>>)]) -> bool {
+    let mut ok = true;
+    for (key, span) in keys {
+        if let Some(span) = span {
+            c.push(Some(span.clone()), at.scene, &at.key(key), format!("not a key of a {kind} scene"));
+            ok = false;
+        }
+    }
+    ok
+}
+
 fn loads(c: &mut Collector, at: At, raw: &RawScene, g_m_s2: Option<f64>, rope: Option<&Rope>) -> Option<LoadsScene> {
+    let foreign_ok = foreign_keys(
+        c,
+        at,
+        "loads",
+        &[
+            ("t_s", raw.t_s.as_ref().map(|v| v.span())),
+            ("csv", raw.csv.as_ref().map(|v| v.span())),
+            ("snapshots_s", raw.snapshots_s.as_ref().map(|v| v.span())),
+        ],
+    );
+    let (t1_raw, t2_raw, speed_raw) = (
+        scalar(c, at, "t1_n", &raw.t1_n),
+        scalar(c, at, "t2_n", &raw.t2_n),
+        scalar(c, at, "speed_m_s", &raw.speed_m_s),
+    );
+    let (Some(t1_raw), Some(t2_raw), Some(speed_raw), true) = (t1_raw, t2_raw, speed_raw, foreign_ok) else {
+        return None;
+    };
     let masses = raw.m1_kg.is_some() || raw.m2_kg.is_some();
-    let tensions = raw.t1_n.is_some() || raw.t2_n.is_some();
+    let tensions = t1_raw.is_some() || t2_raw.is_some();
     let ends = match (masses, tensions) {
         (true, true) => {
-            let span = raw.t1_n.as_ref().or(raw.t2_n.as_ref()).map(|v| v.span());
+            let span = t1_raw.as_ref().or(t2_raw.as_ref()).map(|v| v.span());
             c.push(
                 span,
                 at.scene,
@@ -374,8 +429,8 @@ fn loads(c: &mut Collector, at: At, raw: &RawScene, g_m_s2: Option<f64>, rope: O
             None
         }
         (false, true) => {
-            let t1 = required(c, at, "t1_n", &raw.t1_n, POSITIVE);
-            let t2 = required(c, at, "t2_n", &raw.t2_n, POSITIVE);
+            let t1 = required(c, at, "t1_n", &t1_raw, POSITIVE);
+            let t2 = required(c, at, "t2_n", &t2_raw, POSITIVE);
             Some(EndLoads::Tensions { t1_n: t1?, t2_n: t2? })
         }
         (true, false) => {
@@ -405,7 +460,7 @@ fn loads(c: &mut Collector, at: At, raw: &RawScene, g_m_s2: Option<f64>, rope: O
         (Some(a), None) => checked(c, at, "accel_m_s2", a, ANY),
         (None, _) => Some(0.0),
     };
-    let speed = match &raw.speed_m_s {
+    let speed = match &speed_raw {
         Some(v) => in_range(
             c,
             at,
@@ -448,7 +503,7 @@ fn loads(c: &mut Collector, at: At, raw: &RawScene, g_m_s2: Option<f64>, rope: O
         let state = crate::model::level0::EndState::of(&scene, g, rope);
         let lo = state.t1_n.min(state.t2_n);
         if lo <= state.centrifugal_n {
-            let span = raw.speed_m_s.as_ref().map(|v| v.span());
+            let span = speed_raw.as_ref().map(|v| v.span());
             c.push(
                 span,
                 at.scene,

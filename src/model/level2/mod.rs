@@ -1,0 +1,169 @@
+//! Level 2: the discrete stick–slip model of the rope on a rigid lining under a load history
+//! (MODEL §5).
+//!
+//! Stages of one run: [`state`] holds the tension the rope keeps over the wrap (knots carried
+//! by the pulley); [`simulate`] steps it through the history — [`update::advect`] moves it with
+//! the pulley, then [`update::update`] (exact O(N) clamp) or [`qp::update`] (the same increment
+//! as a convex program in clarabel) applies the new end tensions; [`slip`] gives the rope's slip
+//! velocity; this module samples the state into history rows and distributions.
+
+pub mod qp;
+pub mod simulate;
+pub mod slip;
+pub mod state;
+pub mod update;
+
+use crate::contact::ContactLaw;
+use crate::derived::{self, WrapSummary};
+use crate::model::level0::{EndState, euler_limit, safety_factor};
+use crate::roots::{RootError, RootStats};
+use crate::wrap::Distribution;
+use serde::Serialize;
+pub use simulate::{HistorySample, Params, SimError, Simulation, Solver, StepStats};
+pub use state::WrapState;
+
+/// One row of history.csv.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct HistoryRow {
+    pub t_s: f64,
+    pub t1_n: f64,
+    pub t2_n: f64,
+    pub speed_m_s: f64,
+    pub accel_m_s2: f64,
+    pub jdp_deg: Option<f64>,
+    pub positive_arc_deg: f64,
+    pub reverse_arc_deg: f64,
+    pub max_utilization: f64,
+    pub safety_factor: Option<f64>,
+    pub gross_slip: bool,
+}
+
+/// The wrap at one reported time.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Snapshot {
+    pub summary: WrapSummary,
+    pub distribution: Distribution,
+}
+
+/// Everything a history run reports.
+#[derive(Debug, Clone, PartialEq)]
+pub struct HistoryRun {
+    pub rows: Vec<HistoryRow>,
+    /// Distributions at the requested snapshot times, then at the last sample.
+    pub snapshots: Vec<Snapshot>,
+    pub stats: StepStats,
+    pub roots: RootStats,
+    /// Utilization map: for each row, utilization signed by friction (+ positive, − reverse)
+    /// on `map_nodes + 1` equally spaced angles.
+    pub map: Vec<Vec<f64>>,
+}
+
+impl HistoryRun {
+    pub fn last(&self) -> &Snapshot {
+        self.snapshots.last().expect("a history run reports its last state")
+    }
+}
+
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum Level2Error {
+    #[error(transparent)]
+    Sim(#[from] SimError),
+    #[error(transparent)]
+    Roots(#[from] RootError),
+}
+
+/// Angles of the wrap map (columns).
+pub const MAP_COLUMNS: usize = 181;
+
+/// Runs a history from `initial`, reporting at every sample and snapshot time.
+pub fn run_history(
+    params: Params,
+    samples: &[HistorySample],
+    snapshots_s: &[f64],
+    initial: WrapState,
+    output_nodes: usize,
+) -> Result<HistoryRun, Level2Error> {
+    let mut times: Vec<f64> = samples.iter().map(|s| s.t_s).chain(snapshots_s.iter().copied()).collect();
+    times.sort_by(f64::total_cmp);
+    times.dedup();
+    let t_last = samples.last().map_or(0.0, |s| s.t_s);
+    let mut sim = Simulation::new(params, samples, initial);
+    sim.settle()?;
+    let limit = euler_limit(params.mu, params.wrap_angle_rad);
+    let mut run = HistoryRun {
+        rows: Vec::with_capacity(times.len()),
+        snapshots: Vec::new(),
+        stats: StepStats::default(),
+        roots: RootStats::default(),
+        map: Vec::with_capacity(times.len()),
+    };
+    for &t in &times {
+        sim.advance_to(t)?;
+        let s = sim.at(t);
+        let c = params.mass_per_m_kg * s.speed_m_s * s.speed_m_s;
+        let law = ContactLaw::new(params.mu, c);
+        let field = sim.state.field(c);
+        let summary = derived::summarize(&field, &law)?;
+        run.roots.calls += summary.roots.calls;
+        run.roots.iterations += summary.roots.iterations;
+        let end = EndState {
+            t1_n: s.t1_n,
+            t2_n: s.t2_n,
+            speed_m_s: s.speed_m_s,
+            accel_m_s2: sim.accel_m_s2(t),
+            centrifugal_n: c,
+        };
+        run.rows.push(HistoryRow {
+            t_s: t,
+            t1_n: s.t1_n,
+            t2_n: s.t2_n,
+            speed_m_s: s.speed_m_s,
+            accel_m_s2: end.accel_m_s2,
+            jdp_deg: summary.jdp_rad.map(f64::to_degrees),
+            positive_arc_deg: summary.positive_arc_rad.to_degrees(),
+            reverse_arc_deg: summary.reverse_arc_rad.to_degrees(),
+            max_utilization: summary.max_utilization,
+            safety_factor: safety_factor(&end, limit),
+            gross_slip: sim.gross_slip,
+        });
+        run.map.push(
+            (0..MAP_COLUMNS)
+                .map(|i| {
+                    let theta = params.wrap_angle_rad * i as f64 / (MAP_COLUMNS - 1) as f64;
+                    let p = field.piece_at(theta, &law);
+                    law.utilization(p, theta) * p.friction_n_per_rad(theta).signum()
+                })
+                .collect(),
+        );
+        let is_snapshot = snapshots_s.contains(&t) || t == t_last;
+        if is_snapshot {
+            let (knots, w) = sim.slip_velocities();
+            let gross = sim.gross_slip;
+            let distribution = derived::distribution(t, &field, &law, &summary, output_nodes, gross, |theta, _| {
+                (!gross).then(|| interpolate_knots(&knots, &w, theta))
+            });
+            run.snapshots.push(Snapshot { summary, distribution });
+        }
+    }
+    run.stats = sim.stats;
+    Ok(run)
+}
+
+/// Linear interpolation of per-knot values at θ.
+fn interpolate_knots(knots: &[state::Knot], values: &[f64], theta: f64) -> f64 {
+    if values.len() != knots.len() || knots.is_empty() {
+        return 0.0;
+    }
+    let j = knots.partition_point(|k| k.theta_rad <= theta);
+    if j == 0 {
+        return values[0];
+    }
+    if j >= knots.len() {
+        return values[knots.len() - 1];
+    }
+    let (a, b) = (knots[j - 1].theta_rad, knots[j].theta_rad);
+    if b <= a {
+        return values[j];
+    }
+    values[j - 1] + (values[j] - values[j - 1]) * (theta - a) / (b - a)
+}

@@ -1,0 +1,332 @@
+//! One increment of the discrete stick–slip model: advection with the pulley, then the exact
+//! update of the stuck tension to the new end tensions (MODEL §5).
+//!
+//! With `x = ln(T − m'v²)` the admissible set for ends `x1 = ln n1`, `x2 = ln n2` is
+//! `{x : |dx/dθ| ≤ μ, x(0) = x1, x(α) = x2}`; it is empty when `|x1 − x2| > μα` (gross slip).
+//! Every admissible profile lies between the envelopes
+//!
+//! ```text
+//! L(θ) = max(x1 − μθ, x2 − μ(α − θ)),      U(θ) = min(x1 + μθ, x2 + μ(α − θ)),
+//! ```
+//!
+//! so for an admissible old profile `o` the update `x = clamp(o, L, U)` changes each point by
+//! the least amount any admissible profile can: it is the rigid-lining solution (stuck rope keeps
+//! its tension; slip zones grow from the ends at |q| = μn) and, for the same reason, the
+//! minimiser of every separable convex distance — in particular of the complementary energy
+//! `Σ w (ΔT)² / 2EA` that the clarabel path minimises ([`super::qp`]). The clamp is exact
+//! between knots too: where it bites inside an interval, the crossing of the old exponential with
+//! the envelope is inserted as a kink.
+//!
+//! When m'v² rises, stuck rope that held friction at the old limit can exceed the new one
+//! (|dx/dθ| > μ away from the ends). Such an increment is repaired by two Lipschitz sweeps (from
+//! θ = 0 forward, from θ = α backward), which leave admissible profiles untouched.
+
+use super::state::{Knot, KnotKind, WrapState};
+
+/// End conditions of an increment.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Ends {
+    pub t1_n: f64,
+    pub t2_n: f64,
+    pub centrifugal_n: f64,
+    pub mu: f64,
+}
+
+/// What an increment found.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Outcome {
+    Held,
+    /// No admissible field: the rope slides over the whole wrap.
+    GrossSlip,
+}
+
+/// The slip envelopes in log space.
+#[derive(Debug, Clone, Copy)]
+pub struct Envelopes {
+    pub x1: f64,
+    pub x2: f64,
+    pub mu: f64,
+    pub alpha: f64,
+}
+
+impl Envelopes {
+    pub fn new(ends: &Ends, alpha: f64) -> Self {
+        Self {
+            x1: (ends.t1_n - ends.centrifugal_n).ln(),
+            x2: (ends.t2_n - ends.centrifugal_n).ln(),
+            mu: ends.mu,
+            alpha,
+        }
+    }
+
+    pub fn admissible(&self) -> bool {
+        (self.x1 - self.x2).abs() <= self.mu * self.alpha
+    }
+
+    pub fn lower(&self, theta: f64) -> f64 {
+        (self.x1 - self.mu * theta).max(self.x2 - self.mu * (self.alpha - theta))
+    }
+
+    pub fn upper(&self, theta: f64) -> f64 {
+        (self.x1 + self.mu * theta).min(self.x2 + self.mu * (self.alpha - theta))
+    }
+
+    pub fn clamp(&self, theta: f64, x: f64) -> f64 {
+        x.max(self.lower(theta)).min(self.upper(theta))
+    }
+
+    /// Where the envelope lines may cross a straight line `x(θ)` through (θa, xa) of slope k,
+    /// plus the envelopes' own corners.
+    fn candidates(&self, theta_a: f64, xa: f64, slope: f64) -> [f64; 6] {
+        let mu = self.mu;
+        let line_vs = |x0: f64, s: f64, th0: f64| {
+            // x0 + s (θ − th0) = xa + slope (θ − θa)
+            let d = s - slope;
+            if d.abs() < 1e-300 { f64::NAN } else { (xa - slope * theta_a - x0 + s * th0) / d }
+        };
+        [
+            line_vs(self.x1, -mu, 0.0),
+            line_vs(self.x1, mu, 0.0),
+            line_vs(self.x2, mu, self.alpha),
+            line_vs(self.x2, -mu, self.alpha),
+            // corner of L: x1 − μθ = x2 − μ(α − θ); corner of U: x1 + μθ = x2 + μ(α − θ)
+            (self.x1 - self.x2 + mu * self.alpha) / (2.0 * mu),
+            (self.x2 - self.x1 + mu * self.alpha) / (2.0 * mu),
+        ]
+    }
+}
+
+/// Moves the knots with the pulley by `delta_rad` (positive: towards θ = α). The driver never
+/// moves the node lattice past one pitch event; at the event (phase reaching h moving up, or 0
+/// moving down: `direction` tells which) the node at the exit end leaves and a new node enters
+/// at the other end holding `entry_tension_n`.
+///
+/// The end the rope moves towards then holds the material that has reached it: the old
+/// exponential of its last segment, extrapolated by the travel (`x_end ← x_end − k Δ`), so the
+/// shifted profile is exactly the old one moved with the pulley (admissible if it was).
+pub fn advect(state: &mut WrapState, delta_rad: f64, direction: f64, entry_tension_n: f64, centrifugal_n: f64) {
+    let alpha = state.wrap_angle_rad;
+    let h = state.pitch_rad;
+    exit_end_follows(state, delta_rad, centrifugal_n);
+    for k in state.knots.iter_mut().filter(|k| k.kind != KnotKind::End) {
+        k.theta_rad += delta_rad;
+    }
+    state.phase_rad += delta_rad;
+    let eps = 1e-12 * alpha;
+    if direction > 0.0 && state.phase_rad >= h - eps {
+        state.phase_rad = 0.0;
+        // The node that reached θ = α leaves (kinks beyond it have left already).
+        state.knots.retain(|k| k.kind == KnotKind::End || k.theta_rad < alpha - eps);
+        state.knots.insert(1, Knot { theta_rad: 0.0, tension_n: entry_tension_n, kind: KnotKind::Node });
+    } else if direction < 0.0 && state.phase_rad <= eps {
+        state.phase_rad = h;
+        state.knots.retain(|k| k.kind == KnotKind::End || k.theta_rad > eps);
+        let at = state.knots.len() - 1;
+        state.knots.insert(at, Knot { theta_rad: alpha, tension_n: entry_tension_n, kind: KnotKind::Node });
+    } else if delta_rad != 0.0 {
+        // Kinks (not nodes) may leave between node events.
+        state.knots.retain(|k| k.kind == KnotKind::End || (k.theta_rad > 0.0 && k.theta_rad < alpha));
+    }
+    // Re-anchor exact positions of nodes to the lattice to keep round-off from accumulating.
+    let phase = state.phase_rad;
+    let mut idx = 0usize;
+    for k in state.knots.iter_mut() {
+        if k.kind == KnotKind::Node {
+            k.theta_rad = (phase + idx as f64 * h).min(alpha);
+            idx += 1;
+        }
+    }
+    // A uniform shift keeps the knots in order; entering nodes were inserted at the ends.
+}
+
+/// Before a shift by `delta_rad`: the exit end's value becomes the old profile's value at the
+/// material point that reaches the exit (θ = α − Δ moving up, θ = |Δ| moving down).
+fn exit_end_follows(state: &mut WrapState, delta_rad: f64, c: f64) {
+    let m = state.knots.len();
+    if delta_rad == 0.0 || m < 3 {
+        return;
+    }
+    let alpha = state.wrap_angle_rad;
+    let (end, target) = if delta_rad > 0.0 { (m - 1, alpha - delta_rad) } else { (0, -delta_rad) };
+    let target = target.clamp(0.0, alpha);
+    let j = state.knots.partition_point(|k| k.theta_rad <= target).clamp(1, m - 1);
+    let (a, b) = (state.knots[j - 1], state.knots[j]);
+    let (xa, xb) = (log_n(a.tension_n, c), log_n(b.tension_n, c));
+    let span = b.theta_rad - a.theta_rad;
+    if span <= 0.0 || !xa.is_finite() || !xb.is_finite() {
+        return;
+    }
+    let x = xa + (xb - xa) * (target - a.theta_rad) / span;
+    state.knots[end].tension_n = c + x.exp();
+}
+
+/// Sets the ends and applies the exact update (fast path). Returns whether the rope held.
+///
+/// While m'v² is unchanged since the last update the old profile is admissible, and the clamp
+/// changes only runs of knots attached to the ends: once a knot is untouched, the envelope from
+/// that side cannot bind further in (`ln n` of the old profile changes by at most μ per radian,
+/// the envelope by exactly μ). The update then scans inward from each end and stops at the
+/// first untouched knot: O(size of the slip zones) instead of O(N).
+pub fn update(state: &mut WrapState, ends: &Ends) -> Outcome {
+    let env = Envelopes::new(ends, state.wrap_angle_rad);
+    let c = ends.centrifugal_n;
+    if !env.admissible() {
+        slide(state, &env, c);
+        return Outcome::GrossSlip;
+    }
+    let m = state.knots.len();
+    // NaN marks "not visited: unchanged"; `apply` computes such values only where needed.
+    let mut old = vec![f64::NAN; m];
+    let mut new = vec![f64::NAN; m];
+    let visit = |j: usize, old: &mut [f64], new: &mut [f64]| {
+        let o = log_n(state.knots[j].tension_n, c);
+        let x = env.clamp(state.knots[j].theta_rad, o);
+        old[j] = o;
+        new[j] = x;
+        // Ends, and nodes just entered on them, hold the new end tension: never a stop point.
+        let k = &state.knots[j];
+        x != o || k.kind == KnotKind::End || k.theta_rad <= 0.0 || k.theta_rad >= state.wrap_angle_rad
+    };
+    if state.admissible_at_n == Some(c) {
+        let mut left_end = m;
+        for j in 0..m {
+            if !visit(j, &mut old, &mut new) {
+                left_end = j;
+                break;
+            }
+        }
+        for j in (left_end.saturating_add(1)..m).rev() {
+            if !visit(j, &mut old, &mut new) {
+                break;
+            }
+        }
+    } else {
+        for j in 0..m {
+            visit(j, &mut old, &mut new);
+        }
+    }
+    apply(state, &old, &new, &env, c);
+    Outcome::Held
+}
+
+/// `ln(T − c)`, −∞ where the rope would have no contact force (then any envelope lifts it).
+pub fn log_n(tension_n: f64, centrifugal_n: f64) -> f64 {
+    let n = tension_n - centrifugal_n;
+    if n > 0.0 { n.ln() } else { f64::NEG_INFINITY }
+}
+
+/// Writes the updated knot values (from either solver), inserts the exact kinks where the
+/// envelopes cut the old exponentials between knots, repairs an inadmissible old profile, and
+/// drops kinks that no longer mark a change of slope.
+///
+/// `old[j]`/`new[j]` are `ln n` before/after; NaN in `new` marks a knot left unchanged (its
+/// value is then computed only if a changed neighbour needs it).
+pub fn apply(state: &mut WrapState, old: &[f64], new: &[f64], env: &Envelopes, c: f64) {
+    let changed = |j: usize| !new[j].is_nan() && (new[j] - old[j]).abs() > 1e-15 * old[j].abs().max(1.0);
+    let old_at = |j: usize| if old[j].is_nan() { log_n(state.knots[j].tension_n, c) } else { old[j] };
+    let mut knots: Vec<Knot> = Vec::with_capacity(state.knots.len() + 4);
+    // Knots next to a change: the only kinks that may have become redundant.
+    let mut touched: Vec<bool> = Vec::with_capacity(state.knots.len() + 4);
+    for (j, &knot) in state.knots.iter().enumerate() {
+        let tension_n = if changed(j) { c + new[j].exp() } else { knot.tension_n };
+        let near = changed(j) || (j > 0 && changed(j - 1)) || (j + 1 < state.knots.len() && changed(j + 1));
+        knots.push(Knot { tension_n, ..knot });
+        touched.push(near);
+        if j + 1 == state.knots.len() || !(changed(j) || changed(j + 1)) {
+            continue;
+        }
+        let (ta, tb) = (state.knots[j].theta_rad, state.knots[j + 1].theta_rad);
+        let (oa, ob) = (old_at(j), old_at(j + 1));
+        if tb <= ta || !oa.is_finite() || !ob.is_finite() {
+            continue;
+        }
+        let slope = (ob - oa) / (tb - ta);
+        let mut cands: Vec<f64> = env
+            .candidates(ta, oa, slope)
+            .into_iter()
+            .filter(|t| t.is_finite() && *t > ta + 1e-12 * env.alpha && *t < tb - 1e-12 * env.alpha)
+            .collect();
+        cands.sort_by(f64::total_cmp);
+        for t in cands {
+            let x = env.clamp(t, oa + slope * (t - ta));
+            knots.push(Knot { theta_rad: t, tension_n: c + x.exp(), kind: KnotKind::Kink });
+            touched.push(true);
+        }
+    }
+    end_values(&mut knots, env, c);
+    if state.admissible_at_n != Some(c) {
+        repair(&mut knots, env.mu, c);
+        touched.iter_mut().for_each(|t| *t = true);
+    }
+    prune(&mut knots, &touched, c);
+    state.knots = knots;
+    state.admissible_at_n = Some(c);
+}
+
+fn end_values(knots: &mut [Knot], env: &Envelopes, c: f64) {
+    let n = knots.len();
+    knots[0].tension_n = c + env.x1.exp();
+    knots[n - 1].tension_n = c + env.x2.exp();
+}
+
+/// Lipschitz sweeps in log space; no-ops on an admissible profile.
+fn repair(knots: &mut [Knot], mu: f64, c: f64) {
+    let n = knots.len();
+    let slack = 1.0 + 1e-12;
+    let admissible = knots.windows(2).all(|w| {
+        let d = (log_n(w[1].tension_n, c) - log_n(w[0].tension_n, c)).abs();
+        d <= mu * (w[1].theta_rad - w[0].theta_rad) * slack + 1e-15
+    });
+    if admissible {
+        return;
+    }
+    let mut x: Vec<f64> = knots.iter().map(|k| log_n(k.tension_n, c)).collect();
+    for j in 1..n - 1 {
+        let d = mu * (knots[j].theta_rad - knots[j - 1].theta_rad);
+        x[j] = x[j].clamp(x[j - 1] - d, x[j - 1] + d);
+    }
+    for j in (1..n - 1).rev() {
+        let d = mu * (knots[j + 1].theta_rad - knots[j].theta_rad);
+        x[j] = x[j].clamp(x[j + 1] - d, x[j + 1] + d);
+    }
+    for (k, xj) in knots.iter_mut().zip(x).skip(1).take(n - 2) {
+        k.tension_n = c + xj.exp();
+    }
+}
+
+/// Removes kinks (among those `touched` by this update) whose neighbours already carry the
+/// same exponential.
+fn prune(knots: &mut Vec<Knot>, touched: &[bool], c: f64) {
+    let mut out: Vec<Knot> = Vec::with_capacity(knots.len());
+    for j in 0..knots.len() {
+        let k = knots[j];
+        if k.kind == KnotKind::Kink && touched[j] && j + 1 < knots.len() {
+            if let Some(prev) = out.last() {
+                let next = knots[j + 1];
+                let (xa, xk, xb) = (log_n(prev.tension_n, c), log_n(k.tension_n, c), log_n(next.tension_n, c));
+                let span = next.theta_rad - prev.theta_rad;
+                if span > 0.0 {
+                    let interp = xa + (xb - xa) * (k.theta_rad - prev.theta_rad) / span;
+                    if (interp - xk).abs() <= 1e-13 * xk.abs().max(1.0) {
+                        continue;
+                    }
+                }
+            }
+        }
+        out.push(k);
+    }
+    *knots = out;
+}
+
+/// Gross slip: the rope slides over the whole wrap; friction μn everywhere, decaying from the
+/// high-tension end.
+fn slide(state: &mut WrapState, env: &Envelopes, c: f64) {
+    let alpha = state.wrap_angle_rad;
+    for k in state.knots.iter_mut() {
+        let x = if env.x1 >= env.x2 { env.x1 - env.mu * k.theta_rad } else { env.x2 - env.mu * (alpha - k.theta_rad) };
+        k.tension_n = c + x.exp();
+    }
+    state.knots.retain(|k| k.kind != KnotKind::Kink);
+    // The sliding profile does not match the low end: not admissible.
+    state.admissible_at_n = None;
+}
