@@ -246,26 +246,31 @@ pub fn interpolate(samples: &[HistorySample], t: f64) -> HistorySample {
     }
 }
 
-/// Smallest τ in (0, span] with `w τ + ½ α τ² = d` (angular speed w, angular acceleration α).
+/// Smallest τ in [0, span] with `w τ + ½ α τ² = d` (angular speed w, angular acceleration α):
+/// when the node lattice next reaches an event at travel d. A root at τ = 0 (d = ±0: already on
+/// the event) counts only if the lattice is heading that way; the lattice may also turn round
+/// within the step and come back to it (the root τ = −2w/α).
 fn first_time(w: f64, alpha: f64, d: f64, span: f64) -> Option<f64> {
-    let ok = |tau: f64| (tau > 0.0 && tau <= span).then_some(tau);
-    if d == 0.0 {
-        // Already at the event: it fires at once if the lattice moves that way.
-        let moving = if w != 0.0 { w } else { alpha };
-        return (moving != 0.0 && moving.signum() == d.signum()).then_some(0.0);
-    }
-    if alpha.abs() * span < 1e-12 * w.abs().max(1e-300) || alpha == 0.0 {
-        return if w != 0.0 { ok(d / w) } else { None };
-    }
-    let disc = w * w + 2.0 * alpha * d;
-    if disc < 0.0 {
-        return None;
-    }
-    let sq = disc.sqrt();
-    // Stable roots of ½α τ² + w τ − d = 0.
-    let sign = if w >= 0.0 { 1.0 } else { -1.0 };
-    let qd = -0.5 * (w + sign * sq);
-    let r1 = qd / (0.5 * alpha);
-    let r2 = if qd != 0.0 { -d / qd } else { f64::NAN };
-    [r1, r2].into_iter().filter_map(|r| if r.is_finite() { ok(r) } else { None }).min_by(f64::total_cmp)
+    let heading = |tau: f64| {
+        let v = w + alpha * tau;
+        if v != 0.0 { v.signum() } else { alpha.signum() }
+    };
+    let valid = |tau: f64| {
+        tau.is_finite()
+            && (0.0..=span).contains(&tau)
+            && (tau > 0.0 || (heading(0.0) == d.signum() && (w != 0.0 || alpha != 0.0)))
+    };
+    let roots = if alpha == 0.0 || alpha.abs() * span < 1e-12 * w.abs() {
+        [if w != 0.0 { d / w } else { f64::NAN }, f64::NAN]
+    } else {
+        let disc = w * w + 2.0 * alpha * d;
+        if disc < 0.0 {
+            return None;
+        }
+        // Stable roots of ½α τ² + w τ − d = 0.
+        let sign = if w >= 0.0 { 1.0 } else { -1.0 };
+        let qd = -0.5 * (w + sign * disc.sqrt());
+        [qd / (0.5 * alpha), if qd != 0.0 { -d / qd } else { f64::NAN }]
+    };
+    roots.into_iter().filter(|&t| valid(t)).min_by(f64::total_cmp).map(|t| t.max(0.0))
 }

@@ -115,17 +115,24 @@ pub fn advect(state: &mut WrapState, delta_rad: f64, direction: f64, entry_tensi
     let eps = 1e-12 * alpha;
     if direction > 0.0 && state.phase_rad >= h - eps {
         state.phase_rad = 0.0;
-        // The node that reached θ = α leaves (kinks beyond it have left already).
-        state.knots.retain(|k| k.kind == KnotKind::End || k.theta_rad < alpha - eps);
+        // The last node has reached θ = α and leaves (by index: its position carries round-off),
+        // with any kink that has left as well; a new node enters at θ = 0.
+        if let Some(i) = state.knots.iter().rposition(|k| k.kind == KnotKind::Node) {
+            state.knots.remove(i);
+        }
+        state.knots.retain(|k| k.kind != KnotKind::Kink || k.theta_rad < alpha);
         state.knots.insert(1, Knot { theta_rad: 0.0, tension_n: entry_tension_n, kind: KnotKind::Node });
     } else if direction < 0.0 && state.phase_rad <= eps {
         state.phase_rad = h;
-        state.knots.retain(|k| k.kind == KnotKind::End || k.theta_rad > eps);
+        if let Some(i) = state.knots.iter().position(|k| k.kind == KnotKind::Node) {
+            state.knots.remove(i);
+        }
+        state.knots.retain(|k| k.kind != KnotKind::Kink || k.theta_rad > 0.0);
         let at = state.knots.len() - 1;
         state.knots.insert(at, Knot { theta_rad: alpha, tension_n: entry_tension_n, kind: KnotKind::Node });
     } else if delta_rad != 0.0 {
         // Kinks (not nodes) may leave between node events.
-        state.knots.retain(|k| k.kind == KnotKind::End || (k.theta_rad > 0.0 && k.theta_rad < alpha));
+        state.knots.retain(|k| k.kind != KnotKind::Kink || (k.theta_rad > 0.0 && k.theta_rad < alpha));
     }
     // Re-anchor exact positions of nodes to the lattice to keep round-off from accumulating.
     let phase = state.phase_rad;
@@ -137,6 +144,10 @@ pub fn advect(state: &mut WrapState, delta_rad: f64, direction: f64, entry_tensi
         }
     }
     // A uniform shift keeps the knots in order; entering nodes were inserted at the ends.
+    debug_assert!(
+        state.knots.windows(2).all(|w| w[0].theta_rad <= w[1].theta_rad),
+        "knots out of order after advection"
+    );
 }
 
 /// Before a shift by `delta_rad`: the exit end's value becomes the old profile's value at the
