@@ -33,21 +33,37 @@ pub struct WrapSummary {
 }
 
 /// Sub-intervals of a piece on which `u ≥ threshold` (flag true) or below (false).
+/// `(ua, ub)`: the utilization at the piece's ends.
 fn split(
     piece: &Piece,
     law: &ContactLaw,
+    (ua, ub): (f64, f64),
     threshold: f64,
     stats: &mut RootStats,
-) -> Result<Vec<(f64, f64, bool)>, RootError> {
+) -> Result<SmallSplit, RootError> {
     let (a, b) = (piece.theta0_rad, piece.theta1_rad);
-    let (ua, ub) = (law.utilization(piece, a), law.utilization(piece, b));
     let (above_a, above_b) = (ua >= threshold, ub >= threshold);
     if above_a == above_b {
-        return Ok(vec![(a, b, above_a)]);
+        return Ok(SmallSplit::One((a, b, above_a)));
     }
     let tol = 1e-12;
     let x = brent(|t| law.utilization(piece, t) - threshold, a, b, tol, stats)?;
-    Ok(vec![(a, x, above_a), (x, b, above_b)])
+    Ok(SmallSplit::Two([(a, x, above_a), (x, b, above_b)]))
+}
+
+/// One or two sub-intervals of a piece, without allocating.
+enum SmallSplit {
+    One((f64, f64, bool)),
+    Two([(f64, f64, bool); 2]),
+}
+
+impl SmallSplit {
+    fn parts(&self) -> &[(f64, f64, bool)] {
+        match self {
+            SmallSplit::One(p) => std::slice::from_ref(p),
+            SmallSplit::Two(ps) => ps,
+        }
+    }
 }
 
 /// Appends `(start, end, value)` to `runs`, merging with the last run of the same value.
@@ -71,9 +87,9 @@ pub fn summarize(field: &TensionField, law: &ContactLaw) -> Result<WrapSummary, 
     for piece in &field.pieces {
         // q = −A k e^{k(θ−θ0)}: its sign is that of −A k on the whole piece.
         let positive = -piece.amp_n * piece.rate_per_rad > 0.0;
-        max_utilization =
-            max_utilization.max(law.utilization(piece, piece.theta0_rad)).max(law.utilization(piece, piece.theta1_rad));
-        for (s, e, above) in split(piece, law, ARC_THRESHOLD, &mut roots)? {
+        let ends = (law.utilization(piece, piece.theta0_rad), law.utilization(piece, piece.theta1_rad));
+        max_utilization = max_utilization.max(ends.0).max(ends.1);
+        for &(s, e, above) in split(piece, law, ends, ARC_THRESHOLD, &mut roots)?.parts() {
             let sign = match (above, positive) {
                 (false, _) => Sign::Neutral,
                 (true, true) => Sign::Positive,
@@ -81,7 +97,7 @@ pub fn summarize(field: &TensionField, law: &ContactLaw) -> Result<WrapSummary, 
             };
             push_run(&mut signs, s, e, sign);
         }
-        for (s, e, above) in split(piece, law, SLIP_UTILIZATION, &mut roots)? {
+        for &(s, e, above) in split(piece, law, ends, SLIP_UTILIZATION, &mut roots)?.parts() {
             let state = match (above, positive) {
                 (false, _) => NodeState::Stick,
                 (true, true) => NodeState::SlipPositive,

@@ -131,7 +131,9 @@ pub fn run_history(
                 .map(|i| {
                     let theta = params.wrap_angle_rad * i as f64 / (MAP_COLUMNS - 1) as f64;
                     let p = field.piece_at(theta, &law);
-                    law.utilization(p, theta) * p.friction_n_per_rad(theta).signum()
+                    // Sign of q = −A k e^{k(θ−θ0)} is that of −A k.
+                    let sign = -p.amp_n * p.rate_per_rad;
+                    if sign == 0.0 { 0.0 } else { law.utilization(p, theta) * sign.signum() }
                 })
                 .collect(),
         );

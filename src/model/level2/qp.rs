@@ -12,7 +12,7 @@
 //! with lining compliance; here its optimum equals the fast path's clamp (see [`super::update`]).
 
 use super::state::WrapState;
-use super::update::{Ends, Envelopes, apply, log_n};
+use super::update::{Ends, Envelopes, apply};
 use clarabel::algebra::CscMatrix;
 use clarabel::solver::{DefaultSettingsBuilder, DefaultSolver, IPSolver, NonnegativeConeT, SolverStatus};
 use serde::Serialize;
@@ -39,8 +39,9 @@ pub struct QpError {
 /// Sets the ends and solves the increment with clarabel.
 pub fn update(state: &mut WrapState, ends: &Ends) -> Result<QpVerdict, QpError> {
     let c = ends.centrifugal_n;
+    state.set_centrifugal(c);
     let env = Envelopes::new(ends, state.wrap_angle_rad);
-    let old: Vec<f64> = state.knots.iter().map(|k| log_n(k.tension_n, c)).collect();
+    let old: Vec<f64> = state.knots.iter().map(|k| k.log_n).collect();
     let m = state.knots.len();
     let n1 = ends.t1_n - c;
     let n2 = ends.t2_n - c;

@@ -23,7 +23,16 @@ pub struct Knot {
     pub theta_rad: f64,
     /// Tension the rope holds here (N per rope); its strain is `T/EA`.
     pub tension_n: f64,
+    /// `ln(T − m'v²)` for the state's current m'v² ([`WrapState::centrifugal_n`]): the variable
+    /// the contact law is linear in, cached so an update needs no logarithms.
+    pub log_n: f64,
     pub kind: KnotKind,
+}
+
+impl Knot {
+    pub fn new(theta_rad: f64, tension_n: f64, kind: KnotKind, centrifugal_n: f64) -> Self {
+        Self { theta_rad, tension_n, log_n: super::update::log_n(tension_n, centrifugal_n), kind }
+    }
 }
 
 /// The tension the rope holds over the wrap.
@@ -37,6 +46,8 @@ pub struct WrapState {
     /// m'v² at which the knots were last made admissible (`None`: not yet); while it stays the
     /// same the profile is admissible and an update only touches slip runs at the ends.
     pub admissible_at_n: Option<f64>,
+    /// m'v² for which the knots' `log_n` are computed.
+    pub centrifugal_n: f64,
 }
 
 impl WrapState {
@@ -58,20 +69,21 @@ impl WrapState {
             let p = field.pieces.iter().find(|p| theta <= p.theta1_rad).or(field.pieces.last());
             p.map_or(0.0, |p| p.tension_n(theta.clamp(p.theta0_rad, p.theta1_rad)))
         };
-        let mut knots = vec![Knot { theta_rad: 0.0, tension_n: at(0.0), kind: KnotKind::End }];
+        let mut knots = vec![Knot::new(0.0, at(0.0), KnotKind::End, 0.0)];
         knots.extend((0..nodes).map(|k| {
             let theta = k as f64 * pitch;
-            Knot { theta_rad: theta, tension_n: at(theta), kind: KnotKind::Node }
+            Knot::new(theta, at(theta), KnotKind::Node, 0.0)
         }));
-        knots.extend(field.breakpoints_rad().filter(|b| *b > 0.0 && *b < wrap_angle_rad).map(|theta| Knot {
-            theta_rad: theta,
-            tension_n: at(theta),
-            kind: KnotKind::Kink,
-        }));
-        knots.push(Knot { theta_rad: wrap_angle_rad, tension_n: at(wrap_angle_rad), kind: KnotKind::End });
+        knots.extend(
+            field
+                .breakpoints_rad()
+                .filter(|b| *b > 0.0 && *b < wrap_angle_rad)
+                .map(|theta| Knot::new(theta, at(theta), KnotKind::Kink, 0.0)),
+        );
+        knots.push(Knot::new(wrap_angle_rad, at(wrap_angle_rad), KnotKind::End, 0.0));
         knots.sort_by(|a, b| a.theta_rad.total_cmp(&b.theta_rad));
         // Nodes at k·h, k = 0 … N − 1 (phase 0: node 0 sits on the θ = 0 end).
-        Self { knots, phase_rad: 0.0, pitch_rad: pitch, wrap_angle_rad, admissible_at_n: None }
+        Self { knots, phase_rad: 0.0, pitch_rad: pitch, wrap_angle_rad, admissible_at_n: None, centrifugal_n: 0.0 }
     }
 
     pub fn t1_n(&self) -> f64 {
@@ -86,18 +98,31 @@ impl WrapState {
         self.knots.iter().filter(|k| k.kind == KnotKind::Node).count()
     }
 
+    /// Recomputes the cached `ln(T − m'v²)` of every knot for a new m'v² (the tension, i.e. the
+    /// rope's strain, is what a stuck rope keeps).
+    pub fn set_centrifugal(&mut self, centrifugal_n: f64) {
+        if centrifugal_n == self.centrifugal_n {
+            return;
+        }
+        for k in &mut self.knots {
+            k.log_n = super::update::log_n(k.tension_n, centrifugal_n);
+        }
+        self.centrifugal_n = centrifugal_n;
+        self.admissible_at_n = None;
+    }
+
     /// The state as a tension field: exact exponentials of `T − m'v²` between knots.
     pub fn field(&self, centrifugal_n: f64) -> TensionField {
+        let cached = centrifugal_n == self.centrifugal_n;
+        let x = |k: &Knot| if cached { k.log_n } else { super::update::log_n(k.tension_n, centrifugal_n) };
         let pieces = self
             .knots
             .windows(2)
             .filter(|w| w[1].theta_rad > w[0].theta_rad)
             .map(|w| {
                 let (a, b) = (w[0], w[1]);
-                let na = a.tension_n - centrifugal_n;
-                let nb = b.tension_n - centrifugal_n;
-                let rate = (nb / na).ln() / (b.theta_rad - a.theta_rad);
-                Piece::exponential(a.theta_rad, b.theta_rad, centrifugal_n, na, rate)
+                let rate = (x(&b) - x(&a)) / (b.theta_rad - a.theta_rad);
+                Piece::exponential(a.theta_rad, b.theta_rad, centrifugal_n, a.tension_n - centrifugal_n, rate)
             })
             .collect();
         TensionField { pieces }

@@ -107,6 +107,7 @@ impl Envelopes {
 pub fn advect(state: &mut WrapState, delta_rad: f64, direction: f64, entry_tension_n: f64, centrifugal_n: f64) {
     let alpha = state.wrap_angle_rad;
     let h = state.pitch_rad;
+    state.set_centrifugal(centrifugal_n);
     exit_end_follows(state, delta_rad, centrifugal_n);
     for k in state.knots.iter_mut().filter(|k| k.kind != KnotKind::End) {
         k.theta_rad += delta_rad;
@@ -121,7 +122,7 @@ pub fn advect(state: &mut WrapState, delta_rad: f64, direction: f64, entry_tensi
             state.knots.remove(i);
         }
         state.knots.retain(|k| k.kind != KnotKind::Kink || k.theta_rad < alpha);
-        state.knots.insert(1, Knot { theta_rad: 0.0, tension_n: entry_tension_n, kind: KnotKind::Node });
+        state.knots.insert(1, Knot::new(0.0, entry_tension_n, KnotKind::Node, centrifugal_n));
     } else if direction < 0.0 && state.phase_rad <= eps {
         state.phase_rad = h;
         if let Some(i) = state.knots.iter().position(|k| k.kind == KnotKind::Node) {
@@ -129,7 +130,7 @@ pub fn advect(state: &mut WrapState, delta_rad: f64, direction: f64, entry_tensi
         }
         state.knots.retain(|k| k.kind != KnotKind::Kink || k.theta_rad > 0.0);
         let at = state.knots.len() - 1;
-        state.knots.insert(at, Knot { theta_rad: alpha, tension_n: entry_tension_n, kind: KnotKind::Node });
+        state.knots.insert(at, Knot::new(alpha, entry_tension_n, KnotKind::Node, centrifugal_n));
     } else if delta_rad != 0.0 {
         // Kinks (not nodes) may leave between node events.
         state.knots.retain(|k| k.kind != KnotKind::Kink || (k.theta_rad > 0.0 && k.theta_rad < alpha));
@@ -162,13 +163,14 @@ fn exit_end_follows(state: &mut WrapState, delta_rad: f64, c: f64) {
     let target = target.clamp(0.0, alpha);
     let j = state.knots.partition_point(|k| k.theta_rad <= target).clamp(1, m - 1);
     let (a, b) = (state.knots[j - 1], state.knots[j]);
-    let (xa, xb) = (log_n(a.tension_n, c), log_n(b.tension_n, c));
+    let (xa, xb) = (a.log_n, b.log_n);
     let span = b.theta_rad - a.theta_rad;
     if span <= 0.0 || !xa.is_finite() || !xb.is_finite() {
         return;
     }
     let x = xa + (xb - xa) * (target - a.theta_rad) / span;
     state.knots[end].tension_n = c + x.exp();
+    state.knots[end].log_n = x;
 }
 
 /// Sets the ends and applies the exact update (fast path). Returns whether the rope held.
@@ -181,6 +183,7 @@ fn exit_end_follows(state: &mut WrapState, delta_rad: f64, c: f64) {
 pub fn update(state: &mut WrapState, ends: &Ends) -> Outcome {
     let env = Envelopes::new(ends, state.wrap_angle_rad);
     let c = ends.centrifugal_n;
+    state.set_centrifugal(c);
     if !env.admissible() {
         slide(state, &env, c);
         return Outcome::GrossSlip;
@@ -190,7 +193,7 @@ pub fn update(state: &mut WrapState, ends: &Ends) -> Outcome {
     let mut old = vec![f64::NAN; m];
     let mut new = vec![f64::NAN; m];
     let visit = |j: usize, old: &mut [f64], new: &mut [f64]| {
-        let o = log_n(state.knots[j].tension_n, c);
+        let o = state.knots[j].log_n;
         let x = env.clamp(state.knots[j].theta_rad, o);
         old[j] = o;
         new[j] = x;
@@ -234,14 +237,28 @@ pub fn log_n(tension_n: f64, centrifugal_n: f64) -> f64 {
 /// value is then computed only if a changed neighbour needs it).
 pub fn apply(state: &mut WrapState, old: &[f64], new: &[f64], env: &Envelopes, c: f64) {
     let changed = |j: usize| !new[j].is_nan() && (new[j] - old[j]).abs() > 1e-15 * old[j].abs().max(1.0);
-    let old_at = |j: usize| if old[j].is_nan() { log_n(state.knots[j].tension_n, c) } else { old[j] };
+    let old_at = |j: usize| if old[j].is_nan() { state.knots[j].log_n } else { old[j] };
     let mut knots: Vec<Knot> = Vec::with_capacity(state.knots.len() + 4);
     // Knots next to a change: the only kinks that may have become redundant.
     let mut touched: Vec<bool> = Vec::with_capacity(state.knots.len() + 4);
-    for (j, &knot) in state.knots.iter().enumerate() {
-        let tension_n = if changed(j) { c + new[j].exp() } else { knot.tension_n };
+    // Knots strictly inside the block the update did not visit are copied as they are.
+    let unvisited = (new.iter().position(|x| x.is_nan()), new.iter().rposition(|x| x.is_nan()));
+    let mut j = 0;
+    while j < state.knots.len() {
+        if let (Some(a), Some(b)) = unvisited
+            && j > a
+            && j + 1 < b
+        {
+            knots.extend_from_slice(&state.knots[j..b]);
+            touched.resize(knots.len(), false);
+            j = b;
+            continue;
+        }
+        let knot = state.knots[j];
+        j += 1;
+        let j = j - 1;
         let near = changed(j) || (j > 0 && changed(j - 1)) || (j + 1 < state.knots.len() && changed(j + 1));
-        knots.push(Knot { tension_n, ..knot });
+        knots.push(if changed(j) { Knot { tension_n: c + new[j].exp(), log_n: new[j], ..knot } } else { knot });
         touched.push(near);
         if j + 1 == state.knots.len() || !(changed(j) || changed(j + 1)) {
             continue;
@@ -252,15 +269,21 @@ pub fn apply(state: &mut WrapState, old: &[f64], new: &[f64], env: &Envelopes, c
             continue;
         }
         let slope = (ob - oa) / (tb - ta);
-        let mut cands: Vec<f64> = env
-            .candidates(ta, oa, slope)
-            .into_iter()
-            .filter(|t| t.is_finite() && *t > ta + 1e-12 * env.alpha && *t < tb - 1e-12 * env.alpha)
-            .collect();
+        let mut cands = env.candidates(ta, oa, slope);
         cands.sort_by(f64::total_cmp);
-        for t in cands {
+        // The new values at the interval's ends; a candidate is a kink only where the clamped
+        // profile leaves the chord between them (inside a slip zone it does not).
+        let xa_new = if new[j].is_nan() { oa } else { new[j] };
+        let xb_new = if new[j + 1].is_nan() { ob } else { new[j + 1] };
+        for t in
+            cands.into_iter().filter(|t| t.is_finite() && *t > ta + 1e-12 * env.alpha && *t < tb - 1e-12 * env.alpha)
+        {
             let x = env.clamp(t, oa + slope * (t - ta));
-            knots.push(Knot { theta_rad: t, tension_n: c + x.exp(), kind: KnotKind::Kink });
+            let chord = xa_new + (xb_new - xa_new) * (t - ta) / (tb - ta);
+            if (x - chord).abs() <= 1e-12 * x.abs().max(1.0) {
+                continue;
+            }
+            knots.push(Knot { theta_rad: t, tension_n: c + x.exp(), log_n: x, kind: KnotKind::Kink });
             touched.push(true);
         }
     }
@@ -269,7 +292,7 @@ pub fn apply(state: &mut WrapState, old: &[f64], new: &[f64], env: &Envelopes, c
         repair(&mut knots, env.mu, c);
         touched.iter_mut().for_each(|t| *t = true);
     }
-    prune(&mut knots, &touched, c);
+    prune(&mut knots, &touched);
     state.knots = knots;
     state.admissible_at_n = Some(c);
 }
@@ -277,21 +300,24 @@ pub fn apply(state: &mut WrapState, old: &[f64], new: &[f64], env: &Envelopes, c
 fn end_values(knots: &mut [Knot], env: &Envelopes, c: f64) {
     let n = knots.len();
     knots[0].tension_n = c + env.x1.exp();
+    knots[0].log_n = env.x1;
     knots[n - 1].tension_n = c + env.x2.exp();
+    knots[n - 1].log_n = env.x2;
 }
 
 /// Lipschitz sweeps in log space; no-ops on an admissible profile.
 fn repair(knots: &mut [Knot], mu: f64, c: f64) {
+    // `log_n` of every knot is current for `c` (set by `set_centrifugal` and every write).
     let n = knots.len();
     let slack = 1.0 + 1e-12;
     let admissible = knots.windows(2).all(|w| {
-        let d = (log_n(w[1].tension_n, c) - log_n(w[0].tension_n, c)).abs();
+        let d = (w[1].log_n - w[0].log_n).abs();
         d <= mu * (w[1].theta_rad - w[0].theta_rad) * slack + 1e-15
     });
     if admissible {
         return;
     }
-    let mut x: Vec<f64> = knots.iter().map(|k| log_n(k.tension_n, c)).collect();
+    let mut x: Vec<f64> = knots.iter().map(|k| k.log_n).collect();
     for j in 1..n - 1 {
         let d = mu * (knots[j].theta_rad - knots[j - 1].theta_rad);
         x[j] = x[j].clamp(x[j - 1] - d, x[j - 1] + d);
@@ -301,32 +327,45 @@ fn repair(knots: &mut [Knot], mu: f64, c: f64) {
         x[j] = x[j].clamp(x[j + 1] - d, x[j + 1] + d);
     }
     for (k, xj) in knots.iter_mut().zip(x).skip(1).take(n - 2) {
-        k.tension_n = c + xj.exp();
+        if xj != k.log_n {
+            k.tension_n = c + xj.exp();
+            k.log_n = xj;
+        }
     }
 }
 
 /// Removes kinks (among those `touched` by this update) whose neighbours already carry the
-/// same exponential.
-fn prune(knots: &mut Vec<Knot>, touched: &[bool], c: f64) {
-    let mut out: Vec<Knot> = Vec::with_capacity(knots.len());
+/// same exponential. Untouched knots are not looked at, so a quiet increment costs nothing here.
+fn prune(knots: &mut Vec<Knot>, touched: &[bool]) {
+    let mut drop = vec![false; 0];
+    let mut kept_prev: Option<usize> = None;
     for j in 0..knots.len() {
         let k = knots[j];
         if k.kind == KnotKind::Kink && touched[j] && j + 1 < knots.len() {
-            if let Some(prev) = out.last() {
-                let next = knots[j + 1];
-                let (xa, xk, xb) = (log_n(prev.tension_n, c), log_n(k.tension_n, c), log_n(next.tension_n, c));
+            if let Some(p) = kept_prev {
+                let (prev, next) = (knots[p], knots[j + 1]);
                 let span = next.theta_rad - prev.theta_rad;
                 if span > 0.0 {
-                    let interp = xa + (xb - xa) * (k.theta_rad - prev.theta_rad) / span;
-                    if (interp - xk).abs() <= 1e-13 * xk.abs().max(1.0) {
+                    let interp = prev.log_n + (next.log_n - prev.log_n) * (k.theta_rad - prev.theta_rad) / span;
+                    if (interp - k.log_n).abs() <= 1e-13 * k.log_n.abs().max(1.0) {
+                        if drop.is_empty() {
+                            drop.resize(knots.len(), false);
+                        }
+                        drop[j] = true;
                         continue;
                     }
                 }
             }
         }
-        out.push(k);
+        kept_prev = Some(j);
     }
-    *knots = out;
+    if !drop.is_empty() {
+        let mut idx = 0;
+        knots.retain(|_| {
+            idx += 1;
+            !drop[idx - 1]
+        });
+    }
 }
 
 /// Gross slip: the rope slides over the whole wrap; friction μn everywhere, decaying from the
@@ -336,6 +375,7 @@ fn slide(state: &mut WrapState, env: &Envelopes, c: f64) {
     for k in state.knots.iter_mut() {
         let x = if env.x1 >= env.x2 { env.x1 - env.mu * k.theta_rad } else { env.x2 - env.mu * (alpha - k.theta_rad) };
         k.tension_n = c + x.exp();
+        k.log_n = x;
     }
     state.knots.retain(|k| k.kind != KnotKind::Kink);
     // The sliding profile does not match the low end: not admissible.
