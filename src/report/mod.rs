@@ -71,8 +71,14 @@ fn write_into(dir: &Path, summary: &Summary, run: &RunResult, options: ReportOpt
                 .map_err(|source| ReportError::Csv { path: path.display().to_string(), source })?;
         }
         if options.plots {
-            let title =
-                format!("{} — level {}, {}", scene.name, scene.plan.level, table::state_label(&scene.classical.state));
+            let at = scene.t_s.map_or_else(String::new, |t| format!("t = {t} s, "));
+            let title = format!(
+                "{} — level {}, {}{}",
+                scene.name,
+                scene.plan.level,
+                at,
+                table::state_label(&scene.classical.state)
+            );
             plot::plot_distribution(&scene_dir.join("distribution.png"), &title, &wrap.distribution)?;
         }
     }

@@ -127,8 +127,19 @@ impl<'a> Collector<'a> {
     /// A serde/TOML error from deserializing one section of the sheet.
     pub fn push_toml(&mut self, err: &toml::de::Error, scene: Option<&str>, section: &str) {
         let message = err.message().trim().to_string();
-        let key = unknown_field(&message).map_or_else(|| section.to_string(), |f| join_key(section, &f));
+        let field = unknown_field(&message).or_else(|| err.span().and_then(|s| self.key_before(s.start)));
+        let key = field.map_or_else(|| section.to_string(), |f| join_key(section, &f));
         self.push(err.span(), scene, &key, message);
+    }
+
+    /// The bare key of a `key = value` line whose value starts at `offset` (serde's type errors
+    /// point at the value but do not name the field).
+    fn key_before(&self, offset: usize) -> Option<String> {
+        let before = self.text.get(..offset)?;
+        let line = &before[before.rfind('\n').map_or(0, |i| i + 1)..];
+        let key = line.trim_end().strip_suffix('=')?.trim();
+        let valid = !key.is_empty() && key.chars().all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '-');
+        valid.then(|| key.to_string())
     }
 
     pub fn into_error(self) -> SheetError {

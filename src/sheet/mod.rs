@@ -66,8 +66,14 @@ pub fn parse(file: &str, text: &str) -> Result<Design, SheetError> {
         match key.get_ref().as_ref() {
             "title" => sections.title = section(&mut c, value, "title"),
             "g_m_s2" => sections.g_m_s2 = section(&mut c, value, "g_m_s2"),
-            "pulley" => sections.pulley = section(&mut c, value, "pulley"),
-            "rope" => sections.rope = section(&mut c, value, "rope"),
+            "pulley" => {
+                sections.present.push("pulley");
+                sections.pulley = section(&mut c, value, "pulley");
+            }
+            "rope" => {
+                sections.present.push("rope");
+                sections.rope = section(&mut c, value, "rope");
+            }
             "requirements" => sections.requirements = section(&mut c, value, "requirements"),
             "scene" => sections.scenes = Some(scene_tables(&mut c, value)),
             other => c.push(

@@ -24,6 +24,8 @@ pub const ROPE_COUNT_MAX: i64 = 64;
 #[derive(Default)]
 pub struct Sections {
     pub doc_span: Range<usize>,
+    /// Sections present in the document, whether or not they deserialized.
+    pub present: Vec<&'static str>,
     pub title: Option<Spanned<String>>,
     pub g_m_s2: Option<Spanned<f64>>,
     pub pulley: Option<Spanned<RawPulley>>,
@@ -130,6 +132,7 @@ pub fn design(c: &mut Collector, s: Sections) -> Option<Design> {
     };
     let pulley = match &s.pulley {
         Some(p) => pulley(c, p),
+        None if s.present.contains(&"pulley") => None,
         None => {
             c.push_at(
                 Some(s.doc_span.clone()),
@@ -142,6 +145,7 @@ pub fn design(c: &mut Collector, s: Sections) -> Option<Design> {
     };
     let rope = match &s.rope {
         Some(r) => rope(c, r),
+        None if s.present.contains(&"rope") => None,
         None => {
             c.push_at(Some(s.doc_span.clone()), None, "rope", "missing section [rope] (count, mass_per_m_kg, ea_n)");
             None
