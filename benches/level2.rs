@@ -41,8 +41,14 @@ fn bench(c: &mut Criterion) {
     group.sample_size(10);
     group.bench_function("history_10k_samples_n720_fast", |b| {
         b.iter(|| {
-            run_history(params(Solver::Fast), black_box(&samples), &[], WrapState::uniform(alpha(), 720, 2.0e5), 180)
-                .expect("runs")
+            run_history(
+                params(Solver::Fast),
+                black_box(&samples),
+                Default::default(),
+                WrapState::uniform(alpha(), 720, 2.0e5),
+                180,
+            )
+            .expect("runs")
         })
     });
     // One increment from a state with a positive zone at θ = 0 and a reverse zone at θ = α.

@@ -44,7 +44,7 @@ pub struct Rope {
     pub ea_n: f64,
 }
 
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct Requirements {
     pub static_safety_factor_min: f64,
     pub dynamic_safety_factor_min: f64,
@@ -94,6 +94,8 @@ pub struct HistoryScene {
     pub samples: Vec<HistorySample>,
     /// Extra times whose distribution is reported (within the history).
     pub snapshots_s: Vec<f64>,
+    /// Also report a history row every this many seconds (besides every sample).
+    pub output_step_s: Option<f64>,
     /// Which way the rope last ran before the history starts (for its initial state).
     pub direction: Direction,
 }

@@ -139,7 +139,7 @@ fn run_command(args: RunArgs) -> anyhow::Result<bool> {
     let options = Options { request: Request::Full { forced_level }, nodes: args.nodes, solver: args.solver.into() };
     let result = run::run(&design, &scenes, options)?;
     let out_dir = args.out.clone().unwrap_or_else(|| default_out_dir(&args.sheet));
-    let summary = Summary::of(&design.sheet, &design.title, &result);
+    let summary = Summary::of(&design, &result);
     report::write(&out_dir, &summary, &result, report::ReportOptions { plots: !args.no_plots })?;
     print_result(&design, &result, args.format, args.quiet);
     if !args.quiet && args.format == Format::Table {
@@ -167,7 +167,7 @@ fn default_out_dir(sheet: &Path) -> PathBuf {
 
 fn print_result(design: &Design, result: &RunResult, format: Format, quiet: bool) {
     match format {
-        Format::Json => println!("{}", Summary::of(&design.sheet, &design.title, result).to_json()),
+        Format::Json => println!("{}", Summary::of(design, result).to_json()),
         Format::Table if !quiet => {
             let stdout = std::io::stdout();
             let color = stdout.is_terminal() && std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty());

@@ -182,8 +182,14 @@ fn run_loads(
             let samples = steady_run(design, &state, loads.direction);
             let entry = if samples[0].speed_m_s >= 0.0 { state.t1_n } else { state.t2_n };
             let initial = WrapState::uniform(design.pulley.wrap_angle_rad, options.nodes, entry);
-            let run = level2::run_history(params(design, options.solver), &samples, &[], initial, options.nodes)
-                .map_err(|source| RunError::Level2 { scene: scene.name.clone(), source })?;
+            let run = level2::run_history(
+                params(design, options.solver),
+                &samples,
+                level2::Output::default(),
+                initial,
+                options.nodes,
+            )
+            .map_err(|source| RunError::Level2 { scene: scene.name.clone(), source })?;
             let last = run.snapshots.into_iter().last();
             result.wrap = last
                 .map(|s| WrapResult { summary: s.summary, distribution: Distribution { t_s: 0.0, ..s.distribution } });
@@ -257,9 +263,9 @@ fn run_history(
             level1::steady_rolling(design.pulley.mu, alpha, &first, history.direction.sign(), design.rope.ea_n);
         WrapState::from_field(alpha, options.nodes, &rolling.field)
     };
-    let run =
-        level2::run_history(params(design, options.solver), samples, &history.snapshots_s, initial, options.nodes)
-            .map_err(|source| RunError::Level2 { scene: scene.name.clone(), source })?;
+    let output = level2::Output { snapshots_s: &history.snapshots_s, step_s: history.output_step_s };
+    let run = level2::run_history(params(design, options.solver), samples, output, initial, options.nodes)
+        .map_err(|source| RunError::Level2 { scene: scene.name.clone(), source })?;
     let mut snapshots: Vec<level2::Snapshot> = run.snapshots;
     let last = snapshots.pop();
     result.snapshots = snapshots.into_iter().map(|s| s.distribution).collect();

@@ -32,7 +32,7 @@ fn s(t_s: f64, t1_n: f64, t2_n: f64, speed_m_s: f64) -> HistorySample {
 fn final_state(samples: &[HistorySample], nodes: usize, solver: Solver) -> (derived::WrapSummary, WrapState) {
     let p = params(solver);
     let initial = WrapState::uniform(alpha(), nodes, samples[0].t1_n);
-    let run = run_history(p, samples, &[], initial.clone(), nodes).expect("history runs");
+    let run = run_history(p, samples, Default::default(), initial.clone(), nodes).expect("history runs");
     // Re-run to get the state (run_history reports summaries; the state is rebuilt here).
     let mut sim = wrapcalc::model::level2::Simulation::new(p, samples, initial);
     sim.settle().expect("settle");
@@ -118,7 +118,8 @@ fn steady_rolling_is_reached_from_a_uniform_start_in_both_directions() {
         let samples = [s(0.0, t1, t2, v), s(5.0, t1, t2, v)]; // 20 m of travel
         let p = params(Solver::Fast);
         let entry = if v > 0.0 { t1 } else { t2 };
-        let run = run_history(p, &samples, &[], WrapState::uniform(alpha(), 360, entry), 360).expect("run");
+        let run =
+            run_history(p, &samples, Default::default(), WrapState::uniform(alpha(), 360, entry), 360).expect("run");
         let end = EndState { t1_n: t1, t2_n: t2, speed_m_s: v, accel_m_s2: 0.0, centrifugal_n: 10.0 * v * v };
         let creep = steady_rolling(MU, alpha(), &end, v.signum(), p.ea_n);
         let law = ContactLaw::new(MU, end.centrifugal_n);

@@ -7,6 +7,7 @@
 
 pub mod csv_out;
 pub mod plot;
+pub mod plot_history;
 pub mod summary;
 pub mod table;
 
@@ -80,6 +81,26 @@ fn write_into(dir: &Path, summary: &Summary, run: &RunResult, options: ReportOpt
                 table::state_label(&scene.classical.state)
             );
             plot::plot_distribution(&scene_dir.join("distribution.png"), &title, &wrap.distribution)?;
+            if let Some(history) = &scene.history {
+                let min = if scene.classical.dynamic_safety_factor.is_some() {
+                    summary.requirements.dynamic_safety_factor_min
+                } else {
+                    summary.requirements.static_safety_factor_min
+                };
+                let title = format!("{} — history, level {}", scene.name, scene.plan.level);
+                plot_history::plot_history(&scene_dir.join("history.png"), &title, &history.rows, min)?;
+                let times: Vec<f64> = history.rows.iter().map(|r| r.t_s).collect();
+                let jdp: Vec<Option<f64>> = history.rows.iter().map(|r| r.jdp_deg).collect();
+                let title = format!("{} — friction utilization over the wrap (θ–t)", scene.name);
+                plot_history::plot_wrap_map(
+                    &scene_dir.join("wrap_map.png"),
+                    &title,
+                    &times,
+                    wrap.distribution.wrap_angle_deg,
+                    &history.map,
+                    &jdp,
+                )?;
+            }
         }
     }
     Ok(())

@@ -48,12 +48,12 @@ enum Swatch {
 }
 
 /// Registers the embedded font once; false if it could not be registered.
-fn font_ready() -> bool {
+pub(super) fn font_ready() -> bool {
     static READY: OnceLock<bool> = OnceLock::new();
     *READY.get_or_init(|| register_font(FAMILY, FontStyle::Normal, FONT_BYTES).is_ok())
 }
 
-fn font(size: u32) -> FontDesc<'static> {
+pub(super) fn font(size: u32) -> FontDesc<'static> {
     (FAMILY, size).into_font()
 }
 
@@ -276,7 +276,7 @@ fn thick_line(chart: &Chart, points: &[(f64, f64)], color: RGBColor) -> Result<(
 
 /// Data range of the finite values, padded by 6 % of the span and at least `rel_min` of the
 /// magnitude, never empty and never infinite.
-fn padded_range(values: impl Iterator<Item = f64>, rel_min: f64) -> (f64, f64) {
+pub(super) fn padded_range(values: impl Iterator<Item = f64>, rel_min: f64) -> (f64, f64) {
     let (lo, hi) =
         values.filter(|v| v.is_finite()).fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| (lo.min(v), hi.max(v)));
     if lo > hi {
@@ -293,7 +293,7 @@ fn padded_range(values: impl Iterator<Item = f64>, rel_min: f64) -> (f64, f64) {
 
 /// A tick-label formatter for an axis over [lo, hi]: as many decimals as about eight ticks
 /// need, in scientific notation for magnitudes a plain number would spell out too long.
-fn tick_format(lo: f64, hi: f64) -> impl Fn(&f64) -> String {
+pub(super) fn tick_format(lo: f64, hi: f64) -> impl Fn(&f64) -> String {
     let (mag, step) = (lo.abs().max(hi.abs()), (hi - lo) / 8.0);
     let digits = |x: f64| if x.is_finite() { x.ceil().clamp(0.0, 9.0) as usize } else { 0 };
     let sci = mag >= 1e6 || (mag > 0.0 && mag < 1e-4);

@@ -1,5 +1,6 @@
 //! The scalar summary of a run, as written to summary.json and summary.csv (INTERFACE.md).
 
+use crate::design::{Design, Requirements};
 use crate::model::level0::Check;
 use crate::model::level2::StepStats;
 use crate::roots::RootStats;
@@ -98,17 +99,20 @@ pub struct Summary {
     pub version: &'static str,
     pub all_checks_pass: bool,
     pub runtime_ms: f64,
+    /// Extension: the minimum safety factors the checks used.
+    pub requirements: Requirements,
     pub scenes: Vec<SceneJson>,
 }
 
 impl Summary {
-    pub fn of(sheet: &str, title: &str, run: &RunResult) -> Self {
+    pub fn of(design: &Design, run: &RunResult) -> Self {
         Self {
-            sheet: sheet.to_string(),
-            title: title.to_string(),
+            sheet: design.sheet.clone(),
+            title: design.title.clone(),
             version: env!("CARGO_PKG_VERSION"),
             all_checks_pass: run.all_checks_pass(),
             runtime_ms: run.runtime_ms,
+            requirements: design.requirements,
             scenes: run
                 .scenes
                 .iter()

@@ -81,7 +81,26 @@ pub(super) fn history(
             }
         },
     };
-    ok.then_some(HistoryScene { samples, snapshots_s, direction })
+    let output_step_s = match &raw.output_step_s {
+        None => None,
+        Some(v) => {
+            let step = *v.get_ref();
+            let span = t1 - t0;
+            if step.is_finite() && step > 0.0 && span / step <= 1e6 {
+                Some(step)
+            } else {
+                c.push(
+                    Some(v.span()),
+                    scene,
+                    &at.key("output_step_s"),
+                    format!("expected a step > 0 s giving at most 1e6 rows over the {span} s history"),
+                );
+                ok = false;
+                None
+            }
+        }
+    };
+    ok.then_some(HistoryScene { samples, snapshots_s, direction, output_step_s })
 }
 
 /// Numbers of an inline array key.

@@ -54,4 +54,5 @@ pub struct RawScene {
     pub t_s: Option<Spanned<Vec<f64>>>,
     pub csv: Option<Spanned<String>>,
     pub snapshots_s: Option<Spanned<Vec<f64>>>,
+    pub output_step_s: Option<Spanned<f64>>,
 }

@@ -409,6 +409,7 @@ fn loads(c: &mut Collector, at: At, raw: &RawScene, g_m_s2: Option<f64>, rope: O
             ("t_s", raw.t_s.as_ref().map(|v| v.span())),
             ("csv", raw.csv.as_ref().map(|v| v.span())),
             ("snapshots_s", raw.snapshots_s.as_ref().map(|v| v.span())),
+            ("output_step_s", raw.output_step_s.as_ref().map(|v| v.span())),
         ],
     );
     let (t1_raw, t2_raw, speed_raw) = (

@@ -75,15 +75,27 @@ pub enum Level2Error {
 /// Angles of the wrap map (columns).
 pub const MAP_COLUMNS: usize = 181;
 
-/// Runs a history from `initial`, reporting at every sample and snapshot time.
+/// When a history reports: every sample, every snapshot, and every `step_s` from the start.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Output<'a> {
+    pub snapshots_s: &'a [f64],
+    pub step_s: Option<f64>,
+}
+
+/// Runs a history from `initial`, reporting at every sample and snapshot time (and every
+/// output step).
 pub fn run_history(
     params: Params,
     samples: &[HistorySample],
-    snapshots_s: &[f64],
+    output: Output,
     initial: WrapState,
     output_nodes: usize,
 ) -> Result<HistoryRun, Level2Error> {
-    let mut times: Vec<f64> = samples.iter().map(|s| s.t_s).chain(snapshots_s.iter().copied()).collect();
+    let snapshots_s = output.snapshots_s;
+    let (t0, t_end) = (samples.first().map_or(0.0, |s| s.t_s), samples.last().map_or(0.0, |s| s.t_s));
+    let steps = output.step_s.filter(|s| *s > 0.0).map_or(0, |s| ((t_end - t0) / s).floor() as usize);
+    let regular = (1..=steps).map(|k| t0 + k as f64 * output.step_s.unwrap_or(0.0)).filter(|t| *t < t_end);
+    let mut times: Vec<f64> = samples.iter().map(|s| s.t_s).chain(snapshots_s.iter().copied()).chain(regular).collect();
     times.sort_by(f64::total_cmp);
     times.dedup();
     let t_last = samples.last().map_or(0.0, |s| s.t_s);
