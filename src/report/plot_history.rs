@@ -30,14 +30,31 @@ fn e<E: std::fmt::Display>(err: E) -> String {
     err.to_string()
 }
 
-/// history.png: end tensions, speed and acceleration, JDP and arcs, safety factor over time.
-pub fn plot_history(path: &Path, title: &str, rows: &[HistoryRow], safety_factor_min: f64) -> Result<(), PlotError> {
+/// Draws a `size` PNG at `path` with `draw` under a centred caption.
+fn render(
+    path: &Path,
+    size: (u32, u32),
+    title: &str,
+    draw: impl FnOnce(&Area) -> Result<(), String>,
+) -> Result<(), PlotError> {
     if !font_ready() {
         return Err(fail(path)("the embedded font cannot be loaded".into()));
     }
-    let root = BitMapBackend::new(path, (1200, 1300)).into_drawing_area();
-    draw_history(&root, title, rows, safety_factor_min).map_err(fail(path))?;
+    let root = BitMapBackend::new(path, size).into_drawing_area();
+    let drawn = (|| {
+        root.fill(&WHITE).map_err(e)?;
+        let (caption, body) = root.split_vertically(56);
+        let style = font(24).color(&BLACK).pos(Pos::new(HPos::Center, VPos::Center));
+        caption.draw_text(title, &style, (size.0 as i32 / 2, 28)).map_err(e)?;
+        draw(&body)
+    })();
+    drawn.map_err(fail(path))?;
     root.present().map_err(|x| fail(path)(x.to_string()))
+}
+
+/// history.png: end tensions, speed and acceleration, JDP and arcs, safety factor over time.
+pub fn plot_history(path: &Path, title: &str, rows: &[HistoryRow], safety_factor_min: f64) -> Result<(), PlotError> {
+    render(path, (1200, 1300), title, |body| draw_history(body, rows, safety_factor_min))
 }
 
 fn time_range(times: impl Iterator<Item = f64>) -> (f64, f64) {
@@ -66,12 +83,7 @@ fn slip_intervals(rows: &[HistoryRow]) -> Vec<(f64, f64)> {
     out
 }
 
-fn draw_history(root: &Area, title: &str, rows: &[HistoryRow], sf_min: f64) -> Result<(), String> {
-    root.fill(&WHITE).map_err(e)?;
-    let (caption, body) = root.split_vertically(56);
-    caption
-        .draw_text(title, &font(24).color(&BLACK).pos(Pos::new(HPos::Center, VPos::Center)), (600, 28))
-        .map_err(e)?;
+fn draw_history(body: &Area, rows: &[HistoryRow], sf_min: f64) -> Result<(), String> {
     let panels = body.split_evenly((4, 1));
     let x = time_range(rows.iter().map(|r| r.t_s));
     let slips = slip_intervals(rows);
@@ -199,12 +211,7 @@ pub fn plot_wrap_map(
     map: &[Vec<f64>],
     jdp_deg: &[Option<f64>],
 ) -> Result<(), PlotError> {
-    if !font_ready() {
-        return Err(fail(path)("the embedded font cannot be loaded".into()));
-    }
-    let root = BitMapBackend::new(path, (1200, 800)).into_drawing_area();
-    draw_map(&root, title, times_s, wrap_angle_deg, map, jdp_deg).map_err(fail(path))?;
-    root.present().map_err(|x| fail(path)(x.to_string()))
+    render(path, (1200, 800), title, |body| draw_map(body, times_s, wrap_angle_deg, map, jdp_deg))
 }
 
 /// Colour of a signed utilization: oranges to dark red for positive friction, light to dark
@@ -221,19 +228,7 @@ fn map_color(u: f64) -> RGBColor {
     if u > 0.0 { lerp((255, 226, 190), (175, 20, 10), s) } else { lerp((214, 230, 255), (20, 45, 165), s) }
 }
 
-fn draw_map(
-    root: &Area,
-    title: &str,
-    times: &[f64],
-    wrap_deg: f64,
-    map: &[Vec<f64>],
-    jdp: &[Option<f64>],
-) -> Result<(), String> {
-    root.fill(&WHITE).map_err(e)?;
-    let (caption, body) = root.split_vertically(56);
-    caption
-        .draw_text(title, &font(24).color(&BLACK).pos(Pos::new(HPos::Center, VPos::Center)), (600, 28))
-        .map_err(e)?;
+fn draw_map(body: &Area, times: &[f64], wrap_deg: f64, map: &[Vec<f64>], jdp: &[Option<f64>]) -> Result<(), String> {
     let (legend, plot) = body.split_vertically(40);
     let wrap = if wrap_deg.is_finite() && wrap_deg > 0.0 { wrap_deg } else { 360.0 };
     let n = times.len().min(map.len());
