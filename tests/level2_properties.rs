@@ -37,7 +37,7 @@ fn history() -> impl Strategy<Value = (f64, f64, f64, usize, Vec<HistorySample>)
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 64, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: 256, ..ProptestConfig::default() })]
 
     /// |q| ≤ μn exactly (no tolerance: the reported friction is clamped into the cone, and the
     /// model's pieces satisfy it analytically), u ∈ [0, 1], all finite, at every snapshot.
