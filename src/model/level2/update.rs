@@ -341,19 +341,21 @@ fn prune(knots: &mut Vec<Knot>, touched: &[bool]) {
     let mut kept_prev: Option<usize> = None;
     for j in 0..knots.len() {
         let k = knots[j];
-        if k.kind == KnotKind::Kink && touched[j] && j + 1 < knots.len() {
-            if let Some(p) = kept_prev {
-                let (prev, next) = (knots[p], knots[j + 1]);
-                let span = next.theta_rad - prev.theta_rad;
-                if span > 0.0 {
-                    let interp = prev.log_n + (next.log_n - prev.log_n) * (k.theta_rad - prev.theta_rad) / span;
-                    if (interp - k.log_n).abs() <= 1e-13 * k.log_n.abs().max(1.0) {
-                        if drop.is_empty() {
-                            drop.resize(knots.len(), false);
-                        }
-                        drop[j] = true;
-                        continue;
+        if k.kind == KnotKind::Kink
+            && touched[j]
+            && j + 1 < knots.len()
+            && let Some(p) = kept_prev
+        {
+            let (prev, next) = (knots[p], knots[j + 1]);
+            let span = next.theta_rad - prev.theta_rad;
+            if span > 0.0 {
+                let interp = prev.log_n + (next.log_n - prev.log_n) * (k.theta_rad - prev.theta_rad) / span;
+                if (interp - k.log_n).abs() <= 1e-13 * k.log_n.abs().max(1.0) {
+                    if drop.is_empty() {
+                        drop.resize(knots.len(), false);
                     }
+                    drop[j] = true;
+                    continue;
                 }
             }
         }
