@@ -84,9 +84,29 @@ pub fn summarize(field: &TensionField, law: &ContactLaw) -> Result<WrapSummary, 
     let mut signs: Vec<(f64, f64, Sign)> = Vec::new();
     let mut states: Vec<(f64, f64, NodeState)> = Vec::new();
     let mut max_utilization: f64 = 0.0;
+    signs.reserve(field.pieces.len().min(64));
+    states.reserve(field.pieces.len().min(64));
     for piece in &field.pieces {
         // q = −A k e^{k(θ−θ0)}: its sign is that of −A k on the whole piece.
         let positive = -piece.amp_n * piece.rate_per_rad > 0.0;
+        if piece.base_n == law.centrifugal_n && piece.amp_n > 0.0 {
+            // An exponential of the contact force itself: u = |k|/μ on the whole piece.
+            let u = (piece.rate_per_rad.abs() / law.mu).min(1.0);
+            max_utilization = max_utilization.max(u);
+            let sign = match (u >= ARC_THRESHOLD, positive) {
+                (false, _) => Sign::Neutral,
+                (true, true) => Sign::Positive,
+                (true, false) => Sign::Reverse,
+            };
+            let state = match (u >= SLIP_UTILIZATION, positive) {
+                (false, _) => NodeState::Stick,
+                (true, true) => NodeState::SlipPositive,
+                (true, false) => NodeState::SlipNegative,
+            };
+            push_run(&mut signs, piece.theta0_rad, piece.theta1_rad, sign);
+            push_run(&mut states, piece.theta0_rad, piece.theta1_rad, state);
+            continue;
+        }
         let ends = (law.utilization(piece, piece.theta0_rad), law.utilization(piece, piece.theta1_rad));
         max_utilization = max_utilization.max(ends.0).max(ends.1);
         for &(s, e, above) in split(piece, law, ends, ARC_THRESHOLD, &mut roots)?.parts() {

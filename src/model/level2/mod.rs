@@ -138,17 +138,7 @@ pub fn run_history(
             safety_factor: safety_factor(&end, limit),
             gross_slip: sim.gross_slip,
         });
-        run.map.push(
-            (0..MAP_COLUMNS)
-                .map(|i| {
-                    let theta = params.wrap_angle_rad * i as f64 / (MAP_COLUMNS - 1) as f64;
-                    let p = field.piece_at(theta, &law);
-                    // Sign of q = −A k e^{k(θ−θ0)} is that of −A k.
-                    let sign = -p.amp_n * p.rate_per_rad;
-                    if sign == 0.0 { 0.0 } else { law.utilization(p, theta) * sign.signum() }
-                })
-                .collect(),
-        );
+        run.map.push(utilization_map(&field, &law, params.wrap_angle_rad));
         let is_snapshot = snapshots_s.contains(&t) || t == t_last;
         if is_snapshot {
             let (knots, w) = sim.slip_velocities();
@@ -161,6 +151,24 @@ pub fn run_history(
     }
     run.stats = sim.stats;
     Ok(run)
+}
+
+/// Signed utilization at `MAP_COLUMNS` equally spaced angles (one sweep over the sorted pieces).
+fn utilization_map(field: &crate::wrap::TensionField, law: &ContactLaw, wrap_angle_rad: f64) -> Vec<f64> {
+    let pieces = &field.pieces;
+    let mut k = 0;
+    (0..MAP_COLUMNS)
+        .map(|i| {
+            let theta = wrap_angle_rad * i as f64 / (MAP_COLUMNS - 1) as f64;
+            while k + 1 < pieces.len() && pieces[k].theta1_rad < theta {
+                k += 1;
+            }
+            let Some(p) = pieces.get(k) else { return 0.0 };
+            // Sign of q = −A k e^{k(θ−θ0)} is that of −A k.
+            let sign = -p.amp_n * p.rate_per_rad;
+            if sign == 0.0 { 0.0 } else { law.utilization(p, theta) * sign.signum() }
+        })
+        .collect()
 }
 
 /// Linear interpolation of per-knot values at θ.
