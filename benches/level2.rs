@@ -1,10 +1,11 @@
-//! Level 2 run time: a 10 000-sample history on the fast path (N = 720), and one increment
+//! Level 2 run time: a 10 000-sample history on the fast path (N = 720; history rows once a
+//! second, and at every sample), and one increment
 //! in clarabel (N = 90, 360) against the same increment on the fast path.
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
 use wrapcalc::model::level2::update::{self, Ends};
-use wrapcalc::model::level2::{HistorySample, Params, Solver, WrapState, qp, run_history};
+use wrapcalc::model::level2::{HistorySample, Output, Params, Solver, WrapState, qp, run_history};
 
 const MU: f64 = 0.25;
 
@@ -39,18 +40,25 @@ fn bench(c: &mut Criterion) {
     let samples = history();
     let mut group = c.benchmark_group("level2");
     group.sample_size(10);
-    group.bench_function("history_10k_samples_n720_fast", |b| {
-        b.iter(|| {
-            run_history(
-                params(Solver::Fast),
-                black_box(&samples),
-                Default::default(),
-                WrapState::uniform(alpha(), 720, 2.0e5),
-                180,
-            )
-            .expect("runs")
-        })
-    });
+    // The stepping itself: history rows once a second (100 rows), as a duty cycle reports.
+    let sparse = Output { snapshots_s: &[], step_s: Some(1.0), sample_rows: false };
+    for (name, output) in [
+        ("history_10k_samples_n720_fast", sparse),
+        ("history_10k_samples_n720_fast_row_every_sample", Output::default()),
+    ] {
+        group.bench_function(name, |b| {
+            b.iter(|| {
+                run_history(
+                    params(Solver::Fast),
+                    black_box(&samples),
+                    output,
+                    WrapState::uniform(alpha(), 720, 2.0e5),
+                    180,
+                )
+                .expect("runs")
+            })
+        });
+    }
     // One increment from a state with a positive zone at θ = 0 and a reverse zone at θ = α.
     for nodes in [90, 360] {
         let mut state = WrapState::uniform(alpha(), nodes, 2.0e5);

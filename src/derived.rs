@@ -13,9 +13,9 @@ use crate::wrap::{Distribution, Piece, Sample, TensionField, Zone, output_grid_r
 /// Sign class of friction on a stretch of wrap.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Sign {
-    Positive,
-    Reverse,
-    Neutral,
+    Neutral = 0,
+    Reverse = 1,
+    Positive = 2,
 }
 
 /// Arcs, JDP and peak utilization of a field (angles in radians).
@@ -80,70 +80,55 @@ fn push_run<T: PartialEq + Copy>(runs: &mut Vec<(f64, f64, T)>, start: f64, end:
 /// Summarizes a field: arcs, JDP (end of the positive arc that reverse friction follows
 /// downstream; absent without a sign change), zones and peak utilization.
 pub fn summarize(field: &TensionField, law: &ContactLaw) -> Result<WrapSummary, RootError> {
+    summarize_pieces(field.pieces.iter().copied(), law, true)
+}
+
+/// [`summarize`] over pieces given in θ order; the zones are listed only when `zones` is set.
+pub fn summarize_pieces(
+    pieces: impl IntoIterator<Item = Piece>,
+    law: &ContactLaw,
+    zones: bool,
+) -> Result<WrapSummary, RootError> {
     let mut roots = RootStats::default();
-    let mut signs: Vec<(f64, f64, Sign)> = Vec::new();
     let mut states: Vec<(f64, f64, NodeState)> = Vec::new();
+    let mut arcs = ArcTally::default();
     let mut max_utilization: f64 = 0.0;
-    signs.reserve(field.pieces.len().min(64));
-    states.reserve(field.pieces.len().min(64));
-    for piece in &field.pieces {
+    let inv_mu = 1.0 / law.mu;
+    let state_of = |above: bool, positive: bool| match (above, positive) {
+        (false, _) => NodeState::Stick,
+        (true, true) => NodeState::SlipPositive,
+        (true, false) => NodeState::SlipNegative,
+    };
+    for piece in pieces {
         // q = −A k e^{k(θ−θ0)}: its sign is that of −A k on the whole piece.
         let positive = -piece.amp_n * piece.rate_per_rad > 0.0;
         if piece.base_n == law.centrifugal_n && piece.amp_n > 0.0 {
             // An exponential of the contact force itself: u = |k|/μ on the whole piece.
-            let u = (piece.rate_per_rad.abs() / law.mu).min(1.0);
+            let u = (piece.rate_per_rad.abs() * inv_mu).min(1.0);
             max_utilization = max_utilization.max(u);
-            let sign = match (u >= ARC_THRESHOLD, positive) {
-                (false, _) => Sign::Neutral,
-                (true, true) => Sign::Positive,
-                (true, false) => Sign::Reverse,
-            };
-            let state = match (u >= SLIP_UTILIZATION, positive) {
-                (false, _) => NodeState::Stick,
-                (true, true) => NodeState::SlipPositive,
-                (true, false) => NodeState::SlipNegative,
-            };
-            push_run(&mut signs, piece.theta0_rad, piece.theta1_rad, sign);
-            push_run(&mut states, piece.theta0_rad, piece.theta1_rad, state);
+            arcs.add(piece.theta0_rad, piece.theta1_rad, u >= ARC_THRESHOLD, positive);
+            if zones {
+                let state = state_of(u >= SLIP_UTILIZATION, positive);
+                push_run(&mut states, piece.theta0_rad, piece.theta1_rad, state);
+            }
             continue;
         }
-        let ends = (law.utilization(piece, piece.theta0_rad), law.utilization(piece, piece.theta1_rad));
+        let ends = (law.utilization(&piece, piece.theta0_rad), law.utilization(&piece, piece.theta1_rad));
         max_utilization = max_utilization.max(ends.0).max(ends.1);
-        for &(s, e, above) in split(piece, law, ends, ARC_THRESHOLD, &mut roots)?.parts() {
-            let sign = match (above, positive) {
-                (false, _) => Sign::Neutral,
-                (true, true) => Sign::Positive,
-                (true, false) => Sign::Reverse,
-            };
-            push_run(&mut signs, s, e, sign);
+        for &(s, e, above) in split(&piece, law, ends, ARC_THRESHOLD, &mut roots)?.parts() {
+            arcs.add(s, e, above, positive);
         }
-        for &(s, e, above) in split(piece, law, ends, SLIP_UTILIZATION, &mut roots)?.parts() {
-            let state = match (above, positive) {
-                (false, _) => NodeState::Stick,
-                (true, true) => NodeState::SlipPositive,
-                (true, false) => NodeState::SlipNegative,
-            };
-            push_run(&mut states, s, e, state);
-        }
-    }
-    let measure = |which: Sign| signs.iter().filter(|r| r.2 == which).fold(0.0, |acc, r| acc + (r.1 - r.0));
-    let mut jdp_rad = None;
-    let mut last_positive_end = None;
-    for &(_, end, sign) in &signs {
-        match sign {
-            Sign::Positive => last_positive_end = Some(end),
-            Sign::Reverse if last_positive_end.is_some() => {
-                jdp_rad = last_positive_end;
-                break;
+        if zones {
+            for &(s, e, above) in split(&piece, law, ends, SLIP_UTILIZATION, &mut roots)?.parts() {
+                push_run(&mut states, s, e, state_of(above, positive));
             }
-            _ => {}
         }
     }
     Ok(WrapSummary {
-        positive_arc_rad: measure(Sign::Positive),
-        reverse_arc_rad: measure(Sign::Reverse),
-        idle_arc_rad: measure(Sign::Neutral),
-        jdp_rad,
+        positive_arc_rad: arcs.positive_rad(),
+        reverse_arc_rad: arcs.reverse_rad(),
+        idle_arc_rad: arcs.idle_rad(),
+        jdp_rad: arcs.jdp_rad(),
         max_utilization: max_utilization.min(1.0),
         zones: states
             .into_iter()
@@ -151,6 +136,55 @@ pub fn summarize(field: &TensionField, law: &ContactLaw) -> Result<WrapSummary, 
             .collect(),
         roots,
     })
+}
+
+/// Arc measures and the JDP, accumulated stretch by stretch in θ order (shared by every
+/// summary of the wrap).
+#[derive(Debug, Default, Clone)]
+pub struct ArcTally {
+    /// Measure of each [`Sign`] class (indexed by its discriminant).
+    measure_rad: [f64; 3],
+    last_positive_end_rad: Option<f64>,
+    jdp_rad: Option<f64>,
+}
+
+impl ArcTally {
+    /// Adds the stretch [start, end] where friction has the sign of `positive` and is
+    /// `above` the arc threshold (0.001 μn) or not.
+    pub fn add(&mut self, start: f64, end: f64, above: bool, positive: bool) {
+        if end <= start {
+            return;
+        }
+        let sign = match u8::from(above) << u8::from(positive) {
+            0 => Sign::Neutral,
+            1 => Sign::Reverse,
+            _ => Sign::Positive,
+        };
+        self.measure_rad[sign as usize] += end - start;
+        if sign == Sign::Positive {
+            self.last_positive_end_rad = Some(end);
+        }
+        // The JDP: the end of the positive arc that the first reverse stretch follows.
+        if sign == Sign::Reverse && self.jdp_rad.is_none() {
+            self.jdp_rad = self.last_positive_end_rad;
+        }
+    }
+
+    pub fn positive_rad(&self) -> f64 {
+        self.measure_rad[Sign::Positive as usize]
+    }
+
+    pub fn reverse_rad(&self) -> f64 {
+        self.measure_rad[Sign::Reverse as usize]
+    }
+
+    pub fn idle_rad(&self) -> f64 {
+        self.measure_rad[Sign::Neutral as usize]
+    }
+
+    pub fn jdp_rad(&self) -> Option<f64> {
+        self.jdp_rad
+    }
 }
 
 /// Samples a field on the output grid (`nodes` pitches plus every breakpoint and zone boundary).

@@ -263,7 +263,7 @@ fn run_history(
             level1::steady_rolling(design.pulley.mu, alpha, &first, history.direction.sign(), design.rope.ea_n);
         WrapState::from_field(alpha, options.nodes, &rolling.field)
     };
-    let output = level2::Output { snapshots_s: &history.snapshots_s, step_s: history.output_step_s };
+    let output = level2::Output { snapshots_s: &history.snapshots_s, step_s: history.output_step_s, sample_rows: true };
     let run = level2::run_history(params(design, options.solver), samples, output, initial, options.nodes)
         .map_err(|source| RunError::Level2 { scene: scene.name.clone(), source })?;
     let mut snapshots: Vec<level2::Snapshot> = run.snapshots;

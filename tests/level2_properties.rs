@@ -47,7 +47,7 @@ proptest! {
         let p = Params { mu, wrap_angle_rad: alpha, radius_m: 2.0, mass_per_m_kg: m_per_m, ea_n: 1e8, solver: Solver::Fast };
         let snapshots: Vec<f64> = samples.iter().map(|s| s.t_s).collect();
         let initial = WrapState::uniform(alpha, nodes, samples[0].t1_n);
-        let run = run_history(p, &samples, wrapcalc::model::level2::Output { snapshots_s: &snapshots, step_s: None }, initial, nodes).expect("a valid history runs");
+        let run = run_history(p, &samples, wrapcalc::model::level2::Output { snapshots_s: &snapshots, step_s: None, sample_rows: true }, initial, nodes).expect("a valid history runs");
         prop_assert_eq!(run.rows.len(), samples.len());
         for snap in &run.snapshots {
             for x in &snap.distribution.samples {

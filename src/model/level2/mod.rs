@@ -7,13 +7,14 @@
 //! as a convex program in clarabel) applies the new end tensions; [`slip`] gives the rope's slip
 //! velocity; this module samples the state into history rows and distributions.
 
+pub mod knots;
 pub mod qp;
 pub mod simulate;
 pub mod slip;
 pub mod state;
 pub mod update;
 
-use crate::contact::ContactLaw;
+use crate::contact::{ARC_THRESHOLD, ContactLaw};
 use crate::derived::{self, WrapSummary};
 use crate::model::level0::{EndState, euler_limit, safety_factor};
 use crate::roots::{RootError, RootStats};
@@ -75,11 +76,20 @@ pub enum Level2Error {
 /// Angles of the wrap map (columns).
 pub const MAP_COLUMNS: usize = 181;
 
-/// When a history reports: every sample, every snapshot, and every `step_s` from the start.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
+/// When a history reports: every snapshot and the last sample, every `step_s` from the start,
+/// and (when `sample_rows`) every sample.
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Output<'a> {
     pub snapshots_s: &'a [f64],
     pub step_s: Option<f64>,
+    pub sample_rows: bool,
+}
+
+impl Default for Output<'_> {
+    /// A row at every sample, no snapshots.
+    fn default() -> Self {
+        Self { snapshots_s: &[], step_s: None, sample_rows: true }
+    }
 }
 
 /// Runs a history from `initial`, reporting at every sample and snapshot time (and every
@@ -95,7 +105,8 @@ pub fn run_history(
     let (t0, t_end) = (samples.first().map_or(0.0, |s| s.t_s), samples.last().map_or(0.0, |s| s.t_s));
     let steps = output.step_s.filter(|s| *s > 0.0).map_or(0, |s| ((t_end - t0) / s).floor() as usize);
     let regular = (1..=steps).map(|k| t0 + k as f64 * output.step_s.unwrap_or(0.0)).filter(|t| *t < t_end);
-    let mut times: Vec<f64> = samples.iter().map(|s| s.t_s).chain(snapshots_s.iter().copied()).chain(regular).collect();
+    let at_samples = samples.iter().map(|s| s.t_s).filter(|_| output.sample_rows);
+    let mut times: Vec<f64> = at_samples.chain(snapshots_s.iter().copied()).chain(regular).chain([t0, t_end]).collect();
     times.sort_by(f64::total_cmp);
     times.dedup();
     let t_last = samples.last().map_or(0.0, |s| s.t_s);
@@ -109,13 +120,21 @@ pub fn run_history(
         roots: RootStats::default(),
         map: Vec::with_capacity(times.len()),
     };
-    for &t in &times {
+    let is_snapshot = |t: f64| snapshots_s.contains(&t) || t == t_last;
+    for (i, &t) in times.iter().enumerate() {
+        // Slip velocity is reported with distributions only: the increments keep the knots
+        // they need while the run approaches a snapshot.
+        sim.track_motion = is_snapshot(t) || times.get(i + 1).is_some_and(|&next| is_snapshot(next));
         sim.advance_to(t)?;
         let s = sim.at(t);
         let c = params.mass_per_m_kg * s.speed_m_s * s.speed_m_s;
         let law = ContactLaw::new(params.mu, c);
-        let field = sim.state.field(c);
-        let summary = derived::summarize(&field, &law)?;
+        let snapshot = is_snapshot(t);
+        let summary = if snapshot || c != sim.state.centrifugal_n {
+            derived::summarize_pieces(sim.state.pieces(c), &law, snapshot)?
+        } else {
+            row_summary(&sim.state, &law)
+        };
         run.roots.calls += summary.roots.calls;
         run.roots.iterations += summary.roots.iterations;
         let end = EndState {
@@ -138,9 +157,9 @@ pub fn run_history(
             safety_factor: safety_factor(&end, limit),
             gross_slip: sim.gross_slip,
         });
-        run.map.push(utilization_map(&field, &law, params.wrap_angle_rad));
-        let is_snapshot = snapshots_s.contains(&t) || t == t_last;
-        if is_snapshot {
+        run.map.push(utilization_map(&sim.state, &law));
+        if snapshot {
+            let field = sim.state.field(c);
             let (knots, w) = sim.slip_velocities();
             let gross = sim.gross_slip;
             let distribution = derived::distribution(t, &field, &law, &summary, output_nodes, gross, |theta, _| {
@@ -153,20 +172,59 @@ pub fn run_history(
     Ok(run)
 }
 
-/// Signed utilization at `MAP_COLUMNS` equally spaced angles (one sweep over the sorted pieces).
-fn utilization_map(field: &crate::wrap::TensionField, law: &ContactLaw, wrap_angle_rad: f64) -> Vec<f64> {
-    let pieces = &field.pieces;
-    let mut k = 0;
+/// Arcs, JDP and peak utilization of a state whose `ln n` is current (as
+/// [`derived::summarize_pieces`] without zones), straight from the knots: on every piece
+/// `ln n` is linear, so the utilization is constant, `|Δ ln n| / (μ Δθ)`, and friction is
+/// positive where the tension falls.
+fn row_summary(state: &WrapState, law: &ContactLaw) -> WrapSummary {
+    let mut arcs = derived::ArcTally::default();
+    let mut max_slope: f64 = 0.0;
+    let threshold = ARC_THRESHOLD * law.mu;
+    for w in state.knots.windows(2) {
+        let (a, b) = (&w[0], &w[1]);
+        let span = b.theta_rad - a.theta_rad;
+        let rise = b.log_n - a.log_n;
+        if span <= 0.0 {
+            continue;
+        }
+        if rise.abs() > max_slope * span {
+            max_slope = rise.abs() / span;
+        }
+        arcs.add(a.theta_rad, b.theta_rad, rise.abs() >= threshold * span, rise < 0.0);
+    }
+    WrapSummary {
+        positive_arc_rad: arcs.positive_rad(),
+        reverse_arc_rad: arcs.reverse_rad(),
+        idle_arc_rad: arcs.idle_rad(),
+        jdp_rad: arcs.jdp_rad(),
+        max_utilization: (max_slope / law.mu).min(1.0),
+        zones: Vec::new(),
+        roots: Default::default(),
+    }
+}
+
+/// Signed utilization at `MAP_COLUMNS` equally spaced angles (one sweep over the knots; only
+/// the pieces under a column are built).
+fn utilization_map(state: &WrapState, law: &ContactLaw) -> Vec<f64> {
+    let knots = &state.knots;
+    let mut j = 0;
     (0..MAP_COLUMNS)
         .map(|i| {
-            let theta = wrap_angle_rad * i as f64 / (MAP_COLUMNS - 1) as f64;
-            while k + 1 < pieces.len() && pieces[k].theta1_rad < theta {
-                k += 1;
+            let theta = state.wrap_angle_rad * i as f64 / (MAP_COLUMNS - 1) as f64;
+            // The interval [θ_j, θ_{j+1}] of positive length holding θ.
+            while j + 2 < knots.len()
+                && (knots[j + 1].theta_rad < theta || knots[j + 1].theta_rad <= knots[j].theta_rad)
+            {
+                j += 1;
             }
-            let Some(p) = pieces.get(k) else { return 0.0 };
+            let (a, b) = (&knots[j], &knots[j + 1]);
+            if b.theta_rad <= a.theta_rad {
+                return 0.0;
+            }
+            let p = state.piece(a, b, law.centrifugal_n);
             // Sign of q = −A k e^{k(θ−θ0)} is that of −A k.
             let sign = -p.amp_n * p.rate_per_rad;
-            if sign == 0.0 { 0.0 } else { law.utilization(p, theta) * sign.signum() }
+            if sign == 0.0 { 0.0 } else { law.utilization(&p, theta) * sign.signum() }
         })
         .collect()
 }

@@ -12,7 +12,7 @@
 //! with lining compliance; here its optimum equals the fast path's clamp (see [`super::update`]).
 
 use super::state::WrapState;
-use super::update::{Ends, Envelopes, apply};
+use super::update::{Changes, Ends, Envelopes, apply};
 use clarabel::algebra::CscMatrix;
 use clarabel::solver::{DefaultSettingsBuilder, DefaultSolver, IPSolver, NonnegativeConeT, SolverStatus};
 use serde::Serialize;
@@ -154,7 +154,8 @@ pub fn update(state: &mut WrapState, ends: &Ends) -> Result<QpVerdict, QpError> 
         }
         new.push(n.ln());
     }
-    apply(state, &old, &new, &env, c);
+    let changes = Changes { left: old.iter().copied().zip(new).collect(), right: Vec::new() };
+    apply(state, &changes, &env, c);
     Ok(verdict)
 }
 

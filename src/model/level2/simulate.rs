@@ -71,6 +71,10 @@ pub struct Simulation<'a> {
     pub state: WrapState,
     /// Whether the last increment found gross slip.
     pub gross_slip: bool,
+    /// Whether increments keep the knots before and after them for [`Self::slip_velocities`]
+    /// (on by default; a driver that reports slip velocity only at some times turns it on
+    /// shortly before those).
+    pub track_motion: bool,
     pub stats: StepStats,
     /// Knots before and after the last increment long enough to resolve slip velocity, with
     /// its m'v² and duration (velocities are computed from them only when reported).
@@ -89,7 +93,16 @@ impl<'a> Simulation<'a> {
     /// Starts at the first sample with the given state (ends are set by the first update).
     pub fn new(params: Params, samples: &'a [HistorySample], state: WrapState) -> Self {
         let t_s = samples.first().map_or(0.0, |s| s.t_s);
-        Self { params, samples, t_s, state, gross_slip: false, stats: StepStats::default(), motion: Motion::default() }
+        Self {
+            params,
+            samples,
+            t_s,
+            state,
+            gross_slip: false,
+            track_motion: true,
+            stats: StepStats::default(),
+            motion: Motion::default(),
+        }
     }
 
     /// Slip velocity (m/s, +θ) at the knots of the last increment that resolved it, with those
@@ -97,7 +110,7 @@ impl<'a> Simulation<'a> {
     pub fn slip_velocities(&self) -> (Vec<super::state::Knot>, Vec<f64>) {
         let m = &self.motion;
         if m.dt_s <= 0.0 || m.after.is_empty() {
-            return (self.state.knots.clone(), vec![0.0; self.state.knots.len()]);
+            return (self.state.knots.to_vec(), vec![0.0; self.state.knots.len()]);
         }
         let w = super::slip::velocities(
             &m.before,
@@ -182,9 +195,11 @@ impl<'a> Simulation<'a> {
         advect(&mut self.state, delta_rad, direction, entry, ends.centrifugal_n);
         // Slip velocity from increments long enough to resolve it: a whole pitch of travel, or
         // any loading at rest (a sub-step ending just before a sample carries no information).
-        let resolves = dt_s > 0.0 && (delta_rad == 0.0 || delta_rad.abs() >= 0.25 * self.state.pitch_rad);
+        let resolves =
+            self.track_motion && dt_s > 0.0 && (delta_rad == 0.0 || delta_rad.abs() >= 0.25 * self.state.pitch_rad);
         if resolves {
-            self.motion.before.clone_from(&self.state.knots);
+            self.motion.before.clear();
+            self.motion.before.extend_from_slice(&self.state.knots);
         }
         let outcome = match self.params.solver {
             Solver::Fast => update::update(&mut self.state, &ends),
@@ -211,7 +226,8 @@ impl<'a> Simulation<'a> {
             self.stats.gross_slip_increments += 1;
         }
         if resolves {
-            self.motion.after.clone_from(&self.state.knots);
+            self.motion.after.clear();
+            self.motion.after.extend_from_slice(&self.state.knots);
             self.motion.centrifugal_n = ends.centrifugal_n;
             self.motion.dt_s = dt_s;
         }

@@ -6,6 +6,7 @@
 //! exponential, `ln(T − m'v²)` linear in θ, so a knot set is a [`TensionField`] with no
 //! interpolation error for the piecewise-exponential profiles of the rigid-lining model.
 
+use super::knots::Knots;
 use crate::wrap::{Piece, TensionField};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -38,7 +39,7 @@ impl Knot {
 /// The tension the rope holds over the wrap.
 #[derive(Debug, Clone, PartialEq)]
 pub struct WrapState {
-    pub knots: Vec<Knot>,
+    pub knots: Knots,
     /// Position of node 0 in [0, h]: nodes sit at `phase + k h`, k = 0 … N − 1.
     pub phase_rad: f64,
     pub pitch_rad: f64,
@@ -48,6 +49,9 @@ pub struct WrapState {
     pub admissible_at_n: Option<f64>,
     /// m'v² for which the knots' `log_n` are computed.
     pub centrifugal_n: f64,
+    /// Node events since the node positions were last set exactly to `phase + k h` (between,
+    /// they move by the same increments as the pulley: round-off of a few ulps per event).
+    pub events_since_anchor: u32,
 }
 
 impl WrapState {
@@ -83,7 +87,15 @@ impl WrapState {
         knots.push(Knot::new(wrap_angle_rad, at(wrap_angle_rad), KnotKind::End, 0.0));
         knots.sort_by(|a, b| a.theta_rad.total_cmp(&b.theta_rad));
         // Nodes at k·h, k = 0 … N − 1 (phase 0: node 0 sits on the θ = 0 end).
-        Self { knots, phase_rad: 0.0, pitch_rad: pitch, wrap_angle_rad, admissible_at_n: None, centrifugal_n: 0.0 }
+        Self {
+            knots: knots.into(),
+            phase_rad: 0.0,
+            pitch_rad: pitch,
+            wrap_angle_rad,
+            admissible_at_n: None,
+            centrifugal_n: 0.0,
+            events_since_anchor: 0,
+        }
     }
 
     pub fn t1_n(&self) -> f64 {
@@ -104,7 +116,7 @@ impl WrapState {
         if centrifugal_n == self.centrifugal_n {
             return;
         }
-        for k in &mut self.knots {
+        for k in self.knots.iter_mut() {
             k.log_n = super::update::log_n(k.tension_n, centrifugal_n);
         }
         self.centrifugal_n = centrifugal_n;
@@ -113,18 +125,23 @@ impl WrapState {
 
     /// The state as a tension field: exact exponentials of `T − m'v²` between knots.
     pub fn field(&self, centrifugal_n: f64) -> TensionField {
-        let cached = centrifugal_n == self.centrifugal_n;
-        let x = |k: &Knot| if cached { k.log_n } else { super::update::log_n(k.tension_n, centrifugal_n) };
-        let pieces = self
-            .knots
+        TensionField { pieces: self.pieces(centrifugal_n).collect() }
+    }
+
+    /// The pieces of [`Self::field`], without collecting them.
+    pub fn pieces(&self, centrifugal_n: f64) -> impl Iterator<Item = Piece> + '_ {
+        self.knots
             .windows(2)
             .filter(|w| w[1].theta_rad > w[0].theta_rad)
-            .map(|w| {
-                let (a, b) = (w[0], w[1]);
-                let rate = (x(&b) - x(&a)) / (b.theta_rad - a.theta_rad);
-                Piece::exponential(a.theta_rad, b.theta_rad, centrifugal_n, a.tension_n - centrifugal_n, rate)
-            })
-            .collect();
-        TensionField { pieces }
+            .map(move |w| self.piece(&w[0], &w[1], centrifugal_n))
+    }
+
+    /// The exact exponential of `T − m'v²` between two knots `a` before `b`.
+    pub fn piece(&self, a: &Knot, b: &Knot, centrifugal_n: f64) -> Piece {
+        let x = |k: &Knot| {
+            if centrifugal_n == self.centrifugal_n { k.log_n } else { super::update::log_n(k.tension_n, centrifugal_n) }
+        };
+        let rate = (x(b) - x(a)) / (b.theta_rad - a.theta_rad);
+        Piece::exponential(a.theta_rad, b.theta_rad, centrifugal_n, a.tension_n - centrifugal_n, rate)
     }
 }

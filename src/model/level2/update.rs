@@ -96,6 +96,9 @@ impl Envelopes {
     }
 }
 
+/// Node events between exact re-anchorings of the node lattice.
+const ANCHOR_EVENTS: u32 = 64;
+
 /// Moves the knots with the pulley by `delta_rad` (positive: towards θ = α). The driver never
 /// moves the node lattice past one pitch event; at the event (phase reaching h moving up, or 0
 /// moving down: `direction` tells which) the node at the exit end leaves and a new node enters
@@ -109,46 +112,83 @@ pub fn advect(state: &mut WrapState, delta_rad: f64, direction: f64, entry_tensi
     let h = state.pitch_rad;
     state.set_centrifugal(centrifugal_n);
     exit_end_follows(state, delta_rad, centrifugal_n);
-    for k in state.knots.iter_mut().filter(|k| k.kind != KnotKind::End) {
-        k.theta_rad += delta_rad;
-    }
     state.phase_rad += delta_rad;
     let eps = 1e-12 * alpha;
-    if direction > 0.0 && state.phase_rad >= h - eps {
-        state.phase_rad = 0.0;
+    let event = (direction > 0.0 && state.phase_rad >= h - eps) || (direction < 0.0 && state.phase_rad <= eps);
+    let m = state.knots.len();
+    if event {
+        state.phase_rad = if direction > 0.0 { 0.0 } else { h };
+        state.events_since_anchor += 1;
+    }
+    if event && state.events_since_anchor >= ANCHOR_EVENTS {
+        // Every few events the node lattice is re-anchored to its exact positions, so
+        // round-off never accumulates; kinks move with the pulley.
+        state.events_since_anchor = 0;
+        // Existing node i sits at (i + 1)·h after an event moving up (a node enters at 0),
+        // at i·h after one moving down (node 0 leaves).
+        let (phase, mut idx) = (if direction > 0.0 { h } else { 0.0 }, 0usize);
+        for k in state.knots[1..m - 1].iter_mut() {
+            if k.kind == KnotKind::Node {
+                k.theta_rad = (phase + idx as f64 * h).clamp(0.0, alpha);
+                idx += 1;
+            } else {
+                k.theta_rad += delta_rad;
+            }
+        }
+    } else {
+        for k in state.knots[1..m - 1].iter_mut() {
+            k.theta_rad += delta_rad;
+        }
+    }
+    if event && direction > 0.0 {
         // The last node has reached θ = α and leaves (by index: its position carries round-off),
         // with any kink that has left as well; a new node enters at θ = 0.
         if let Some(i) = state.knots.iter().rposition(|k| k.kind == KnotKind::Node) {
             state.knots.remove(i);
         }
-        state.knots.retain(|k| k.kind != KnotKind::Kink || k.theta_rad < alpha);
+        drop_kinks_beyond(state, false, true);
         state.knots.insert(1, Knot::new(0.0, entry_tension_n, KnotKind::Node, centrifugal_n));
-    } else if direction < 0.0 && state.phase_rad <= eps {
-        state.phase_rad = h;
+    } else if event {
         if let Some(i) = state.knots.iter().position(|k| k.kind == KnotKind::Node) {
             state.knots.remove(i);
         }
-        state.knots.retain(|k| k.kind != KnotKind::Kink || k.theta_rad > 0.0);
+        drop_kinks_beyond(state, true, false);
         let at = state.knots.len() - 1;
         state.knots.insert(at, Knot::new(alpha, entry_tension_n, KnotKind::Node, centrifugal_n));
     } else if delta_rad != 0.0 {
         // Kinks (not nodes) may leave between node events.
-        state.knots.retain(|k| k.kind != KnotKind::Kink || (k.theta_rad > 0.0 && k.theta_rad < alpha));
-    }
-    // Re-anchor exact positions of nodes to the lattice to keep round-off from accumulating.
-    let phase = state.phase_rad;
-    let mut idx = 0usize;
-    for k in state.knots.iter_mut() {
-        if k.kind == KnotKind::Node {
-            k.theta_rad = (phase + idx as f64 * h).min(alpha);
-            idx += 1;
-        }
+        drop_kinks_beyond(state, true, true);
     }
     // A uniform shift keeps the knots in order; entering nodes were inserted at the ends.
     debug_assert!(
         state.knots.windows(2).all(|w| w[0].theta_rad <= w[1].theta_rad),
         "knots out of order after advection"
     );
+}
+
+/// Removes the kinks that have left the wrap (θ ≤ 0 at the entry side, θ ≥ α at the exit):
+/// they sit next to the ends, so only those are looked at.
+fn drop_kinks_beyond(state: &mut WrapState, at_start: bool, at_end: bool) {
+    let alpha = state.wrap_angle_rad;
+    if at_end {
+        let mut j = state.knots.len() - 1;
+        while j > 1 && state.knots[j - 1].theta_rad >= alpha {
+            j -= 1;
+            if state.knots[j].kind == KnotKind::Kink {
+                state.knots.remove(j);
+            }
+        }
+    }
+    if at_start {
+        let mut j = 1;
+        while j + 1 < state.knots.len() && state.knots[j].theta_rad <= 0.0 {
+            if state.knots[j].kind == KnotKind::Kink {
+                state.knots.remove(j);
+            } else {
+                j += 1;
+            }
+        }
+    }
 }
 
 /// Before a shift by `delta_rad`: the exit end's value becomes the old profile's value at the
@@ -189,38 +229,57 @@ pub fn update(state: &mut WrapState, ends: &Ends) -> Outcome {
         return Outcome::GrossSlip;
     }
     let m = state.knots.len();
-    // NaN marks "not visited: unchanged"; `apply` computes such values only where needed.
-    let mut old = vec![f64::NAN; m];
-    let mut new = vec![f64::NAN; m];
-    let visit = |j: usize, old: &mut [f64], new: &mut [f64]| {
-        let o = state.knots[j].log_n;
-        let x = env.clamp(state.knots[j].theta_rad, o);
-        old[j] = o;
-        new[j] = x;
-        // Ends, and nodes just entered on them, hold the new end tension: never a stop point.
+    let visit = |j: usize| {
         let k = &state.knots[j];
-        x != o || k.kind == KnotKind::End || k.theta_rad <= 0.0 || k.theta_rad >= state.wrap_angle_rad
+        let o = k.log_n;
+        let x = env.clamp(k.theta_rad, o);
+        // Ends, and nodes just entered on them, hold the new end tension: never a stop point.
+        let go = x != o || k.kind == KnotKind::End || k.theta_rad <= 0.0 || k.theta_rad >= state.wrap_angle_rad;
+        ((o, x), go)
     };
+    let mut changes = Changes::default();
     if state.admissible_at_n == Some(c) {
-        let mut left_end = m;
         for j in 0..m {
-            if !visit(j, &mut old, &mut new) {
-                left_end = j;
+            let (v, go) = visit(j);
+            changes.left.push(v);
+            if !go {
                 break;
             }
         }
-        for j in (left_end.saturating_add(1)..m).rev() {
-            if !visit(j, &mut old, &mut new) {
+        for j in (changes.left.len()..m).rev() {
+            let (v, go) = visit(j);
+            changes.right.push(v);
+            if !go {
                 break;
             }
         }
+        changes.right.reverse();
     } else {
-        for j in 0..m {
-            visit(j, &mut old, &mut new);
+        changes.left.extend((0..m).map(|j| visit(j).0));
+    }
+    apply(state, &changes, &env, c);
+    Outcome::Held
+}
+
+/// The knots an increment visited, as `(old, new)` values of `ln n`: the first `left.len()`
+/// knots and the last `right.len()` ones. The knots between keep their values.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Changes {
+    pub left: Vec<(f64, f64)>,
+    pub right: Vec<(f64, f64)>,
+}
+
+impl Changes {
+    /// `(old, new)` at knot `j` of `m`, `None` where it was not visited.
+    fn at(&self, j: usize, m: usize) -> Option<(f64, f64)> {
+        if j < self.left.len() {
+            Some(self.left[j])
+        } else if j + self.right.len() >= m {
+            self.right.get(j + self.right.len() - m).copied()
+        } else {
+            None
         }
     }
-    apply(state, &old, &new, &env, c);
-    Outcome::Held
 }
 
 /// `ln(T − c)`, −∞ where the rope would have no contact force (then any envelope lifts it).
@@ -233,53 +292,90 @@ pub fn log_n(tension_n: f64, centrifugal_n: f64) -> f64 {
 /// envelopes cut the old exponentials between knots, repairs an inadmissible old profile, and
 /// drops kinks that no longer mark a change of slope.
 ///
-/// `old[j]`/`new[j]` are `ln n` before/after; NaN in `new` marks a knot left unchanged (its
-/// value is then computed only if a changed neighbour needs it).
-pub fn apply(state: &mut WrapState, old: &[f64], new: &[f64], env: &Envelopes, c: f64) {
-    let changed = |j: usize| !new[j].is_nan() && (new[j] - old[j]).abs() > 1e-15 * old[j].abs().max(1.0);
-    let old_at = |j: usize| if old[j].is_nan() { state.knots[j].log_n } else { old[j] };
-    let mut knots: Vec<Knot> = Vec::with_capacity(state.knots.len() + 4);
+/// When the old profile was admissible and the visited runs leave knots between them alone, only
+/// the two end windows are rebuilt (time proportional to the slip runs, not to N).
+pub fn apply(state: &mut WrapState, changes: &Changes, env: &Envelopes, c: f64) {
+    let m = state.knots.len();
+    let (nl, nr) = (changes.left.len(), changes.right.len());
+    if state.admissible_at_n == Some(c) && nl + nr + 3 <= m {
+        // Windows [0, nl] and [m − nr − 1, m − 1]: each with the first knot not visited next
+        // to it, so kinks between it and a changed neighbour are found; at least one knot
+        // between the windows stays as it is.
+        let (lo, hi) = (m - nr - 1, nl);
+        let (mut right, touched) = rebuild(state, changes, env, c, lo, m - 1);
+        prune(&mut right, &touched, Some(state.knots[lo - 1]), None);
+        let (mut left, touched) = rebuild(state, changes, env, c, 0, hi);
+        prune(&mut left, &touched, None, Some(state.knots[hi + 1]));
+        state.knots.replace_back(lo, &right);
+        state.knots.replace_front(hi + 1, &left);
+    } else {
+        let (mut knots, mut touched) = rebuild(state, changes, env, c, 0, m - 1);
+        if state.admissible_at_n != Some(c) {
+            repair(&mut knots, env.mu, c);
+            touched.iter_mut().for_each(|t| *t = true);
+        }
+        prune(&mut knots, &touched, None, None);
+        state.knots = knots.into();
+    }
+    state.admissible_at_n = Some(c);
+}
+
+/// The knots `lo..=hi` after the update (new values, kinks inserted), each flagged when it is
+/// next to a change.
+fn rebuild(
+    state: &WrapState,
+    changes: &Changes,
+    env: &Envelopes,
+    c: f64,
+    lo: usize,
+    hi: usize,
+) -> (Vec<Knot>, Vec<bool>) {
+    let m = state.knots.len();
+    // (old, new, changed) for the window and one knot either side.
+    let first = lo.saturating_sub(1);
+    let last = (hi + 1).min(m - 1);
+    let vals: Vec<(f64, f64, bool)> = (first..=last)
+        .map(|j| match changes.at(j, m) {
+            Some((o, x)) => (o, x, (x - o).abs() > 1e-15 * o.abs().max(1.0)),
+            None => (state.knots[j].log_n, state.knots[j].log_n, false),
+        })
+        .collect();
+    let at = |j: usize| vals[j - first];
+    let changed = |j: usize| at(j).2;
+    let mut knots: Vec<Knot> = Vec::with_capacity(hi + 1 - lo + 4);
     // Knots next to a change: the only kinks that may have become redundant.
-    let mut touched: Vec<bool> = Vec::with_capacity(state.knots.len() + 4);
-    // Knots strictly inside the block the update did not visit are copied as they are.
-    let unvisited = (new.iter().position(|x| x.is_nan()), new.iter().rposition(|x| x.is_nan()));
-    let mut j = 0;
-    while j < state.knots.len() {
-        if let (Some(a), Some(b)) = unvisited
-            && j > a
-            && j + 1 < b
-        {
-            knots.extend_from_slice(&state.knots[j..b]);
-            touched.resize(knots.len(), false);
-            j = b;
-            continue;
-        }
+    let mut touched: Vec<bool> = Vec::with_capacity(hi + 1 - lo + 4);
+    let tol_theta = 1e-12 * env.alpha;
+    for j in lo..=hi {
         let knot = state.knots[j];
-        j += 1;
-        let j = j - 1;
-        let near = changed(j) || (j > 0 && changed(j - 1)) || (j + 1 < state.knots.len() && changed(j + 1));
-        knots.push(if changed(j) { Knot { tension_n: c + new[j].exp(), log_n: new[j], ..knot } } else { knot });
+        let (oa, xa_new, changed_a) = at(j);
+        let changed_b = j + 1 < m && changed(j + 1);
+        let near = changed_a || (j > 0 && changed(j - 1)) || changed_b;
+        knots.push(if changed_a { Knot { tension_n: c + xa_new.exp(), log_n: xa_new, ..knot } } else { knot });
         touched.push(near);
-        if j + 1 == state.knots.len() || !(changed(j) || changed(j + 1)) {
+        if j + 1 == m || !(changed_a || changed_b) {
             continue;
         }
-        let (ta, tb) = (state.knots[j].theta_rad, state.knots[j + 1].theta_rad);
-        let (oa, ob) = (old_at(j), old_at(j + 1));
+        let (ta, tb) = (knot.theta_rad, state.knots[j + 1].theta_rad);
+        let (ob, xb_new, _) = at(j + 1);
         if tb <= ta || !oa.is_finite() || !ob.is_finite() {
             continue;
         }
-        let slope = (ob - oa) / (tb - ta);
+        // Both ends moved onto a line of slope ±μ: they lie on one envelope line, and between
+        // them the clamped profile is that line (the envelope is concave above, convex below):
+        // no kink.
+        let span = tb - ta;
+        if changed_a && changed_b && ((xb_new - xa_new).abs() - env.mu * span).abs() <= 1e-13 * xa_new.abs().max(1.0) {
+            continue;
+        }
+        let slope = (ob - oa) / span;
         let mut cands = env.candidates(ta, oa, slope);
         cands.sort_by(f64::total_cmp);
-        // The new values at the interval's ends; a candidate is a kink only where the clamped
-        // profile leaves the chord between them (inside a slip zone it does not).
-        let xa_new = if new[j].is_nan() { oa } else { new[j] };
-        let xb_new = if new[j + 1].is_nan() { ob } else { new[j + 1] };
-        for t in
-            cands.into_iter().filter(|t| t.is_finite() && *t > ta + 1e-12 * env.alpha && *t < tb - 1e-12 * env.alpha)
-        {
+        // A candidate is a kink only where the clamped profile leaves the chord between the
+        // new values at the interval's ends (inside a slip zone it does not).
+        for t in cands.into_iter().filter(|t| t.is_finite() && *t > ta + tol_theta && *t < tb - tol_theta) {
             let x = env.clamp(t, oa + slope * (t - ta));
-            let chord = xa_new + (xb_new - xa_new) * (t - ta) / (tb - ta);
+            let chord = xa_new + (xb_new - xa_new) * (t - ta) / span;
             if (x - chord).abs() <= 1e-12 * x.abs().max(1.0) {
                 continue;
             }
@@ -287,22 +383,16 @@ pub fn apply(state: &mut WrapState, old: &[f64], new: &[f64], env: &Envelopes, c
             touched.push(true);
         }
     }
-    end_values(&mut knots, env, c);
-    if state.admissible_at_n != Some(c) {
-        repair(&mut knots, env.mu, c);
-        touched.iter_mut().for_each(|t| *t = true);
-    }
-    prune(&mut knots, &touched);
-    state.knots = knots;
-    state.admissible_at_n = Some(c);
-}
-
-fn end_values(knots: &mut [Knot], env: &Envelopes, c: f64) {
     let n = knots.len();
-    knots[0].tension_n = c + env.x1.exp();
-    knots[0].log_n = env.x1;
-    knots[n - 1].tension_n = c + env.x2.exp();
-    knots[n - 1].log_n = env.x2;
+    if lo == 0 {
+        knots[0].tension_n = c + env.x1.exp();
+        knots[0].log_n = env.x1;
+    }
+    if hi == m - 1 {
+        knots[n - 1].tension_n = c + env.x2.exp();
+        knots[n - 1].log_n = env.x2;
+    }
+    (knots, touched)
 }
 
 /// Lipschitz sweeps in log space; no-ops on an admissible profile.
@@ -336,17 +426,17 @@ fn repair(knots: &mut [Knot], mu: f64, c: f64) {
 
 /// Removes kinks (among those `touched` by this update) whose neighbours already carry the
 /// same exponential. Untouched knots are not looked at, so a quiet increment costs nothing here.
-fn prune(knots: &mut Vec<Knot>, touched: &[bool]) {
+/// `before` / `after`: the knots next to the slice, which stay.
+fn prune(knots: &mut Vec<Knot>, touched: &[bool], before: Option<Knot>, after: Option<Knot>) {
     let mut drop = vec![false; 0];
-    let mut kept_prev: Option<usize> = None;
+    let mut kept_prev = before;
     for j in 0..knots.len() {
         let k = knots[j];
         if k.kind == KnotKind::Kink
             && touched[j]
-            && j + 1 < knots.len()
-            && let Some(p) = kept_prev
+            && let Some(prev) = kept_prev
+            && let Some(next) = knots.get(j + 1).copied().or(after)
         {
-            let (prev, next) = (knots[p], knots[j + 1]);
             let span = next.theta_rad - prev.theta_rad;
             if span > 0.0 {
                 let interp = prev.log_n + (next.log_n - prev.log_n) * (k.theta_rad - prev.theta_rad) / span;
@@ -359,7 +449,7 @@ fn prune(knots: &mut Vec<Knot>, touched: &[bool]) {
                 }
             }
         }
-        kept_prev = Some(j);
+        kept_prev = Some(k);
     }
     if !drop.is_empty() {
         let mut idx = 0;
