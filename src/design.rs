@@ -13,7 +13,65 @@ pub struct Design {
     pub pulley: Pulley,
     pub rope: Rope,
     pub requirements: Requirements,
+    /// The hoist that `duty-cycle` scenes run (the `[hoist]` section), when the sheet has one.
+    pub hoist: Option<Hoist>,
     pub scenes: Vec<Scene>,
+}
+
+/// What hangs from the pulley and how the pulley moves (`[hoist]`). Side 1 is the conveyance
+/// lifted when v > 0, side 2 the counterweight (or the other conveyance).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Hoist {
+    /// Conveyance on side 1 without payload (kg).
+    pub conveyance1_kg: f64,
+    /// Counterweight or conveyance on side 2 (kg).
+    pub conveyance2_kg: f64,
+    /// Structural damping ratio of the hoisting ropes' longitudinal modes.
+    pub rope_damping_ratio: f64,
+    pub tail_count: u32,
+    /// Mass per metre of one tail (balance) rope (kg/m).
+    pub tail_mass_per_m_kg: f64,
+    /// Hanging lengths at the start of a cycle: tangent point → conveyance (m).
+    pub side1_length_m: f64,
+    pub side2_length_m: f64,
+    /// Tail rope hanging below each conveyance at the start (m).
+    pub tail1_length_m: f64,
+    pub tail2_length_m: f64,
+    /// The normal motion profile, lifting side 1 (stages in order).
+    pub stages: Vec<MotionStage>,
+}
+
+/// One stage of a motion profile: the acceleration ramps linearly (jerk-limited) from the
+/// previous stage's end value to `accel_m_s2` over `duration_s`, or steps to it (`step`).
+/// Without a duration the stage lasts until the hoist stops.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MotionStage {
+    pub name: String,
+    pub duration_s: Option<f64>,
+    pub accel_m_s2: f64,
+    pub step: bool,
+}
+
+/// A hoisting cycle of the `[hoist]` (INTERFACE `kind = "duty-cycle"`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct DutyCycleScene {
+    /// Payload on the side-1 conveyance (kg).
+    pub payload_kg: f64,
+    /// Lift (side 1 up, the profile as given) or lower (the profile mirrored).
+    pub direction: Direction,
+    /// Emergency braking: at `at_s` the drive decelerates at `decel_m_s2` until the hoist stops.
+    pub emergency: Option<EmergencyStop>,
+    pub snapshots_s: Vec<f64>,
+    /// Time between history rows (s).
+    pub output_step_s: f64,
+    /// Integration step of the suspended-rope dynamics (s).
+    pub time_step_s: f64,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct EmergencyStop {
+    pub at_s: f64,
+    pub decel_m_s2: f64,
 }
 
 #[derive(Debug, Clone, PartialEq)]
@@ -67,6 +125,7 @@ pub struct Scene {
 pub enum SceneKind {
     Loads(LoadsScene),
     History(HistoryScene),
+    DutyCycle(DutyCycleScene),
 }
 
 impl SceneKind {
@@ -74,6 +133,7 @@ impl SceneKind {
         match self {
             SceneKind::Loads(_) => "loads",
             SceneKind::History(_) => "history",
+            SceneKind::DutyCycle(_) => "duty-cycle",
         }
     }
 }

@@ -13,6 +13,7 @@
 pub mod contact;
 pub mod derived;
 pub mod design;
+pub mod dynamics;
 pub mod geometry;
 pub mod model;
 pub mod planner;

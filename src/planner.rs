@@ -5,11 +5,14 @@
 //! | any | anti-slip checks only (`wrapcalc check`, `--level 0`) | 0 (closed form) |
 //! | `loads` | checks + distribution | 1 (creep theory, exact for constant end loads) |
 //! | `history` | checks + history + distributions | 2 (discrete stick–slip model: the stuck rope remembers the history) |
+//! | `duty-cycle` | checks + history + distributions | 4 (suspended-rope dynamics give T1(t), T2(t); level 2 on the wrap) |
 
 use crate::design::{Scene, SceneKind};
 
 /// Highest level this version implements.
-pub const MAX_LEVEL: u8 = 2;
+pub const MAX_LEVEL: u8 = 4;
+/// The levels this version implements (level 3, lining compliance, is not among them yet).
+pub const LEVELS: &[u8] = &[0, 1, 2, 4];
 
 /// What the caller wants from a run.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -28,14 +31,14 @@ pub struct Plan {
 
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum PlanError {
-    #[error(
-        "scene \"{scene}\": level {level} is not available in this version (levels 0–{MAX_LEVEL}); use --level auto"
-    )]
+    #[error("scene \"{scene}\": level {level} is not available in this version (levels 0, 1, 2, 4); use --level auto")]
     NotAvailable { scene: String, level: u8 },
     #[error(
         "scene \"{scene}\": level {level} cannot answer a {kind} scene ({why}); use --level auto or a level ≥ {needed}"
     )]
     TooLow { scene: String, kind: &'static str, level: u8, needed: u8, why: &'static str },
+    #[error("scene \"{scene}\": level 4 runs the hoist of a duty-cycle scene; a {kind} scene has no hoist to run")]
+    NoHoist { scene: String, kind: &'static str },
 }
 
 /// Chooses the level for one scene.
@@ -44,7 +47,7 @@ pub fn plan(scene: &Scene, request: Request) -> Result<Plan, PlanError> {
         (Request::ChecksOnly, _) => {
             Ok(Plan { level: 0, reason: "anti-slip checks only: closed form (level 0)".into() })
         }
-        (Request::Full { forced_level: Some(level) }, _) if level > MAX_LEVEL => {
+        (Request::Full { forced_level: Some(level) }, _) if !LEVELS.contains(&level) => {
             Err(PlanError::NotAvailable { scene: scene.name.clone(), level })
         }
         (Request::Full { forced_level: Some(0) }, _) => {
@@ -57,6 +60,16 @@ pub fn plan(scene: &Scene, request: Request) -> Result<Plan, PlanError> {
             needed: 2,
             why: "creep theory has no memory of the load history",
         }),
+        (Request::Full { forced_level: Some(level @ (1 | 2)) }, SceneKind::DutyCycle(_)) => Err(PlanError::TooLow {
+            scene: scene.name.clone(),
+            kind: "duty-cycle",
+            level,
+            needed: 4,
+            why: "its end tensions come from the dynamics of the suspended ropes",
+        }),
+        (Request::Full { forced_level: Some(4) }, SceneKind::Loads(_) | SceneKind::History(_)) => {
+            Err(PlanError::NoHoist { scene: scene.name.clone(), kind: scene.kind.name() })
+        }
         (Request::Full { forced_level: Some(level) }, _) => {
             Ok(Plan { level, reason: format!("forced by --level {level}") })
         }
@@ -68,6 +81,10 @@ pub fn plan(scene: &Scene, request: Request) -> Result<Plan, PlanError> {
             level: 2,
             reason: "a load history: the stuck rope remembers it, which needs the discrete stick–slip model (level 2)"
                 .into(),
+        }),
+        (Request::Full { forced_level: None }, SceneKind::DutyCycle(_)) => Ok(Plan {
+            level: 4,
+            reason: "a hoisting cycle: the suspended ropes' dynamics give the end tensions, the discrete stick–slip model the wrap (level 4)".into(),
         }),
     }
 }

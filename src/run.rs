@@ -2,13 +2,15 @@
 //! Stages per scene: plan → level 0 checks → (level ≥ 1) tension field → summary → distribution.
 
 use crate::derived::{self, WrapSummary};
-use crate::design::{Design, Direction, HistorySample, HistoryScene, LoadsScene, Scene, SceneKind};
+use crate::design::{Design, Direction, DutyCycleScene, HistorySample, HistoryScene, LoadsScene, Scene, SceneKind};
 use crate::model::level0::{self, Classical, EndState};
 use crate::model::level1;
 use crate::model::level2::{self, HistoryRow, Level2Error, Params, Solver, StepStats, WrapState};
+use crate::model::level4::{self, Level4Error};
 use crate::planner::{self, Plan, PlanError, Request};
 use crate::roots::RootError;
 use crate::wrap::Distribution;
+use rayon::prelude::*;
 use std::time::Instant;
 
 /// Default number of wrap nodes on the output grid (1° pitch on a 180° wrap).
@@ -42,6 +44,8 @@ pub enum RunError {
     Nodes(usize),
     #[error("scene \"{scene}\": {source}")]
     Level2 { scene: String, source: Level2Error },
+    #[error("scene \"{scene}\": {source}")]
+    Level4 { scene: String, source: Level4Error },
 }
 
 /// The wrap distribution of a scene (levels ≥ 1).
@@ -100,7 +104,8 @@ pub fn run(design: &Design, scenes: &[&Scene], options: Options) -> Result<RunRe
         return Err(RunError::Nodes(options.nodes));
     }
     let start = Instant::now();
-    let scenes = scenes.iter().map(|s| run_scene(design, s, options)).collect::<Result<Vec<_>, _>>()?;
+    // Scenes are independent: run in parallel, reported in the sheet's order.
+    let scenes = scenes.par_iter().map(|s| run_scene(design, s, options)).collect::<Result<Vec<_>, _>>()?;
     Ok(RunResult { scenes, runtime_ms: start.elapsed().as_secs_f64() * 1e3 })
 }
 
@@ -110,6 +115,7 @@ fn run_scene(design: &Design, scene: &Scene, options: Options) -> Result<SceneRe
     let mut result = match &scene.kind {
         SceneKind::Loads(loads) => run_loads(design, scene, loads, plan, options)?,
         SceneKind::History(history) => run_history(design, scene, history, plan, options)?,
+        SceneKind::DutyCycle(cycle) => run_duty_cycle(design, scene, cycle, plan, options)?,
     };
     result.runtime_ms = start.elapsed().as_secs_f64() * 1e3;
     ensure_finite(&result)?;
@@ -223,16 +229,60 @@ fn run_history(
     plan: Plan,
     options: Options,
 ) -> Result<SceneResult, RunError> {
-    let samples = &history.samples;
+    let output = level2::Output { snapshots_s: &history.snapshots_s, step_s: history.output_step_s, sample_rows: true };
+    run_samples(design, scene, &history.samples, None, history.direction, output, plan, options)
+}
+
+/// A duty cycle: the suspended ropes give the end tensions, which then run as a history. The
+/// wrap starts in the state the previous trip (the other way) left it in.
+fn run_duty_cycle(
+    design: &Design,
+    scene: &Scene,
+    cycle: &DutyCycleScene,
+    plan: Plan,
+    options: Options,
+) -> Result<SceneResult, RunError> {
+    let err = |source| RunError::Level4 { scene: scene.name.clone(), source };
+    let Some(hoist) = &design.hoist else {
+        return Err(err(Level4Error::NoHoist));
+    };
+    let dynamics = level4::suspended_ropes(design, hoist, cycle).map_err(err)?;
+    let samples = level4::end_history(&dynamics);
+    let accel: Vec<f64> = dynamics.iter().map(|s| s.accel_m_s2).collect();
+    let before = match cycle.direction {
+        Direction::Lift => Direction::Lower,
+        Direction::Lower => Direction::Lift,
+    };
+    let output =
+        level2::Output { snapshots_s: &cycle.snapshots_s, step_s: Some(cycle.output_step_s), sample_rows: false };
+    run_samples(design, scene, &samples, Some(&accel), before, output, plan, options)
+}
+
+/// A scene given as end tensions and speed over time (history and duty-cycle scenes): level 0
+/// over every sample, then (level ≥ 2) the discrete model through them. `accel_m_s2`: the
+/// acceleration at each sample when known (else the slope of the speed); `direction`: which way
+/// the rope ran before the first sample.
+#[allow(clippy::too_many_arguments)]
+fn run_samples(
+    design: &Design,
+    scene: &Scene,
+    samples: &[HistorySample],
+    accel_m_s2: Option<&[f64]>,
+    direction: Direction,
+    output: level2::Output,
+    plan: Plan,
+    options: Options,
+) -> Result<SceneResult, RunError> {
     let c_of = |v: f64| design.rope.mass_per_m_kg * v * v;
     let states: Vec<(f64, EndState)> = samples
         .iter()
         .enumerate()
         .map(|(i, s)| {
             let slope = |a: &HistorySample, b: &HistorySample| (b.speed_m_s - a.speed_m_s) / (b.t_s - a.t_s);
-            let accel = match (samples.get(i + 1), i.checked_sub(1).and_then(|j| samples.get(j))) {
-                (Some(next), _) => slope(s, next),
-                (None, Some(prev)) => slope(prev, s),
+            let accel = match (accel_m_s2, samples.get(i + 1), i.checked_sub(1).and_then(|j| samples.get(j))) {
+                (Some(a), _, _) => a[i],
+                (None, Some(next), _) => slope(s, next),
+                (None, None, Some(prev)) => slope(prev, s),
                 _ => 0.0,
             };
             (
@@ -259,11 +309,9 @@ fn run_history(
     let initial = if first.t1_n == first.t2_n {
         WrapState::uniform(alpha, options.nodes, first.t1_n)
     } else {
-        let rolling =
-            level1::steady_rolling(design.pulley.mu, alpha, &first, history.direction.sign(), design.rope.ea_n);
+        let rolling = level1::steady_rolling(design.pulley.mu, alpha, &first, direction.sign(), design.rope.ea_n);
         WrapState::from_field(alpha, options.nodes, &rolling.field)
     };
-    let output = level2::Output { snapshots_s: &history.snapshots_s, step_s: history.output_step_s, sample_rows: true };
     let run = level2::run_history(params(design, options.solver), samples, output, initial, options.nodes)
         .map_err(|source| RunError::Level2 { scene: scene.name.clone(), source })?;
     let mut snapshots: Vec<level2::Snapshot> = run.snapshots;

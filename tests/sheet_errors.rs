@@ -161,6 +161,31 @@ fn cases() -> Vec<Case> {
             expect: &["t1_n", "expected 2 values"],
         },
         Case {
+            label: "duty-cycle without [hoist]",
+            input: Input::Text(format!("{}\n[[scene]]\nname = \"d\"\nkind = \"duty-cycle\"\npayload_kg = 1000.0\n", VALID)),
+            expect: &["duty-cycle", "[hoist]"],
+        },
+        Case {
+            label: "hoist: negative conveyance mass",
+            input: Input::Text(format!("{}\n[[scene]]\nname = \"d\"\nkind = \"duty-cycle\"\npayload_kg = 1000.0\n\n[hoist]\nconveyance1_kg = 5000.0\nconveyance2_kg = 6000.0\nside1_length_m = 300.0\nside2_length_m = 20.0\n[[hoist.stage]]\nduration_s = 5.0\naccel_m_s2 = 0.5\n[[hoist.stage]]\naccel_m_s2 = -0.5\nstep = true\nuntil_stop = true\n", VALID).replace("conveyance1_kg = 5000.0", "conveyance1_kg = -5.0")),
+            expect: &["hoist.conveyance1_kg", "> 0"],
+        },
+        Case {
+            label: "hoist: stage without acceleration",
+            input: Input::Text(format!("{}\n[[scene]]\nname = \"d\"\nkind = \"duty-cycle\"\npayload_kg = 1000.0\n\n[hoist]\nconveyance1_kg = 5000.0\nconveyance2_kg = 6000.0\nside1_length_m = 300.0\nside2_length_m = 20.0\n[[hoist.stage]]\nduration_s = 5.0\naccel_m_s2 = 0.5\n[[hoist.stage]]\naccel_m_s2 = -0.5\nstep = true\nuntil_stop = true\n", VALID).replace("duration_s = 5.0\naccel_m_s2 = 0.5\n", "duration_s = 5.0\n")),
+            expect: &["hoist.stage[1].accel_m_s2", "missing"],
+        },
+        Case {
+            label: "duty-cycle: a loads key",
+            input: Input::Text(format!("{}\n[[scene]]\nname = \"d\"\nkind = \"duty-cycle\"\npayload_kg = 1000.0\nm1_kg = 5.0\n\n[hoist]\nconveyance1_kg = 5000.0\nconveyance2_kg = 6000.0\nside1_length_m = 300.0\nside2_length_m = 20.0\n[[hoist.stage]]\nduration_s = 5.0\naccel_m_s2 = 0.5\n[[hoist.stage]]\naccel_m_s2 = -0.5\nstep = true\nuntil_stop = true\n", VALID)),
+            expect: &["m1_kg", "not a key of a duty-cycle scene"],
+        },
+        Case {
+            label: "duty-cycle: emergency stop without deceleration",
+            input: Input::Text(format!("{}\n[[scene]]\nname = \"d\"\nkind = \"duty-cycle\"\npayload_kg = 1000.0\nemergency_stop_s = 2.0\n\n[hoist]\nconveyance1_kg = 5000.0\nconveyance2_kg = 6000.0\nside1_length_m = 300.0\nside2_length_m = 20.0\n[[hoist.stage]]\nduration_s = 5.0\naccel_m_s2 = 0.5\n[[hoist.stage]]\naccel_m_s2 = -0.5\nstep = true\nuntil_stop = true\n", VALID)),
+            expect: &["emergency_decel_m_s2", "missing"],
+        },
+        Case {
             label: "history: missing CSV",
             input: Input::Text(format!("{}\n[[scene]]\nname = \"h\"\nkind = \"history\"\ncsv = \"nope.csv\"\n", VALID)),
             expect: &["csv", "nope.csv"],
@@ -276,9 +301,12 @@ fn unknown_scene_and_unavailable_level_are_errors() {
     let o = run(&["--scene", "nosuch"]);
     assert_eq!(o.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&o.stderr).contains("nosuch"));
+    let o = run(&["--level", "3"]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("level 3 is not available"));
     let o = run(&["--level", "4"]);
     assert_eq!(o.status.code(), Some(1));
-    assert!(String::from_utf8_lossy(&o.stderr).contains("level 4 is not available"));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("has no hoist"));
     assert!(!out.exists(), "nothing may be written on error");
 }
 

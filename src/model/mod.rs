@@ -6,3 +6,4 @@
 pub mod level0;
 pub mod level1;
 pub mod level2;
+pub mod level4;

@@ -11,7 +11,8 @@ pub mod plot_history;
 pub mod summary;
 pub mod table;
 
-use crate::run::RunResult;
+use crate::run::{RunResult, SceneResult};
+use rayon::prelude::*;
 use std::fs::{self, File};
 use std::io::BufWriter;
 use std::path::{Path, PathBuf};
@@ -56,8 +57,13 @@ fn write_into(dir: &Path, summary: &Summary, run: &RunResult, options: ReportOpt
     let f = File::create(&csv_path).map_err(io(&csv_path))?;
     csv_out::write_summary(BufWriter::new(f), summary)
         .map_err(|source| ReportError::Csv { path: csv_path.display().to_string(), source })?;
-    for scene in &run.scenes {
-        let Some(wrap) = &scene.wrap else { continue };
+    run.scenes.par_iter().try_for_each(|scene| write_scene(dir, summary, scene, options))
+}
+
+/// A scene's folder: distribution (and history) CSV and plots.
+fn write_scene(dir: &Path, summary: &Summary, scene: &SceneResult, options: ReportOptions) -> Result<(), ReportError> {
+    {
+        let Some(wrap) = &scene.wrap else { return Ok(()) };
         let scene_dir = dir.join(&scene.name);
         fs::create_dir_all(&scene_dir).map_err(io(&scene_dir))?;
         let dist_path = scene_dir.join("distribution.csv");

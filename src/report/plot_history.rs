@@ -228,6 +228,9 @@ fn map_color(u: f64) -> RGBColor {
     if u > 0.0 { lerp((255, 226, 190), (175, 20, 10), s) } else { lerp((214, 230, 255), (20, 45, 165), s) }
 }
 
+/// Largest JDP change between rows drawn as one line (deg).
+const JDP_JUMP_DEG: f64 = 10.0;
+
 fn draw_map(body: &Area, times: &[f64], wrap_deg: f64, map: &[Vec<f64>], jdp: &[Option<f64>]) -> Result<(), String> {
     let (legend, plot) = body.split_vertically(40);
     let wrap = if wrap_deg.is_finite() && wrap_deg > 0.0 { wrap_deg } else { 360.0 };
@@ -287,7 +290,13 @@ fn draw_map(body: &Area, times: &[f64], wrap_deg: f64, map: &[Vec<f64>], jdp: &[
     };
     for i in 0..n.min(jdp.len()) {
         match jdp[i].filter(|j| j.is_finite() && times[i].is_finite()) {
-            Some(j) => run.push((times[i], j.clamp(0.0, wrap))),
+            Some(j) => {
+                // A jump of the JDP is a new demarcation, not a motion: start a new line.
+                if run.last().is_some_and(|&(_, last): &(f64, f64)| (last - j).abs() > JDP_JUMP_DEG) {
+                    flush(&mut run)?;
+                }
+                run.push((times[i], j.clamp(0.0, wrap)));
+            }
             None => flush(&mut run)?,
         }
     }

@@ -40,12 +40,20 @@ pub struct SceneSummary {
     pub runtime_ms: f64,
     /// Extension: centrifugal tension m'v² per rope (N).
     pub centrifugal_n: f64,
+    /// Extension (time scenes): the reported row with the lowest safety factor, and its time.
+    pub worst_t_s: Option<f64>,
+    pub worst_safety_factor: Option<f64>,
 }
 
 impl SceneSummary {
     pub fn of(r: &SceneResult) -> Self {
         let c = &r.classical;
         let w = r.wrap.as_ref().map(|w| &w.summary);
+        let worst = r.history.as_ref().and_then(|h| {
+            h.rows.iter().filter(|row| row.safety_factor.is_some()).min_by(|a, b| {
+                a.safety_factor.unwrap_or(f64::INFINITY).total_cmp(&b.safety_factor.unwrap_or(f64::INFINITY))
+            })
+        });
         Self {
             name: r.name.clone(),
             kind: r.kind,
@@ -76,6 +84,8 @@ impl SceneSummary {
             nodes: r.nodes,
             runtime_ms: r.runtime_ms,
             centrifugal_n: c.state.centrifugal_n,
+            worst_t_s: worst.map(|r| r.t_s),
+            worst_safety_factor: worst.and_then(|r| r.safety_factor),
         }
     }
 }

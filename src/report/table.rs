@@ -28,9 +28,16 @@ pub fn state_label(s: &EndState) -> String {
         "T1 = {:.1} kN, T2 = {:.1} kN, v = {} m/s, a = {} m/s²",
         s.t1_n / 1e3,
         s.t2_n / 1e3,
-        s.speed_m_s,
-        s.accel_m_s2
+        short(s.speed_m_s),
+        short(s.accel_m_s2)
     )
+}
+
+/// A speed or acceleration to 4 significant decimals, without trailing zeros ("0.6", "9.948").
+fn short(x: f64) -> String {
+    let s = format!("{:.4}", x + 0.0);
+    let s = s.trim_end_matches('0').trim_end_matches('.');
+    if s == "-0" { "0".into() } else { s.into() }
 }
 
 fn opt(v: Option<f64>, digits: usize) -> String {
@@ -72,7 +79,12 @@ pub fn render(title: &str, sheet: &str, run: &RunResult, style: Style) -> String
             c.euler_limit,
             factor(c.safety_factor),
             factor(c.static_safety_factor),
-            if c.state.accel_m_s2 != 0.0 { factor(c.dynamic_safety_factor) } else { "—".into() },
+            // Time scenes report their worst instant in motion; a loads scene its own acceleration.
+            if c.state.accel_m_s2 != 0.0 || s.history.is_some() {
+                factor(c.dynamic_safety_factor)
+            } else {
+                "—".into()
+            },
             c.dynamic_angle_rad.to_degrees(),
             opt(w.map(|w| w.positive_arc_rad.to_degrees()), 2),
             opt(w.map(|w| w.reverse_arc_rad.to_degrees()), 2),

@@ -3,7 +3,7 @@
 
 use super::diag::{Collector, join_key};
 use super::raw::RawScene;
-use super::validate::{At, SPEED_MAX_M_S, foreign_keys};
+use super::validate::{At, SPEED_MAX_M_S, direction_keyword, foreign_keys};
 use crate::design::{Direction, HistorySample, HistoryScene, Rope};
 use std::ops::Range;
 use std::path::Path;
@@ -29,6 +29,10 @@ pub(super) fn history(
             ("m1_kg", raw.m1_kg.as_ref().map(|v| v.span())),
             ("m2_kg", raw.m2_kg.as_ref().map(|v| v.span())),
             ("accel_m_s2", raw.accel_m_s2.as_ref().map(|v| v.span())),
+            ("payload_kg", raw.payload_kg.as_ref().map(|v| v.span())),
+            ("emergency_stop_s", raw.emergency_stop_s.as_ref().map(|v| v.span())),
+            ("emergency_decel_m_s2", raw.emergency_decel_m_s2.as_ref().map(|v| v.span())),
+            ("time_step_s", raw.time_step_s.as_ref().map(|v| v.span())),
         ],
     );
     let inline = raw.t_s.is_some() || raw.t1_n.is_some() || raw.t2_n.is_some() || raw.speed_m_s.is_some();
@@ -71,15 +75,10 @@ pub(super) fn history(
             let first = samples.iter().map(|s| s.speed_m_s).find(|v| *v != 0.0).unwrap_or(0.0);
             if first < 0.0 { Direction::Lower } else { Direction::Lift }
         }
-        Some(d) => match d.get_ref().as_str() {
-            "lift" => Direction::Lift,
-            "lower" => Direction::Lower,
-            _ => {
-                c.push(Some(d.span()), scene, &at.key("direction"), "expected \"lift\" or \"lower\"");
-                ok = false;
-                Direction::Lift
-            }
-        },
+        Some(d) => direction_keyword(c, at, d).unwrap_or_else(|| {
+            ok = false;
+            Direction::Lift
+        }),
     };
     let output_step_s = match &raw.output_step_s {
         None => None,

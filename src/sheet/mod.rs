@@ -1,12 +1,13 @@
 //! Design sheets: TOML in, a validated [`Design`] out, or every problem found.
 //!
 //! The document is parsed once with spans; each section (`[pulley]`, `[rope]`,
-//! `[requirements]`, every `[[scene]]`) is deserialized on its own so that an error in one does
+//! `[requirements]`, `[hoist]`, every `[[scene]]`) is deserialized on its own so that an error in one does
 //! not hide errors in the others; then every value is checked (finite, in range, consistent).
 //! Each diagnostic names the file, line:column, scene, key path, the bad value and what is allowed.
 
 mod diag;
 mod history;
+mod hoist;
 mod raw;
 mod validate;
 
@@ -21,7 +22,7 @@ use toml::Spanned;
 use toml::de::{DeTable, DeValue};
 
 /// Top-level keys a sheet may have.
-const TOP_LEVEL_KEYS: &[&str] = &["title", "g_m_s2", "pulley", "rope", "requirements", "scene"];
+const TOP_LEVEL_KEYS: &[&str] = &["title", "g_m_s2", "pulley", "rope", "requirements", "hoist", "scene"];
 
 /// Reads and validates a sheet file.
 pub fn load(path: &Path) -> Result<Design, SheetError> {
@@ -75,6 +76,10 @@ pub fn parse(file: &str, text: &str) -> Result<Design, SheetError> {
                 sections.rope = section(&mut c, value, "rope");
             }
             "requirements" => sections.requirements = section(&mut c, value, "requirements"),
+            "hoist" => {
+                sections.present.push("hoist");
+                sections.hoist = section(&mut c, value, "hoist");
+            }
             "scene" => sections.scenes = Some(scene_tables(&mut c, value)),
             other => c.push(
                 Some(key_span),

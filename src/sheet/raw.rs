@@ -55,4 +55,34 @@ pub struct RawScene {
     pub csv: Option<Spanned<String>>,
     pub snapshots_s: Option<Spanned<Vec<f64>>>,
     pub output_step_s: Option<Spanned<f64>>,
+    pub payload_kg: Option<Spanned<f64>>,
+    pub emergency_stop_s: Option<Spanned<f64>>,
+    pub emergency_decel_m_s2: Option<Spanned<f64>>,
+    pub time_step_s: Option<Spanned<f64>>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawHoist {
+    pub conveyance1_kg: Option<Spanned<f64>>,
+    pub conveyance2_kg: Option<Spanned<f64>>,
+    pub rope_damping_ratio: Option<Spanned<f64>>,
+    pub tail_count: Option<Spanned<i64>>,
+    pub tail_mass_per_m_kg: Option<Spanned<f64>>,
+    pub side1_length_m: Option<Spanned<f64>>,
+    pub side2_length_m: Option<Spanned<f64>>,
+    pub tail1_length_m: Option<Spanned<f64>>,
+    pub tail2_length_m: Option<Spanned<f64>>,
+    pub stage: Option<Spanned<Vec<Spanned<RawStage>>>>,
+}
+
+/// A `[[hoist.stage]]` table.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawStage {
+    pub name: Option<Spanned<String>>,
+    pub duration_s: Option<Spanned<f64>>,
+    pub accel_m_s2: Option<Spanned<f64>>,
+    pub step: Option<Spanned<bool>>,
+    pub until_stop: Option<Spanned<bool>>,
 }

@@ -1,7 +1,7 @@
 //! Checks every value of a deserialized sheet and builds the [`Design`].
 
 use super::diag::{Collector, join_key};
-use super::raw::{RawGuide, RawPulley, RawRequirements, RawRope, RawScene};
+use super::raw::{RawGuide, RawHoist, RawPulley, RawRequirements, RawRope, RawScene};
 use crate::design::{
     Design, Direction, EndLoads, LoadsScene, Pulley, Requirements, Rope, STANDARD_GRAVITY_M_S2, Scene, SceneKind,
     WrapSource,
@@ -31,6 +31,7 @@ pub struct Sections {
     pub pulley: Option<Spanned<RawPulley>>,
     pub rope: Option<Spanned<RawRope>>,
     pub requirements: Option<Spanned<RawRequirements>>,
+    pub hoist: Option<Spanned<RawHoist>>,
     pub scenes: Option<Vec<SceneSlot>>,
 }
 
@@ -41,14 +42,14 @@ pub struct SceneSlot {
 }
 
 /// A numeric rule: a predicate and the words that say what is allowed.
-struct Rule {
-    ok: fn(f64) -> bool,
-    allowed: &'static str,
+pub(super) struct Rule {
+    pub ok: fn(f64) -> bool,
+    pub allowed: &'static str,
 }
 
-const POSITIVE: Rule = Rule { ok: |x| x > 0.0, allowed: "a finite number > 0" };
-const NON_NEGATIVE: Rule = Rule { ok: |x| x >= 0.0, allowed: "a finite number ≥ 0" };
-const ANY: Rule = Rule { ok: |_| true, allowed: "a finite number" };
+pub(super) const POSITIVE: Rule = Rule { ok: |x| x > 0.0, allowed: "a finite number > 0" };
+pub(super) const NON_NEGATIVE: Rule = Rule { ok: |x| x >= 0.0, allowed: "a finite number ≥ 0" };
+pub(super) const ANY: Rule = Rule { ok: |_| true, allowed: "a finite number" };
 
 /// Where a value sits: the scene it belongs to and its section's key prefix.
 #[derive(Clone, Copy)]
@@ -65,7 +66,7 @@ impl At<'_> {
 }
 
 /// A number that must be present.
-fn required(c: &mut Collector, at: At, key: &str, value: &Option<Spanned<f64>>, rule: Rule) -> Option<f64> {
+pub(super) fn required(c: &mut Collector, at: At, key: &str, value: &Option<Spanned<f64>>, rule: Rule) -> Option<f64> {
     match value {
         Some(v) => checked(c, at, key, v, rule),
         None => {
@@ -81,7 +82,7 @@ fn required(c: &mut Collector, at: At, key: &str, value: &Option<Spanned<f64>>, 
 }
 
 /// A number that may be absent (then `default`).
-fn optional(
+pub(super) fn optional(
     c: &mut Collector,
     at: At,
     key: &str,
@@ -95,7 +96,7 @@ fn optional(
     }
 }
 
-fn checked(c: &mut Collector, at: At, key: &str, value: &Spanned<f64>, rule: Rule) -> Option<f64> {
+pub(super) fn checked(c: &mut Collector, at: At, key: &str, value: &Spanned<f64>, rule: Rule) -> Option<f64> {
     let x = *value.get_ref();
     if x.is_finite() && (rule.ok)(x) {
         Some(x)
@@ -106,7 +107,7 @@ fn checked(c: &mut Collector, at: At, key: &str, value: &Spanned<f64>, rule: Rul
 }
 
 /// A number with an explicit allowed range (inclusive bounds unless said otherwise).
-fn in_range(
+pub(super) fn in_range(
     c: &mut Collector,
     at: At,
     key: &str,
@@ -152,8 +153,15 @@ pub fn design(c: &mut Collector, s: Sections) -> Option<Design> {
         }
     };
     let requirements = s.requirements.as_ref().map_or(Some(Requirements::default()), |r| requirements(c, r));
+    let hoist = match &s.hoist {
+        Some(h) => super::hoist::hoist(c, h).map(Some),
+        None if s.present.contains(&"hoist") => None,
+        None => Some(None),
+    };
     let scenes = match &s.scenes {
-        Some(slots) if !slots.is_empty() => scenes(c, slots, g_m_s2, rope.as_ref()),
+        Some(slots) if !slots.is_empty() => {
+            scenes(c, slots, g_m_s2, rope.as_ref(), hoist.as_ref().map(Option::as_ref), s.present.contains(&"hoist"))
+        }
         _ => {
             c.push_at(Some(s.doc_span.clone()), None, "scene", "no [[scene]]: a sheet needs at least one scene");
             None
@@ -166,6 +174,7 @@ pub fn design(c: &mut Collector, s: Sections) -> Option<Design> {
         pulley: pulley?,
         rope: rope?,
         requirements: requirements?,
+        hoist: hoist?,
         scenes: scenes?,
     })
 }
@@ -280,6 +289,18 @@ fn requirements(c: &mut Collector, r: &Spanned<RawRequirements>) -> Option<Requi
     Some(Requirements { static_safety_factor_min: s?, dynamic_safety_factor_min: dy? })
 }
 
+/// A `direction` value: `"lift"` or `"lower"`.
+pub(super) fn direction_keyword(c: &mut Collector, at: At, d: &Spanned<String>) -> Option<Direction> {
+    match d.get_ref().as_str() {
+        "lift" => Some(Direction::Lift),
+        "lower" => Some(Direction::Lower),
+        _ => {
+            c.push(Some(d.span()), at.scene, &at.key("direction"), "expected \"lift\" or \"lower\"");
+            None
+        }
+    }
+}
+
 /// Scene names become directory names in the report.
 fn valid_scene_name(name: &str) -> bool {
     !name.is_empty()
@@ -288,7 +309,15 @@ fn valid_scene_name(name: &str) -> bool {
         && name.chars().all(|ch| ch.is_ascii_alphanumeric() || matches!(ch, '-' | '_' | '.'))
 }
 
-fn scenes(c: &mut Collector, slots: &[SceneSlot], g_m_s2: Option<f64>, rope: Option<&Rope>) -> Option<Vec<Scene>> {
+/// `hoist`: `None` when the `[hoist]` section failed, `Some(None)` when the sheet has none.
+fn scenes(
+    c: &mut Collector,
+    slots: &[SceneSlot],
+    g_m_s2: Option<f64>,
+    rope: Option<&Rope>,
+    hoist: Option<Option<&crate::design::Hoist>>,
+    hoist_present: bool,
+) -> Option<Vec<Scene>> {
     let mut seen: HashMap<String, usize> = HashMap::new();
     let mut out = Vec::with_capacity(slots.len());
     let mut all_ok = true;
@@ -341,21 +370,28 @@ fn scenes(c: &mut Collector, slots: &[SceneSlot], g_m_s2: Option<f64>, rope: Opt
                 super::history::history(c, at.scene, &slot.label, &table_span, raw, rope).map(SceneKind::History)
             }
             Some(k) if k.get_ref() == "duty-cycle" => {
-                let msg = "this kind of scene is not supported by this version; supported: \"loads\", \"history\"";
-                c.push(Some(k.span()), at.scene, &at.key("kind"), msg);
-                None
+                let hoist = match hoist {
+                    Some(Some(h)) => Some(h),
+                    _ if hoist_present => None,
+                    _ => {
+                        let msg = "a duty-cycle scene runs the hoist of a [hoist] section, and the sheet has none";
+                        c.push(Some(k.span()), at.scene, &at.key("kind"), msg);
+                        None
+                    }
+                };
+                super::hoist::duty_cycle(c, at, raw, hoist).map(SceneKind::DutyCycle)
             }
             Some(k) => {
                 c.push(
                     Some(k.span()),
                     at.scene,
                     &at.key("kind"),
-                    "unknown scene kind; expected \"loads\" or \"history\"",
+                    "unknown scene kind; expected \"loads\", \"history\" or \"duty-cycle\"",
                 );
                 None
             }
             None => {
-                let msg = "missing; expected kind = \"loads\" or \"history\"";
+                let msg = "missing; expected kind = \"loads\", \"history\" or \"duty-cycle\"";
                 c.push_at(Some(table_span.clone()), at.scene, &at.key("kind"), msg);
                 None
             }
@@ -410,6 +446,10 @@ fn loads(c: &mut Collector, at: At, raw: &RawScene, g_m_s2: Option<f64>, rope: O
             ("csv", raw.csv.as_ref().map(|v| v.span())),
             ("snapshots_s", raw.snapshots_s.as_ref().map(|v| v.span())),
             ("output_step_s", raw.output_step_s.as_ref().map(|v| v.span())),
+            ("payload_kg", raw.payload_kg.as_ref().map(|v| v.span())),
+            ("emergency_stop_s", raw.emergency_stop_s.as_ref().map(|v| v.span())),
+            ("emergency_decel_m_s2", raw.emergency_decel_m_s2.as_ref().map(|v| v.span())),
+            ("time_step_s", raw.time_step_s.as_ref().map(|v| v.span())),
         ],
     );
     let (t1_raw, t2_raw, speed_raw) = (

@@ -1,0 +1,214 @@
+//! The prescribed motion of the pulley surface: stages of piecewise-linear (jerk-limited)
+//! acceleration, integrated exactly.
+
+use serde::{Deserialize, Serialize};
+
+use super::DynamicsError;
+
+/// One stage of a motion profile.
+///
+/// Within a ramp stage the acceleration changes linearly from the previous stage's end value
+/// (0 at the start of the profile) to `accel_end_m_s2` (constant jerk); a `step` stage jumps
+/// to `accel_end_m_s2` at its start and holds it (e.g. emergency braking). `duration_s = None`
+/// means "until the speed reaches zero", valid only when the stage decelerates the current
+/// motion to rest without reversing it first.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Stage {
+    pub duration_s: Option<f64>,
+    pub accel_end_m_s2: f64,
+    #[serde(default)]
+    pub step: bool,
+}
+
+impl Stage {
+    /// A ramp of the acceleration to `accel_end_m_s2` over `duration_s`.
+    pub fn ramp(duration_s: f64, accel_end_m_s2: f64) -> Self {
+        Self { duration_s: Some(duration_s), accel_end_m_s2, step: false }
+    }
+
+    /// A step to `accel_end_m_s2`, held for `duration_s`.
+    pub fn step(duration_s: f64, accel_end_m_s2: f64) -> Self {
+        Self { duration_s: Some(duration_s), accel_end_m_s2, step: true }
+    }
+
+    /// A ramp to `accel_end_m_s2` lasting until the speed is zero.
+    pub fn ramp_until_stop(accel_end_m_s2: f64) -> Self {
+        Self { duration_s: None, accel_end_m_s2, step: false }
+    }
+
+    /// A step to `accel_end_m_s2`, held until the speed is zero.
+    pub fn step_until_stop(accel_end_m_s2: f64) -> Self {
+        Self { duration_s: None, accel_end_m_s2, step: true }
+    }
+}
+
+/// Pulley surface travel, speed and acceleration at one instant (v > 0 lifts side 1).
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
+pub struct Kinematics {
+    pub x_m: f64,
+    pub speed_m_s: f64,
+    pub accel_m_s2: f64,
+}
+
+/// A stage with its start state resolved: `a(τ) = a₀ + jτ`, `v(τ) = v₀ + a₀τ + jτ²/2`,
+/// `x(τ) = x₀ + v₀τ + a₀τ²/2 + jτ³/6` for `τ = t − t₀ ∈ [0, duration]`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Segment {
+    t0_s: f64,
+    duration_s: f64,
+    start: Kinematics,
+    jerk_m_s3: f64,
+}
+
+impl Segment {
+    fn at(&self, tau: f64) -> Kinematics {
+        let (x0, v0, a0, j) = (self.start.x_m, self.start.speed_m_s, self.start.accel_m_s2, self.jerk_m_s3);
+        Kinematics {
+            x_m: x0 + tau * (v0 + tau * (0.5 * a0 + tau * j / 6.0)),
+            speed_m_s: v0 + tau * (a0 + 0.5 * j * tau),
+            accel_m_s2: a0 + j * tau,
+        }
+    }
+}
+
+/// A validated motion profile starting at rest at `x = 0`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MotionProfile {
+    segments: Vec<Segment>,
+    end: Kinematics,
+    duration_s: f64,
+}
+
+impl MotionProfile {
+    /// Resolves the stages (durations of "until stop" stages included) and checks them:
+    /// accelerations finite, durations finite and ≥ 0, "until stop" stages decelerating the
+    /// motion to rest without reversing it.
+    pub fn new(stages: &[Stage]) -> Result<Self, DynamicsError> {
+        let mut segments = Vec::with_capacity(stages.len());
+        let mut t = 0.0;
+        let mut state = Kinematics::default();
+        for (stage, s) in stages.iter().enumerate() {
+            let a_end = s.accel_end_m_s2;
+            if !a_end.is_finite() {
+                return Err(DynamicsError::StageAccel { stage, value: a_end });
+            }
+            let a_start = if s.step { a_end } else { state.accel_m_s2 };
+            let v0 = state.speed_m_s;
+            let duration_s = match s.duration_s {
+                Some(d) if d.is_finite() && d >= 0.0 => d,
+                Some(d) => return Err(DynamicsError::StageDuration { stage, value: d }),
+                None => {
+                    let bad = DynamicsError::UntilStop {
+                        stage,
+                        speed_m_s: v0,
+                        accel_start_m_s2: a_start,
+                        accel_end_m_s2: a_end,
+                    };
+                    // Speed change over the stage is τ·(a_start + a_end)/2 for both kinds.
+                    let mean_accel = 0.5 * (a_start + a_end);
+                    if v0 == 0.0 || mean_accel * v0 >= 0.0 {
+                        return Err(bad);
+                    }
+                    let tau = -v0 / mean_accel;
+                    if !tau.is_finite() {
+                        return Err(bad);
+                    }
+                    // The speed must not pass through zero before the stage end: its extremum
+                    // (where a = 0) inside the stage must keep the sign of v0.
+                    let jerk = (a_end - a_start) / tau;
+                    if jerk != 0.0 {
+                        let t_star = -a_start / jerk;
+                        if t_star > 0.0 && t_star < tau {
+                            let v_star = v0 + t_star * (a_start + 0.5 * jerk * t_star);
+                            if v_star * v0 < 0.0 {
+                                return Err(bad);
+                            }
+                        }
+                    }
+                    tau
+                }
+            };
+            let jerk = if duration_s > 0.0 { (a_end - a_start) / duration_s } else { 0.0 };
+            let start = Kinematics { accel_m_s2: if duration_s > 0.0 { a_start } else { a_end }, ..state };
+            let seg = Segment { t0_s: t, duration_s, start, jerk_m_s3: jerk };
+            state = seg.at(duration_s);
+            if s.duration_s.is_none() {
+                state.speed_m_s = 0.0; // exactly at rest (removes round-off)
+            }
+            state.accel_m_s2 = a_end;
+            t += duration_s;
+            segments.push(seg);
+        }
+        Ok(Self { segments, end: state, duration_s: t })
+    }
+
+    /// A profile at rest for `duration_s` (one zero-acceleration stage).
+    pub fn at_rest(duration_s: f64) -> Result<Self, DynamicsError> {
+        Self::new(&[Stage::ramp(duration_s, 0.0)])
+    }
+
+    /// Total duration, s.
+    pub fn duration_s(&self) -> f64 {
+        self.duration_s
+    }
+
+    /// Kinematics at time `t_s`: at rest at `x = 0` before 0; within a stage the exact
+    /// polynomial (right-continuous at steps); after the end coasting at the final speed with
+    /// zero acceleration.
+    pub fn at(&self, t_s: f64) -> Kinematics {
+        if t_s < 0.0 || self.segments.is_empty() {
+            return Kinematics { x_m: 0.0, speed_m_s: 0.0, accel_m_s2: 0.0 };
+        }
+        if t_s > self.duration_s {
+            let e = self.end;
+            return Kinematics {
+                x_m: e.x_m + e.speed_m_s * (t_s - self.duration_s),
+                speed_m_s: e.speed_m_s,
+                accel_m_s2: 0.0,
+            };
+        }
+        // the last segment starting at or before t (zero-length ones are skipped by `>`)
+        let k = self.segments.partition_point(|s| s.t0_s <= t_s).saturating_sub(1);
+        let seg = &self.segments[k];
+        if t_s >= seg.t0_s + seg.duration_s {
+            // t at the very end of the last segment
+            return Kinematics { accel_m_s2: self.end.accel_m_s2, ..self.end };
+        }
+        seg.at(t_s - seg.t0_s)
+    }
+
+    /// The state at the end of the last stage.
+    pub fn end(&self) -> Kinematics {
+        self.end
+    }
+
+    /// Times of the stage ends and of the speed zeros inside stages (the candidates for the
+    /// extremes of `x`), in order, starting with 0.
+    pub(crate) fn x_extreme_times(&self) -> Vec<f64> {
+        let mut out = vec![0.0];
+        for s in &self.segments {
+            let (v0, a0, j) = (s.start.speed_m_s, s.start.accel_m_s2, s.jerk_m_s3);
+            // v0 + a0τ + jτ²/2 = 0
+            let mut roots = [f64::NAN; 2];
+            if j == 0.0 {
+                if a0 != 0.0 {
+                    roots[0] = -v0 / a0;
+                }
+            } else {
+                let disc = a0 * a0 - 2.0 * j * v0;
+                if disc >= 0.0 {
+                    let r = disc.sqrt();
+                    roots = [(-a0 - r) / j, (-a0 + r) / j];
+                    roots.sort_by(f64::total_cmp);
+                }
+            }
+            for r in roots {
+                if r > 0.0 && r < s.duration_s {
+                    out.push(s.t0_s + r);
+                }
+            }
+            out.push(s.t0_s + s.duration_s);
+        }
+        out
+    }
+}

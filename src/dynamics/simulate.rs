@@ -1,0 +1,188 @@
+//! Time integration of both sides over a motion profile.
+
+use serde::Serialize;
+
+use super::rope::{Coeffs, SideState};
+use super::{DynamicsError, HoistParams, MotionProfile, Side, spring_mass_omega};
+
+/// Upper limit of time steps of one run (guards against a time step far too small).
+const MAX_STEPS: usize = 200_000_000;
+
+/// Options of a run beyond the time step and the mesh.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SimOptions {
+    /// Time step, s (the last step is shortened to end exactly at the profile's end).
+    pub dt_s: f64,
+    /// Finite elements per side (≥ 1).
+    pub elements: usize,
+    /// Keep every `record_every`-th step (the first and the last sample are always kept; 0 is
+    /// taken as 1).
+    pub record_every: usize,
+    /// Initial elastic displacement of each end mass added to the static equilibrium (side 1,
+    /// side 2), m, with the static shape of an extra end force (linear along the rope): starts
+    /// a free vibration. Zero for the usual start in static equilibrium.
+    pub initial_offset_m: [f64; 2],
+}
+
+impl SimOptions {
+    /// `dt_s`, `elements`, every step recorded, start in equilibrium.
+    pub fn new(dt_s: f64, elements: usize) -> Self {
+        Self { dt_s, elements, record_every: 1, initial_offset_m: [0.0; 2] }
+    }
+}
+
+/// One recorded instant of a run.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct DynSample {
+    pub t_s: f64,
+    /// Pulley surface travel, m.
+    pub x_m: f64,
+    pub speed_m_s: f64,
+    pub accel_m_s2: f64,
+    /// Tension per rope at the side-1 tangent point, N.
+    pub t1_n: f64,
+    /// Tension per rope at the side-2 tangent point, N.
+    pub t2_n: f64,
+    /// Tension per rope at the side-1 conveyance (its anchor: it carries the conveyance and the
+    /// tail rope below it), N.
+    pub anchor1_n: f64,
+    /// Tension per rope at the side-2 anchor, N.
+    pub anchor2_n: f64,
+    /// Elastic elongation of the side-1 ropes at the conveyance (downward displacement of the
+    /// conveyance relative to the rigid motion), m.
+    pub stretch1_m: f64,
+    /// The same for side 2, m.
+    pub stretch2_m: f64,
+    /// Mechanical energy of the motion relative to the rigid (pulley-driven) motion, both sides:
+    /// `Σ ½vᵀMv + ½qᵀKq − Fᵀq` (kinetic, strain, and the potential of the weight and the
+    /// inertial load of the prescribed acceleration), J.
+    pub energy_j: f64,
+    /// Work done on the relative motion since the start by the prescribed motion: the changing
+    /// length (rope entering or leaving a side changes M and K) and the changing loads (jerk,
+    /// tail weight), `∫ (½q̇ᵀṀq̇ + ½qᵀK̇q − Ḟᵀq) dt`, J. Undamped: `energy_j − energy₀ = work_j`.
+    pub work_j: f64,
+    /// Energy dissipated by the rope damping since the start, `∫ q̇ᵀCq̇ dt`, J.
+    pub dissipated_j: f64,
+}
+
+/// [`simulate_with`] with every step recorded and the start in static equilibrium.
+pub fn simulate(
+    p: &HoistParams,
+    profile: &MotionProfile,
+    dt_s: f64,
+    elements: usize,
+) -> Result<Vec<DynSample>, DynamicsError> {
+    simulate_with(p, profile, &SimOptions::new(dt_s, elements))
+}
+
+struct Side2 {
+    side: Side,
+    state: SideState,
+    coeffs: Coeffs,
+}
+
+/// Coefficients of a side at time `t_s` for the kinematics `x_m`, `accel_m_s2`.
+fn coeffs(p: &HoistParams, side: Side, n: usize, t_s: f64, x_m: f64, accel_m_s2: f64) -> Result<Coeffs, DynamicsError> {
+    let (length_m, end_mass_kg) = p.side_at(side, x_m, Some(t_s))?;
+    // a_s: downward rigid acceleration of the side's rope (a_1 = −ẍ, a_2 = +ẍ)
+    let a_s = side.down_sign() * accel_m_s2;
+    let beta_s = 2.0 * p.damping_ratio / spring_mass_omega(p, length_m, end_mass_kg);
+    Ok(Coeffs::new(p, n, length_m, end_mass_kg, p.g_m_s2 - a_s, beta_s))
+}
+
+/// Simulates the rope dynamics of both sides over the profile (model and scheme: see the module
+/// documentation). Starts in static equilibrium at `x = 0` (plus `initial_offset_m`) and steps
+/// the trapezoidal rule with `dt_s` to the end of the profile.
+///
+/// Errors: invalid parameters, `dt_s` not finite and > 0, zero elements, a hanging length
+/// reaching 0 or a tail length going negative during the profile (checked at every step and at
+/// the stage ends and turning points of `x`), a non-finite solution.
+pub fn simulate_with(
+    p: &HoistParams,
+    profile: &MotionProfile,
+    opt: &SimOptions,
+) -> Result<Vec<DynSample>, DynamicsError> {
+    p.validate()?;
+    let dt = opt.dt_s;
+    if !(dt.is_finite() && dt > 0.0) {
+        return Err(DynamicsError::TimeStep { dt_s: dt });
+    }
+    let n = opt.elements;
+    if n == 0 {
+        return Err(DynamicsError::NoElements);
+    }
+    for (k, off) in opt.initial_offset_m.iter().enumerate() {
+        super::finite(if k == 0 { "initial_offset_m[0]" } else { "initial_offset_m[1]" }, *off)?;
+    }
+    // Lengths at the extremes of x (exact, between the steps too).
+    for t in profile.x_extreme_times() {
+        let x = profile.at(t).x_m;
+        for side in Side::BOTH {
+            p.side_at(side, x, Some(t))?;
+        }
+    }
+    let total_s = profile.duration_s();
+    let steps_f = (total_s / dt).ceil();
+    if steps_f > MAX_STEPS as f64 {
+        return Err(DynamicsError::TooManySteps { steps: steps_f, limit: MAX_STEPS });
+    }
+    let steps = steps_f as usize;
+    let every = opt.record_every.max(1);
+
+    let k0 = profile.at(0.0);
+    let mut sides = Vec::with_capacity(2);
+    for (k, side) in Side::BOTH.into_iter().enumerate() {
+        // equilibrium under the loads at rest, then the loads of t = 0 (a step stage may start
+        // with a non-zero acceleration)
+        let rest = coeffs(p, side, n, 0.0, 0.0, 0.0)?;
+        let mut state = SideState::at_equilibrium(&rest, n);
+        let c = coeffs(p, side, n, 0.0, k0.x_m, k0.accel_m_s2)?;
+        state.displace(&c, opt.initial_offset_m[k]);
+        sides.push(Side2 { side, state, coeffs: c });
+    }
+    let energy = |sides: &[Side2]| sides.iter().map(|s| s.coeffs.energy_j(&s.state.q, &s.state.v)).sum::<f64>();
+    let ropes = p.ropes as f64;
+    let sample = |t_s: f64, k: super::Kinematics, sides: &[Side2], work_j: f64, dissipated_j: f64| DynSample {
+        t_s,
+        x_m: k.x_m,
+        speed_m_s: k.speed_m_s,
+        accel_m_s2: k.accel_m_s2,
+        t1_n: sides[0].state.top_tension_n(&sides[0].coeffs) / ropes,
+        t2_n: sides[1].state.top_tension_n(&sides[1].coeffs) / ropes,
+        anchor1_n: sides[0].state.anchor_tension_n(&sides[0].coeffs) / ropes,
+        anchor2_n: sides[1].state.anchor_tension_n(&sides[1].coeffs) / ropes,
+        stretch1_m: sides[0].state.end_stretch_m(),
+        stretch2_m: sides[1].state.end_stretch_m(),
+        energy_j: energy(sides),
+        work_j,
+        dissipated_j,
+    };
+
+    let mut out = Vec::with_capacity(steps / every + 2);
+    out.push(sample(0.0, k0, &sides, 0.0, 0.0));
+    let (mut work_j, mut dissipated_j) = (0.0, 0.0);
+    let mut t_prev = 0.0;
+    for step in 1..=steps {
+        let t = if step == steps { total_s } else { (step as f64 * dt).min(total_s) };
+        let h = t - t_prev;
+        if h <= 0.0 {
+            continue;
+        }
+        let kin = profile.at(t);
+        for s in sides.iter_mut() {
+            let c = coeffs(p, s.side, n, t, kin.x_m, kin.accel_m_s2)?;
+            let (w, d) = s.state.step(&s.coeffs, &c, h);
+            s.coeffs = c;
+            work_j += w;
+            dissipated_j += d;
+            if !s.state.is_finite() {
+                return Err(DynamicsError::Diverged { t_s: t });
+            }
+        }
+        t_prev = t;
+        if step % every == 0 || step == steps {
+            out.push(sample(t, kin, &sides, work_j, dissipated_j));
+        }
+    }
+    Ok(out)
+}

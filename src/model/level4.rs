@@ -1,0 +1,118 @@
+//! Level 4: a hoisting cycle. The suspended ropes ([`crate::dynamics`]) turn the motion profile
+//! of the `[hoist]` into the end tensions T1(t), T2(t) at the tangent points, which drive the
+//! discrete wrap model of level 2 step by step (MODEL §6).
+//!
+//! Coupling is one-way: the drive imposes the pulley's surface motion, and the rope's creep on
+//! the lining (micrometres per increment, a creep speed of order v·ΔT/EA ≈ 1 mm/s against a rope
+//! speed of metres per second) changes the suspended ropes' length by a relative amount below
+//! 1e-3, far below what moves their tensions. The wrap therefore does not feed back into the
+//! suspended ropes, and each side's tension is what its rope column pulls with.
+
+use crate::design::{Design, Direction, DutyCycleScene, HistorySample, Hoist};
+use crate::dynamics::{self, DynSample, DynamicsError, HoistParams, MotionProfile, SimOptions, Stage};
+
+/// Finite elements per side of the suspended ropes (the first mode converges to well under 1 %
+/// with far fewer; more elements resolve the higher modes a jerk excites).
+pub const ELEMENTS_PER_SIDE: usize = 24;
+
+/// Why a duty cycle could not run.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum Level4Error {
+    #[error(transparent)]
+    Dynamics(#[from] DynamicsError),
+    #[error("emergency_stop_s = {at_s} s is not before the end of the motion profile ({duration_s:.3} s)")]
+    EmergencyAfterEnd { at_s: f64, duration_s: f64 },
+    #[error("emergency_stop_s = {at_s} s: the hoist is at rest then, there is no motion to brake")]
+    EmergencyAtRest { at_s: f64 },
+    #[error("a duty-cycle scene needs the sheet's [hoist] section")]
+    NoHoist,
+}
+
+/// Interval of the end tensions handed to the wrap (s). The dynamics integrate at the scene's
+/// `time_step_s`; the wrap model takes every sample this far apart and interpolates linearly
+/// between them, which follows the first longitudinal modes (about 1 Hz on the reference hoist)
+/// to a relative error of (ωΔt)²/8 ≈ 1e-4 of their amplitude, and keeps the wrap's increments
+/// (each with a new m'v² as the speed changes) at a few hundred per second.
+pub const WRAP_SAMPLE_S: f64 = 0.005;
+
+/// What the suspended-rope model needs of a design and a duty-cycle scene.
+pub fn hoist_params(design: &Design, hoist: &Hoist, scene: &DutyCycleScene) -> HoistParams {
+    HoistParams {
+        ropes: design.rope.count as usize,
+        rope_mass_per_m_kg: design.rope.mass_per_m_kg,
+        rope_ea_n: design.rope.ea_n,
+        damping_ratio: hoist.rope_damping_ratio,
+        tail_ropes: hoist.tail_count as usize,
+        tail_mass_per_m_kg: hoist.tail_mass_per_m_kg,
+        side1_mass_kg: hoist.conveyance1_kg + scene.payload_kg,
+        side2_mass_kg: hoist.conveyance2_kg,
+        side1_length0_m: hoist.side1_length_m,
+        side2_length0_m: hoist.side2_length_m,
+        tail1_length0_m: hoist.tail1_length_m,
+        tail2_length0_m: hoist.tail2_length_m,
+        g_m_s2: design.g_m_s2,
+    }
+}
+
+/// The scene's motion profile: the hoist's stages (mirrored when lowering side 1), cut at the
+/// emergency stop and followed by constant braking to rest when the scene has one.
+pub fn motion_profile(hoist: &Hoist, scene: &DutyCycleScene) -> Result<MotionProfile, Level4Error> {
+    let sign = match scene.direction {
+        Direction::Lift => 1.0,
+        Direction::Lower => -1.0,
+    };
+    let stages: Vec<Stage> = hoist
+        .stages
+        .iter()
+        .map(|s| Stage { duration_s: s.duration_s, accel_end_m_s2: sign * s.accel_m_s2, step: s.step })
+        .collect();
+    let Some(stop) = scene.emergency else {
+        return Ok(MotionProfile::new(&stages)?);
+    };
+    let full = MotionProfile::new(&stages)?;
+    if stop.at_s >= full.duration_s() {
+        return Err(Level4Error::EmergencyAfterEnd { at_s: stop.at_s, duration_s: full.duration_s() });
+    }
+    // The stages up to the stop; the stage it falls in ends there, at the acceleration the
+    // profile has at that instant.
+    let mut cut = Vec::new();
+    let mut t = 0.0;
+    for s in &stages {
+        let d = s.duration_s.unwrap_or(f64::INFINITY);
+        if t + d >= stop.at_s {
+            let accel = full.at(stop.at_s).accel_m_s2;
+            cut.push(Stage { duration_s: Some(stop.at_s - t), accel_end_m_s2: accel, step: s.step });
+            break;
+        }
+        cut.push(*s);
+        t += d;
+    }
+    let v = full.at(stop.at_s).speed_m_s;
+    if v == 0.0 {
+        return Err(Level4Error::EmergencyAtRest { at_s: stop.at_s });
+    }
+    cut.push(Stage::step_until_stop(-v.signum() * stop.decel_m_s2));
+    Ok(MotionProfile::new(&cut)?)
+}
+
+/// Runs the suspended ropes through the scene and returns their samples (one per `time_step_s`).
+pub fn suspended_ropes(design: &Design, hoist: &Hoist, scene: &DutyCycleScene) -> Result<Vec<DynSample>, Level4Error> {
+    let params = hoist_params(design, hoist, scene);
+    let profile = motion_profile(hoist, scene)?;
+    let record_every = ((WRAP_SAMPLE_S / scene.time_step_s).round() as usize).max(1);
+    let options = SimOptions { record_every, ..SimOptions::new(scene.time_step_s, ELEMENTS_PER_SIDE) };
+    Ok(dynamics::simulate_with(&params, &profile, &options)?)
+}
+
+/// Speeds below 1 nm/s are round-off of a profile that has come to rest: exactly 0.
+fn at_rest_snapped(speed_m_s: f64) -> f64 {
+    if speed_m_s.abs() < 1e-9 { 0.0 } else { speed_m_s }
+}
+
+/// The end tensions and speed the wrap sees, per rope (the dynamics' samples as a history).
+pub fn end_history(samples: &[DynSample]) -> Vec<HistorySample> {
+    samples
+        .iter()
+        .map(|s| HistorySample { t_s: s.t_s, t1_n: s.t1_n, t2_n: s.t2_n, speed_m_s: at_rest_snapped(s.speed_m_s) })
+        .collect()
+}

@@ -1,0 +1,214 @@
+//! The `[hoist]` section (masses, tail ropes, hanging lengths, motion stages) and `duty-cycle`
+//! scenes that run it.
+
+use super::diag::{Collector, join_key};
+use super::raw::{RawHoist, RawScene, RawStage};
+use super::validate::{
+    At, NON_NEGATIVE, POSITIVE, Rule, checked, direction_keyword, foreign_keys, in_range, optional, required,
+};
+use crate::design::{Direction, DutyCycleScene, EmergencyStop, Hoist, MotionStage};
+use toml::Spanned;
+
+/// Default time between history rows of a duty cycle (s).
+pub const DEFAULT_OUTPUT_STEP_S: f64 = 0.05;
+/// Default integration step of the suspended ropes (s).
+pub const DEFAULT_TIME_STEP_S: f64 = 1e-3;
+/// Most stages a profile may have.
+const MAX_STAGES: usize = 64;
+
+const RATIO: Rule = Rule { ok: |x| (0.0..1.0).contains(&x), allowed: "a damping ratio 0 ≤ ζ < 1" };
+
+pub(super) fn hoist(c: &mut Collector, h: &Spanned<RawHoist>) -> Option<Hoist> {
+    let span = h.span();
+    let at = At { scene: None, section: "hoist", table_span: &span };
+    let h = h.get_ref();
+    let conveyance1_kg = required(c, at, "conveyance1_kg", &h.conveyance1_kg, POSITIVE);
+    let conveyance2_kg = required(c, at, "conveyance2_kg", &h.conveyance2_kg, POSITIVE);
+    let rope_damping_ratio = optional(c, at, "rope_damping_ratio", &h.rope_damping_ratio, RATIO, 0.0);
+    let tail_count = match &h.tail_count {
+        None => Some(0),
+        Some(n) if (0..=64).contains(n.get_ref()) => u32::try_from(*n.get_ref()).ok(),
+        Some(n) => {
+            c.push(Some(n.span()), None, "hoist.tail_count", "expected a whole number of tail ropes from 0 to 64");
+            None
+        }
+    };
+    let tail_mass_per_m_kg = optional(c, at, "tail_mass_per_m_kg", &h.tail_mass_per_m_kg, NON_NEGATIVE, 0.0);
+    let side1_length_m = required(c, at, "side1_length_m", &h.side1_length_m, POSITIVE);
+    let side2_length_m = required(c, at, "side2_length_m", &h.side2_length_m, POSITIVE);
+    let tail1_length_m = optional(c, at, "tail1_length_m", &h.tail1_length_m, NON_NEGATIVE, 0.0);
+    let tail2_length_m = optional(c, at, "tail2_length_m", &h.tail2_length_m, NON_NEGATIVE, 0.0);
+    let stages = match &h.stage {
+        None => {
+            c.push_at(
+                Some(span.clone()),
+                None,
+                "hoist.stage",
+                "missing; the motion profile is a list of [[hoist.stage]] tables (duration_s, accel_m_s2)",
+            );
+            None
+        }
+        Some(list) if list.get_ref().is_empty() || list.get_ref().len() > MAX_STAGES => {
+            c.push(Some(list.span()), None, "hoist.stage", format!("expected 1 to {MAX_STAGES} stages"));
+            None
+        }
+        Some(list) => {
+            let stages: Vec<Option<MotionStage>> =
+                list.get_ref().iter().enumerate().map(|(i, s)| stage(c, i, s)).collect();
+            stages.into_iter().collect()
+        }
+    };
+    Some(Hoist {
+        conveyance1_kg: conveyance1_kg?,
+        conveyance2_kg: conveyance2_kg?,
+        rope_damping_ratio: rope_damping_ratio?,
+        tail_count: tail_count?,
+        tail_mass_per_m_kg: tail_mass_per_m_kg?,
+        side1_length_m: side1_length_m?,
+        side2_length_m: side2_length_m?,
+        tail1_length_m: tail1_length_m?,
+        tail2_length_m: tail2_length_m?,
+        stages: stages?,
+    })
+}
+
+fn stage(c: &mut Collector, i: usize, s: &Spanned<RawStage>) -> Option<MotionStage> {
+    let span = s.span();
+    let label = format!("hoist.stage[{}]", i + 1);
+    let at = At { scene: None, section: &label, table_span: &span };
+    let s = s.get_ref();
+    let until_stop = s.until_stop.as_ref().is_some_and(|u| *u.get_ref());
+    let duration_s = match (&s.duration_s, until_stop) {
+        (Some(d), false) => checked(c, at, "duration_s", d, NON_NEGATIVE).map(Some),
+        (None, true) => Some(None),
+        (Some(d), true) => {
+            c.push(
+                Some(d.span()),
+                None,
+                &at.key("duration_s"),
+                "give either duration_s or until_stop = true, not both",
+            );
+            None
+        }
+        (None, false) => {
+            c.push_at(
+                Some(span.clone()),
+                None,
+                &at.key("duration_s"),
+                "missing; expected a duration ≥ 0 s (or until_stop = true)",
+            );
+            None
+        }
+    };
+    let accel_m_s2 = match &s.accel_m_s2 {
+        Some(a) => in_range(
+            c,
+            at,
+            "accel_m_s2",
+            a,
+            |a| a.abs() <= 9.81,
+            "an acceleration |a| ≤ 9.81 m/s² (side 1 upward positive)",
+        ),
+        None => {
+            c.push_at(
+                Some(span.clone()),
+                None,
+                &at.key("accel_m_s2"),
+                "missing; expected the acceleration at the end of the stage (m/s²)",
+            );
+            None
+        }
+    };
+    let name = s.name.as_ref().map_or_else(|| format!("stage {}", i + 1), |n| n.get_ref().clone());
+    let step = s.step.as_ref().is_some_and(|v| *v.get_ref());
+    Some(MotionStage { name, duration_s: duration_s?, accel_m_s2: accel_m_s2?, step })
+}
+
+/// A duty-cycle scene; `hoist` is `None` when the `[hoist]` section is missing or failed (the
+/// scene's own keys are still checked).
+pub(super) fn duty_cycle(c: &mut Collector, at: At, raw: &RawScene, hoist: Option<&Hoist>) -> Option<DutyCycleScene> {
+    let span_of = |v: &Option<Spanned<toml::Value>>| v.as_ref().map(|v| v.span());
+    let foreign_ok = foreign_keys(
+        c,
+        at,
+        "duty-cycle",
+        &[
+            ("m1_kg", raw.m1_kg.as_ref().map(|v| v.span())),
+            ("m2_kg", raw.m2_kg.as_ref().map(|v| v.span())),
+            ("t1_n", span_of(&raw.t1_n)),
+            ("t2_n", span_of(&raw.t2_n)),
+            ("speed_m_s", span_of(&raw.speed_m_s)),
+            ("accel_m_s2", raw.accel_m_s2.as_ref().map(|v| v.span())),
+            ("t_s", raw.t_s.as_ref().map(|v| v.span())),
+            ("csv", raw.csv.as_ref().map(|v| v.span())),
+        ],
+    );
+    let payload_kg = optional(c, at, "payload_kg", &raw.payload_kg, NON_NEGATIVE, 0.0);
+    let direction = match &raw.direction {
+        None => Some(Direction::Lift),
+        Some(d) => direction_keyword(c, at, d),
+    };
+    let emergency = match (&raw.emergency_stop_s, &raw.emergency_decel_m_s2) {
+        (None, None) => Some(None),
+        (Some(t), Some(d)) => {
+            let at_s = checked(c, at, "emergency_stop_s", t, NON_NEGATIVE);
+            let decel = in_range(
+                c,
+                at,
+                "emergency_decel_m_s2",
+                d,
+                |d| d > 0.0 && d <= 9.81,
+                "a deceleration 0 < d ≤ 9.81 m/s²",
+            );
+            at_s.zip(decel).map(|(at_s, decel_m_s2)| Some(EmergencyStop { at_s, decel_m_s2 }))
+        }
+        (Some(t), None) => {
+            c.push(
+                Some(t.span()),
+                at.scene,
+                &at.key("emergency_decel_m_s2"),
+                "missing; emergency braking needs both emergency_stop_s and emergency_decel_m_s2 (m/s², > 0)",
+            );
+            None
+        }
+        (None, Some(d)) => {
+            c.push(
+                Some(d.span()),
+                at.scene,
+                &at.key("emergency_stop_s"),
+                "missing; emergency braking needs both emergency_stop_s (s) and emergency_decel_m_s2",
+            );
+            None
+        }
+    };
+    let output_step_s = optional(c, at, "output_step_s", &raw.output_step_s, POSITIVE, DEFAULT_OUTPUT_STEP_S);
+    let time_step_s = match &raw.time_step_s {
+        None => Some(DEFAULT_TIME_STEP_S),
+        Some(v) => in_range(c, at, "time_step_s", v, |d| d > 0.0 && d <= 0.1, "an integration step 0 < dt ≤ 0.1 s"),
+    };
+    let snapshots_s = match &raw.snapshots_s {
+        None => Some(Vec::new()),
+        Some(s) if s.get_ref().iter().all(|t| t.is_finite() && *t >= 0.0) => {
+            let mut v = s.get_ref().clone();
+            v.sort_by(f64::total_cmp);
+            v.dedup();
+            Some(v)
+        }
+        Some(s) => {
+            c.push(Some(s.span()), at.scene, &join_key(at.section, "snapshots_s"), "expected times ≥ 0 s");
+            None
+        }
+    };
+    let _ = hoist?;
+    if !foreign_ok {
+        return None;
+    }
+    Some(DutyCycleScene {
+        payload_kg: payload_kg?,
+        direction: direction?,
+        emergency: emergency?,
+        snapshots_s: snapshots_s?,
+        output_step_s: output_step_s?,
+        time_step_s: time_step_s?,
+    })
+}
