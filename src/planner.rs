@@ -9,8 +9,6 @@
 
 use crate::design::{Scene, SceneKind};
 
-/// Highest level this version implements.
-pub const MAX_LEVEL: u8 = 4;
 /// The levels this version implements (level 3, lining compliance, is not among them yet).
 pub const LEVELS: &[u8] = &[0, 1, 2, 4];
 

@@ -62,7 +62,7 @@ pub use simulate::{DynSample, SimOptions, simulate, simulate_with};
 use serde::{Deserialize, Serialize};
 
 /// Standard gravity used by default, m/s².
-pub const G_M_S2: f64 = 9.81;
+pub const G_M_S2: f64 = crate::design::STANDARD_GRAVITY_M_S2;
 
 /// One side of the hoist.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]

@@ -62,51 +62,49 @@ fn write_into(dir: &Path, summary: &Summary, run: &RunResult, options: ReportOpt
 
 /// A scene's folder: distribution (and history) CSV and plots.
 fn write_scene(dir: &Path, summary: &Summary, scene: &SceneResult, options: ReportOptions) -> Result<(), ReportError> {
-    {
-        let Some(wrap) = &scene.wrap else { return Ok(()) };
-        let scene_dir = dir.join(&scene.name);
-        fs::create_dir_all(&scene_dir).map_err(io(&scene_dir))?;
-        let dist_path = scene_dir.join("distribution.csv");
-        let f = File::create(&dist_path).map_err(io(&dist_path))?;
-        let blocks: Vec<_> = scene.snapshots.iter().chain(std::iter::once(&wrap.distribution)).collect();
-        csv_out::write_distribution(BufWriter::new(f), &blocks)
-            .map_err(|source| ReportError::Csv { path: dist_path.display().to_string(), source })?;
+    let Some(wrap) = &scene.wrap else { return Ok(()) };
+    let scene_dir = dir.join(&scene.name);
+    fs::create_dir_all(&scene_dir).map_err(io(&scene_dir))?;
+    let dist_path = scene_dir.join("distribution.csv");
+    let f = File::create(&dist_path).map_err(io(&dist_path))?;
+    let blocks: Vec<_> = scene.snapshots.iter().chain(std::iter::once(&wrap.distribution)).collect();
+    csv_out::write_distribution(BufWriter::new(f), &blocks)
+        .map_err(|source| ReportError::Csv { path: dist_path.display().to_string(), source })?;
+    if let Some(history) = &scene.history {
+        let path = scene_dir.join("history.csv");
+        let f = File::create(&path).map_err(io(&path))?;
+        csv_out::write_history(BufWriter::new(f), &history.rows)
+            .map_err(|source| ReportError::Csv { path: path.display().to_string(), source })?;
+    }
+    if options.plots {
+        let at = scene.t_s.map_or_else(String::new, |t| format!("t = {t} s, "));
+        let title = format!(
+            "{} — level {}, {}{}",
+            scene.name,
+            scene.plan.level,
+            at,
+            table::state_label(&scene.classical.state)
+        );
+        plot::plot_distribution(&scene_dir.join("distribution.png"), &title, &wrap.distribution)?;
         if let Some(history) = &scene.history {
-            let path = scene_dir.join("history.csv");
-            let f = File::create(&path).map_err(io(&path))?;
-            csv_out::write_history(BufWriter::new(f), &history.rows)
-                .map_err(|source| ReportError::Csv { path: path.display().to_string(), source })?;
-        }
-        if options.plots {
-            let at = scene.t_s.map_or_else(String::new, |t| format!("t = {t} s, "));
-            let title = format!(
-                "{} — level {}, {}{}",
-                scene.name,
-                scene.plan.level,
-                at,
-                table::state_label(&scene.classical.state)
-            );
-            plot::plot_distribution(&scene_dir.join("distribution.png"), &title, &wrap.distribution)?;
-            if let Some(history) = &scene.history {
-                let min = if scene.classical.dynamic_safety_factor.is_some() {
-                    summary.requirements.dynamic_safety_factor_min
-                } else {
-                    summary.requirements.static_safety_factor_min
-                };
-                let title = format!("{} — history, level {}", scene.name, scene.plan.level);
-                plot_history::plot_history(&scene_dir.join("history.png"), &title, &history.rows, min)?;
-                let times: Vec<f64> = history.rows.iter().map(|r| r.t_s).collect();
-                let jdp: Vec<Option<f64>> = history.rows.iter().map(|r| r.jdp_deg).collect();
-                let title = format!("{} — friction utilization over the wrap (θ–t)", scene.name);
-                plot_history::plot_wrap_map(
-                    &scene_dir.join("wrap_map.png"),
-                    &title,
-                    &times,
-                    wrap.distribution.wrap_angle_deg,
-                    &history.map,
-                    &jdp,
-                )?;
-            }
+            let min = if scene.classical.dynamic_safety_factor.is_some() {
+                summary.requirements.dynamic_safety_factor_min
+            } else {
+                summary.requirements.static_safety_factor_min
+            };
+            let title = format!("{} — history, level {}", scene.name, scene.plan.level);
+            plot_history::plot_history(&scene_dir.join("history.png"), &title, &history.rows, min)?;
+            let times: Vec<f64> = history.rows.iter().map(|r| r.t_s).collect();
+            let jdp: Vec<Option<f64>> = history.rows.iter().map(|r| r.jdp_deg).collect();
+            let title = format!("{} — friction utilization over the wrap (θ–t)", scene.name);
+            plot_history::plot_wrap_map(
+                &scene_dir.join("wrap_map.png"),
+                &title,
+                &times,
+                wrap.distribution.wrap_angle_deg,
+                &history.map,
+                &jdp,
+            )?;
         }
     }
     Ok(())

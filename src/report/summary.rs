@@ -50,9 +50,7 @@ impl SceneSummary {
         let c = &r.classical;
         let w = r.wrap.as_ref().map(|w| &w.summary);
         let worst = r.history.as_ref().and_then(|h| {
-            h.rows.iter().filter(|row| row.safety_factor.is_some()).min_by(|a, b| {
-                a.safety_factor.unwrap_or(f64::INFINITY).total_cmp(&b.safety_factor.unwrap_or(f64::INFINITY))
-            })
+            h.rows.iter().filter_map(|row| row.safety_factor.map(|sf| (row.t_s, sf))).min_by(|a, b| a.1.total_cmp(&b.1))
         });
         Self {
             name: r.name.clone(),
@@ -84,8 +82,8 @@ impl SceneSummary {
             nodes: r.nodes,
             runtime_ms: r.runtime_ms,
             centrifugal_n: c.state.centrifugal_n,
-            worst_t_s: worst.map(|r| r.t_s),
-            worst_safety_factor: worst.and_then(|r| r.safety_factor),
+            worst_t_s: worst.map(|w| w.0),
+            worst_safety_factor: worst.map(|w| w.1),
         }
     }
 }

@@ -518,29 +518,19 @@ fn loads(c: &mut Collector, at: At, raw: &RawScene, g_m_s2: Option<f64>, rope: O
     };
     let direction = match &raw.direction {
         None => Some(speed.map_or(Direction::Lift, |v| if v < 0.0 { Direction::Lower } else { Direction::Lift })),
-        Some(d) => {
-            let parsed = match d.get_ref().as_str() {
-                "lift" => Some(Direction::Lift),
-                "lower" => Some(Direction::Lower),
-                _ => None,
-            };
-            match (parsed, speed) {
-                (None, _) => {
-                    c.push(Some(d.span()), at.scene, &at.key("direction"), "expected \"lift\" or \"lower\"");
-                    None
-                }
-                (Some(dir), Some(v)) if v != 0.0 && dir.sign() != v.signum() => {
-                    c.push(
-                        Some(d.span()),
-                        at.scene,
-                        &at.key("direction"),
-                        "contradicts the sign of speed_m_s (\"lift\" is v > 0: rope running side 1 → side 2)",
-                    );
-                    None
-                }
-                (Some(dir), _) => Some(dir),
+        Some(d) => match (direction_keyword(c, at, d), speed) {
+            (None, _) => None,
+            (Some(dir), Some(v)) if v != 0.0 && dir.sign() != v.signum() => {
+                c.push(
+                    Some(d.span()),
+                    at.scene,
+                    &at.key("direction"),
+                    "contradicts the sign of speed_m_s (\"lift\" is v > 0: rope running side 1 → side 2)",
+                );
+                None
             }
-        }
+            (Some(dir), _) => Some(dir),
+        },
     };
     let scene = LoadsScene { ends: ends?, accel_m_s2: accel?, speed_m_s: speed?, direction: direction? };
     // The state must keep the rope on the pulley: both contact forces T − m'v² positive.

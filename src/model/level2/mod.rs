@@ -3,7 +3,7 @@
 //!
 //! Stages of one run: [`state`] holds the tension the rope keeps over the wrap (knots carried
 //! by the pulley); [`simulate`] steps it through the history — [`update::advect`] moves it with
-//! the pulley, then [`update::update`] (exact O(N) clamp) or [`qp::update`] (the same increment
+//! the pulley, then [`update::update`] (exact clamp, in time proportional to the slip runs) or [`qp::update`] (the same increment
 //! as a convex program in clarabel) applies the new end tensions; [`slip`] gives the rope's slip
 //! velocity; this module samples the state into history rows and distributions.
 
@@ -109,7 +109,6 @@ pub fn run_history(
     let mut times: Vec<f64> = at_samples.chain(snapshots_s.iter().copied()).chain(regular).chain([t0, t_end]).collect();
     times.sort_by(f64::total_cmp);
     times.dedup();
-    let t_last = samples.last().map_or(0.0, |s| s.t_s);
     let mut sim = Simulation::new(params, samples, initial);
     sim.settle()?;
     let limit = euler_limit(params.mu, params.wrap_angle_rad);
@@ -120,7 +119,7 @@ pub fn run_history(
         roots: RootStats::default(),
         map: Vec::with_capacity(times.len()),
     };
-    let is_snapshot = |t: f64| snapshots_s.contains(&t) || t == t_last;
+    let is_snapshot = |t: f64| snapshots_s.contains(&t) || t == t_end;
     for (i, &t) in times.iter().enumerate() {
         // Slip velocity is reported with distributions only: the increments keep the knots
         // they need while the run approaches a snapshot.
