@@ -61,6 +61,9 @@ pub struct HistoryOutput {
     pub rows: Vec<HistoryRow>,
     pub map: Vec<Vec<f64>>,
     pub stats: StepStats,
+    /// Duty cycles: tension per rope at the side-1 and side-2 conveyance anchors at each row's
+    /// time (N); empty for other scenes.
+    pub anchors_n: Vec<[f64; 2]>,
 }
 
 #[derive(Debug, Clone, PartialEq)]
@@ -255,7 +258,11 @@ fn run_duty_cycle(
     };
     let output =
         level2::Output { snapshots_s: &cycle.snapshots_s, step_s: Some(cycle.output_step_s), sample_rows: false };
-    run_samples(design, scene, &samples, Some(&accel), before, output, plan, options)
+    let mut result = run_samples(design, scene, &samples, Some(&accel), before, output, plan, options)?;
+    if let Some(history) = &mut result.history {
+        history.anchors_n = history.rows.iter().map(|r| level4::anchors_at(&dynamics, r.t_s)).collect();
+    }
+    Ok(result)
 }
 
 /// A scene given as end tensions and speed over time (history and duty-cycle scenes): level 0
@@ -327,7 +334,7 @@ fn run_samples(
             check.pass = false;
         }
     }
-    result.history = Some(HistoryOutput { rows: run.rows, map: run.map, stats: run.stats });
+    result.history = Some(HistoryOutput { rows: run.rows, map: run.map, stats: run.stats, anchors_n: Vec::new() });
     result.nodes = Some(options.nodes);
     Ok(result)
 }

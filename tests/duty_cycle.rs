@@ -63,12 +63,21 @@ fn arcs_during_acceleration_are_ordered_by_load() {
 /// under the cage and 453.25 m under the counterweight, g = 9.81):
 ///   MID side 1: (65 000 + 30 000 + 64.86·463.56 + 69·28.25) · 9.81 / 6 = 207 670.75 N
 ///   side 2:     (95 000 + 64.86·51.34 + 69·453.25) · 9.81 / 6            = 211 902.81 N
+///   anchors (history.csv's anchor columns): cage (65 000 + 30 000 + 69·28.25)·9.81/6 = 158 512.2 N,
+///   counterweight (95 000 + 69·453.25)·9.81/6 = 206 460.3 N
 /// The first history row is the start in static equilibrium: the same within 1e-9 relative.
 #[test]
 fn first_row_is_the_static_equilibrium() {
     let d = design();
     let r = &run_scenes(&d, &["duty-MID"])[0];
-    let row = r.history.as_ref().unwrap().rows[0];
+    let history = r.history.as_ref().unwrap();
+    let row = history.rows[0];
+    assert_eq!(history.anchors_n.len(), history.rows.len(), "an anchor pair for every row");
+    let cage = (65_000.0 + 30_000.0 + 69.0 * 28.25) * 9.81 / 6.0;
+    let counterweight = (95_000.0 + 69.0 * 453.25) * 9.81 / 6.0;
+    let [a1, a2] = history.anchors_n[0];
+    assert!(((a1 - cage) / cage).abs() < 1e-9, "cage anchor {a1} vs {cage}");
+    assert!(((a2 - counterweight) / counterweight).abs() < 1e-9, "counterweight anchor {a2} vs {counterweight}");
     let t1 = (65_000.0 + 30_000.0 + 64.86 * 463.56 + 69.0 * 28.25) * 9.81 / 6.0;
     let t2 = (95_000.0 + 64.86 * 51.34 + 69.0 * 453.25) * 9.81 / 6.0;
     assert!(((row.t1_n - t1) / t1).abs() < 1e-9, "T1 {} vs {t1}", row.t1_n);

@@ -116,3 +116,17 @@ pub fn end_history(samples: &[DynSample]) -> Vec<HistorySample> {
         .map(|s| HistorySample { t_s: s.t_s, t1_n: s.t1_n, t2_n: s.t2_n, speed_m_s: at_rest_snapped(s.speed_m_s) })
         .collect()
 }
+
+/// Tension per rope at the two conveyance anchors at time `t_s` (N), interpolated linearly
+/// between the dynamics' samples (clamped to the first and last sample).
+pub fn anchors_at(samples: &[DynSample], t_s: f64) -> [f64; 2] {
+    let i = samples.partition_point(|s| s.t_s <= t_s);
+    match (i.checked_sub(1).and_then(|j| samples.get(j)), samples.get(i)) {
+        (Some(a), Some(b)) if b.t_s > a.t_s => {
+            let w = (t_s - a.t_s) / (b.t_s - a.t_s);
+            [a.anchor1_n + w * (b.anchor1_n - a.anchor1_n), a.anchor2_n + w * (b.anchor2_n - a.anchor2_n)]
+        }
+        (Some(s), _) | (None, Some(s)) => [s.anchor1_n, s.anchor2_n],
+        (None, None) => [f64::NAN, f64::NAN],
+    }
+}

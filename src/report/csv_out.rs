@@ -1,6 +1,7 @@
-//! CSV reports: summary.csv (one row per scene) and `<scene>/distribution.csv`.
+//! CSV reports: summary.csv (one row per scene), `<scene>/distribution.csv` and `<scene>/history.csv`.
 
 use super::summary::Summary;
+use crate::model::level2::HistoryRow;
 use crate::wrap::Distribution;
 use std::io::Write;
 
@@ -48,11 +49,43 @@ pub fn write_distribution<W: Write>(out: W, blocks: &[&Distribution]) -> csv::Re
     Ok(())
 }
 
-/// history.csv: one row per reported time (INTERFACE.md).
-pub fn write_history<W: Write>(out: W, rows: &[crate::model::level2::HistoryRow]) -> csv::Result<()> {
+/// history.csv: one row per reported time (INTERFACE.md's columns), then the extension columns
+/// `anchor1_n,anchor2_n` (tension per rope at the conveyance anchors; empty but for duty cycles).
+pub fn write_history<W: Write>(out: W, rows: &[HistoryRow], anchors_n: &[[f64; 2]]) -> csv::Result<()> {
     let mut w = csv::Writer::from_writer(out);
-    for row in rows {
-        w.serialize(row)?;
+    w.write_record([
+        "t_s",
+        "t1_n",
+        "t2_n",
+        "speed_m_s",
+        "accel_m_s2",
+        "jdp_deg",
+        "positive_arc_deg",
+        "reverse_arc_deg",
+        "max_utilization",
+        "safety_factor",
+        "gross_slip",
+        "anchor1_n",
+        "anchor2_n",
+    ])?;
+    let opt = |v: Option<f64>| v.map_or_else(String::new, |v| v.to_string());
+    for (i, r) in rows.iter().enumerate() {
+        let anchors = anchors_n.get(i);
+        w.write_record([
+            r.t_s.to_string(),
+            r.t1_n.to_string(),
+            r.t2_n.to_string(),
+            r.speed_m_s.to_string(),
+            r.accel_m_s2.to_string(),
+            opt(r.jdp_deg),
+            r.positive_arc_deg.to_string(),
+            r.reverse_arc_deg.to_string(),
+            r.max_utilization.to_string(),
+            opt(r.safety_factor),
+            r.gross_slip.to_string(),
+            opt(anchors.map(|a| a[0])),
+            opt(anchors.map(|a| a[1])),
+        ])?;
     }
     w.flush()?;
     Ok(())

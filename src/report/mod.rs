@@ -73,7 +73,7 @@ fn write_scene(dir: &Path, summary: &Summary, scene: &SceneResult, options: Repo
     if let Some(history) = &scene.history {
         let path = scene_dir.join("history.csv");
         let f = File::create(&path).map_err(io(&path))?;
-        csv_out::write_history(BufWriter::new(f), &history.rows)
+        csv_out::write_history(BufWriter::new(f), &history.rows, &history.anchors_n)
             .map_err(|source| ReportError::Csv { path: path.display().to_string(), source })?;
     }
     if options.plots {
@@ -93,7 +93,7 @@ fn write_scene(dir: &Path, summary: &Summary, scene: &SceneResult, options: Repo
                 summary.requirements.static_safety_factor_min
             };
             let title = format!("{} — history, level {}", scene.name, scene.plan.level);
-            plot_history::plot_history(&scene_dir.join("history.png"), &title, &history.rows, min)?;
+            plot_history::plot_history(&scene_dir.join("history.png"), &title, &history.rows, &history.anchors_n, min)?;
             let times: Vec<f64> = history.rows.iter().map(|r| r.t_s).collect();
             let jdp: Vec<Option<f64>> = history.rows.iter().map(|r| r.jdp_deg).collect();
             let title = format!("{} — friction utilization over the wrap (θ–t)", scene.name);

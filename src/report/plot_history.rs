@@ -14,6 +14,9 @@ type Area<'b> = DrawingArea<BitMapBackend<'b>, Shift>;
 
 const T1: RGBColor = RGBColor(20, 70, 160);
 const T2: RGBColor = RGBColor(200, 90, 20);
+/// Anchor tensions: lighter shades of the side colours.
+const ANCHOR1: RGBColor = RGBColor(110, 160, 230);
+const ANCHOR2: RGBColor = RGBColor(240, 170, 110);
 const SPEED: RGBColor = RGBColor(20, 130, 60);
 const ACCEL: RGBColor = RGBColor(140, 60, 160);
 const POS: RGBColor = RGBColor(200, 40, 30);
@@ -53,8 +56,16 @@ fn render(
 }
 
 /// history.png: end tensions, speed and acceleration, JDP and arcs, safety factor over time.
-pub fn plot_history(path: &Path, title: &str, rows: &[HistoryRow], safety_factor_min: f64) -> Result<(), PlotError> {
-    render(path, (1200, 1300), title, |body| draw_history(body, rows, safety_factor_min))
+/// `anchors_n`: tension per rope at the conveyance anchors per row (duty cycles; else empty),
+/// drawn thin beside T1 and T2.
+pub fn plot_history(
+    path: &Path,
+    title: &str,
+    rows: &[HistoryRow],
+    anchors_n: &[[f64; 2]],
+    safety_factor_min: f64,
+) -> Result<(), PlotError> {
+    render(path, (1200, 1300), title, |body| draw_history(body, rows, anchors_n, safety_factor_min))
 }
 
 fn time_range(times: impl Iterator<Item = f64>) -> (f64, f64) {
@@ -83,7 +94,7 @@ fn slip_intervals(rows: &[HistoryRow]) -> Vec<(f64, f64)> {
     out
 }
 
-fn draw_history(body: &Area, rows: &[HistoryRow], sf_min: f64) -> Result<(), String> {
+fn draw_history(body: &Area, rows: &[HistoryRow], anchors_n: &[[f64; 2]], sf_min: f64) -> Result<(), String> {
     let panels = body.split_evenly((4, 1));
     let x = time_range(rows.iter().map(|r| r.t_s));
     let slips = slip_intervals(rows);
@@ -99,16 +110,20 @@ fn draw_history(body: &Area, rows: &[HistoryRow], sf_min: f64) -> Result<(), Str
     let (sf_lo, sf_hi) = sf.iter().fold((f64::INFINITY, 0.0f64), |(lo, hi), p| (lo.min(p.1), hi.max(p.1)));
     let sf_top = (sf_hi * 1.05).min(10.0 * sf_lo.max(sf_min)).max(3.0 * sf_min);
     let sf_top = if sf_top.is_finite() { sf_top } else { 3.0 * sf_min };
+    let mut tensions: Vec<Series> = vec![
+        ("T1 (side 1)", T1, series(&|r| Some(kn(r.t1_n))), false),
+        ("T2 (side 2)", T2, series(&|r| Some(kn(r.t2_n))), false),
+    ];
+    if !anchors_n.is_empty() {
+        let anchor = |side: usize| -> Vec<(f64, f64)> {
+            rows.iter().zip(anchors_n).map(|(r, a)| (r.t_s, kn(a[side]))).filter(|p| p.1.is_finite()).collect()
+        };
+        tensions.push(("side-1 anchor (conveyance 1)", ANCHOR1, anchor(0), false));
+        tensions.push(("side-2 anchor (conveyance 2)", ANCHOR2, anchor(1), false));
+    }
     type Panel<'a> = (&'a str, Vec<Series<'a>>, Option<(f64, f64)>);
     let panels_spec: Vec<Panel> = vec![
-        (
-            "end tension (kN per rope)",
-            vec![
-                ("T1 (side 1)", T1, series(&|r| Some(kn(r.t1_n))), false),
-                ("T2 (side 2)", T2, series(&|r| Some(kn(r.t2_n))), false),
-            ],
-            None,
-        ),
+        ("tension (kN per rope)", tensions, None),
         (
             "speed (m/s) / accel. (m/s²)",
             vec![
