@@ -119,6 +119,83 @@ impl Default for Requirements {
 pub struct Scene {
     pub name: String,
     pub kind: SceneKind,
+    /// What the scene asks for (sheet key `outputs`; default: everything its kind can give).
+    pub outputs: Outputs,
+}
+
+/// One thing a scene can ask for (MODEL §7); the planner runs the cheapest level that gives all
+/// of a scene's outputs.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Output {
+    /// The level-0 anti-slip checks (Euler limit, safety factors).
+    Checks,
+    /// Design margins by root finding: critical μ, payload and braking deceleration before slip.
+    Margins,
+    /// The tension/friction distribution over the wrap (final state and snapshots).
+    Distribution,
+    /// The wrap over time (history.csv, history.png, wrap_map.png): time scenes only.
+    History,
+    /// Creep-theory parameters (active arc, idle tension) fitted to the distribution.
+    Fit,
+}
+
+impl Output {
+    pub const ALL: [Output; 5] = [Output::Checks, Output::Margins, Output::Distribution, Output::History, Output::Fit];
+
+    /// The keyword in the sheet's `outputs` array.
+    pub fn keyword(self) -> &'static str {
+        match self {
+            Output::Checks => "checks",
+            Output::Margins => "margins",
+            Output::Distribution => "distribution",
+            Output::History => "history",
+            Output::Fit => "fit",
+        }
+    }
+
+    pub fn from_keyword(word: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|o| o.keyword() == word)
+    }
+
+    fn bit(self) -> u8 {
+        1 << (self as u8)
+    }
+}
+
+/// A set of [`Output`]s.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Outputs(u8);
+
+impl Outputs {
+    pub fn of(outputs: &[Output]) -> Self {
+        Self(outputs.iter().fold(0, |bits, o| bits | o.bit()))
+    }
+
+    /// Everything a scene of this kind can give: a `loads` scene has no history.
+    pub fn all_for(kind: &SceneKind) -> Self {
+        match kind {
+            SceneKind::Loads(_) => Self::of(&[Output::Checks, Output::Margins, Output::Distribution, Output::Fit]),
+            SceneKind::History(_) | SceneKind::DutyCycle(_) => Self::of(&Output::ALL),
+        }
+    }
+
+    pub fn contains(self, output: Output) -> bool {
+        self.0 & output.bit() != 0
+    }
+
+    pub fn with(self, output: Output) -> Self {
+        Self(self.0 | output.bit())
+    }
+
+    /// The outputs, in the order of [`Output::ALL`].
+    pub fn iter(self) -> impl Iterator<Item = Output> {
+        Output::ALL.into_iter().filter(move |o| self.contains(*o))
+    }
+
+    /// `checks, margins, …` for messages.
+    pub fn names(self) -> String {
+        self.iter().map(Output::keyword).collect::<Vec<_>>().join(", ")
+    }
 }
 
 #[derive(Debug, Clone, PartialEq)]

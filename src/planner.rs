@@ -1,13 +1,17 @@
 //! The scene planner: the cheapest model level that answers what a scene asks for (MODEL §7).
 //!
-//! | scene | asks for | level |
-//! |---|---|---|
-//! | any | anti-slip checks only (`wrapcalc check`, `--level 0`) | 0 (closed form) |
-//! | `loads` | checks + distribution | 1 (creep theory, exact for constant end loads) |
-//! | `history` | checks + history + distributions | 2 (discrete stick–slip model: the stuck rope remembers the history) |
-//! | `duty-cycle` | checks + history + distributions | 4 (suspended-rope dynamics give T1(t), T2(t); level 2 on the wrap) |
+//! A scene lists its outputs (`outputs = [...]`, default everything its kind can give); each
+//! output needs a level, and the scene runs at the highest of them — never more:
+//!
+//! | output | `loads` | `history` | `duty-cycle` |
+//! |---|---|---|---|
+//! | `checks`, `margins` | 0 | 0 | 0 (rigid ropes: T = m(g ± a)/n along the motion profile) |
+//! | `distribution`, `fit` | 1 (creep theory, exact for constant end loads) | 2 | 4 |
+//! | `history` | — | 2 (the stuck rope remembers the loads) | 4 (the ropes' dynamics give T1(t), T2(t)) |
+//!
+//! `wrapcalc check` asks for the checks only (level 0 everywhere); `--level` forces a level.
 
-use crate::design::{Scene, SceneKind};
+use crate::design::{Output, Scene, SceneKind};
 
 /// The levels this version implements (level 3, lining compliance, is not among them yet).
 pub const LEVELS: &[u8] = &[0, 1, 2, 4];
@@ -71,18 +75,37 @@ pub fn plan(scene: &Scene, request: Request) -> Result<Plan, PlanError> {
         (Request::Full { forced_level: Some(level) }, _) => {
             Ok(Plan { level, reason: format!("forced by --level {level}") })
         }
-        (Request::Full { forced_level: None }, SceneKind::Loads(_)) => Ok(Plan {
-            level: 1,
-            reason: "constant end loads: the steady distribution of creep theory is exact (level 1)".into(),
-        }),
-        (Request::Full { forced_level: None }, SceneKind::History(_)) => Ok(Plan {
-            level: 2,
-            reason: "a load history: the stuck rope remembers it, which needs the discrete stick–slip model (level 2)"
-                .into(),
-        }),
-        (Request::Full { forced_level: None }, SceneKind::DutyCycle(_)) => Ok(Plan {
-            level: 4,
-            reason: "a hoisting cycle: the suspended ropes' dynamics give the end tensions, the discrete stick–slip model the wrap (level 4)".into(),
-        }),
+        (Request::Full { forced_level: None }, _) => Ok(auto(scene)),
     }
+}
+
+/// The level each output of a scene needs, and why.
+fn needs(kind: &SceneKind, output: Output) -> (u8, &'static str) {
+    match (output, kind) {
+        (Output::Checks | Output::Margins, SceneKind::DutyCycle(_)) => {
+            (0, "checks and margins: closed form on rigid ropes, T = m(g ± a)/n along the motion profile (level 0)")
+        }
+        (Output::Checks | Output::Margins, _) => (0, "checks and margins: closed form (level 0)"),
+        (_, SceneKind::Loads(_)) => {
+            (1, "constant end loads: the steady distribution of creep theory is exact (level 1)")
+        }
+        (_, SceneKind::History(_)) => {
+            (2, "a load history: the stuck rope remembers it, which needs the discrete stick–slip model (level 2)")
+        }
+        (_, SceneKind::DutyCycle(_)) => (
+            4,
+            "a hoisting cycle: the suspended ropes' dynamics give the end tensions, the discrete stick–slip model the wrap (level 4)",
+        ),
+    }
+}
+
+/// The cheapest level that gives every output the scene asks for.
+fn auto(scene: &Scene) -> Plan {
+    let (level, why) = scene
+        .outputs
+        .iter()
+        .map(|o| needs(&scene.kind, o))
+        .max_by_key(|(level, _)| *level)
+        .unwrap_or_else(|| needs(&scene.kind, Output::Checks));
+    Plan { level, reason: format!("{why}; outputs: {}", scene.outputs.names()) }
 }

@@ -2,7 +2,11 @@
 //! Stages per scene: plan → level 0 checks → (level ≥ 1) tension field → summary → distribution.
 
 use crate::derived::{self, WrapSummary};
-use crate::design::{Design, Direction, DutyCycleScene, HistorySample, HistoryScene, LoadsScene, Scene, SceneKind};
+use crate::design::{
+    Design, Direction, DutyCycleScene, HistorySample, HistoryScene, LoadsScene, Output, Scene, SceneKind,
+};
+use crate::fit::{self, CreepFit, FitError};
+use crate::margins::{self, Margins};
 use crate::model::level0::{self, Classical, EndState};
 use crate::model::level1;
 use crate::model::level2::{self, HistoryRow, Level2Error, Params, Solver, StepStats, WrapState};
@@ -46,6 +50,8 @@ pub enum RunError {
     Level2 { scene: String, source: Level2Error },
     #[error("scene \"{scene}\": {source}")]
     Level4 { scene: String, source: Level4Error },
+    #[error("scene \"{scene}\": {source}")]
+    Fit { scene: String, source: FitError },
 }
 
 /// The wrap distribution of a scene (levels ≥ 1).
@@ -79,6 +85,13 @@ pub struct SceneResult {
     pub history: Option<HistoryOutput>,
     /// Time of the reported state (time scenes).
     pub t_s: Option<f64>,
+    /// Time scenes: the instant with the lowest safety factor (or, when T1 = T2 throughout, the
+    /// highest tension ratio) among the samples, and its state.
+    pub worst: Option<(f64, EndState)>,
+    /// Design margins (when the scene asks for `margins`).
+    pub margins: Option<Margins>,
+    /// Creep-theory picture fitted to the reported distribution (when the scene asks for `fit`).
+    pub fit: Option<CreepFit>,
     pub nodes: Option<usize>,
     pub runtime_ms: f64,
 }
@@ -120,9 +133,36 @@ fn run_scene(design: &Design, scene: &Scene, options: Options) -> Result<SceneRe
         SceneKind::History(history) => run_history(design, scene, history, plan, options)?,
         SceneKind::DutyCycle(cycle) => run_duty_cycle(design, scene, cycle, plan, options)?,
     };
+    derive_answers(design, scene, &mut result)?;
     result.runtime_ms = start.elapsed().as_secs_f64() * 1e3;
     ensure_finite(&result)?;
     Ok(result)
+}
+
+/// The answers derived from a scene's result that it asks for: margins from its state (a time
+/// scene's worst instant), the creep-theory fit of its reported distribution.
+fn derive_answers(design: &Design, scene: &Scene, result: &mut SceneResult) -> Result<(), RunError> {
+    if scene.outputs.contains(Output::Margins) {
+        let (at_t_s, state) = match result.worst {
+            Some((t, s)) => (Some(t), s),
+            None => (None, result.classical.state),
+        };
+        result.margins = Some(margins::of(design, &state, at_t_s));
+    }
+    if scene.outputs.contains(Output::Fit)
+        && let Some(wrap) = &result.wrap
+    {
+        let state = &result.classical.state;
+        let entry_side1 = match &scene.kind {
+            _ if state.speed_m_s != 0.0 => Some(state.speed_m_s > 0.0),
+            SceneKind::Loads(l) => Some(l.direction == Direction::Lift),
+            _ => None,
+        };
+        let fitted = fit::creep_fit(&wrap.distribution, state.centrifugal_n, entry_side1)
+            .map_err(|source| RunError::Fit { scene: scene.name.clone(), source })?;
+        result.fit = Some(fitted);
+    }
+    Ok(())
 }
 
 fn empty(scene: &Scene, plan: Plan, classical: Classical) -> SceneResult {
@@ -135,6 +175,9 @@ fn empty(scene: &Scene, plan: Plan, classical: Classical) -> SceneResult {
         snapshots: Vec::new(),
         history: None,
         t_s: None,
+        worst: None,
+        margins: None,
+        fit: None,
         nodes: None,
         runtime_ms: 0.0,
     }
@@ -249,15 +292,20 @@ fn run_duty_cycle(
     let Some(hoist) = &design.hoist else {
         return Err(err(Level4Error::NoHoist));
     };
-    let dynamics = level4::suspended_ropes(design, hoist, cycle).map_err(err)?;
-    let samples = level4::end_history(&dynamics);
-    let accel: Vec<f64> = dynamics.iter().map(|s| s.accel_m_s2).collect();
     let before = match cycle.direction {
         Direction::Lift => Direction::Lower,
         Direction::Lower => Direction::Lift,
     };
     let output =
         level2::Output { snapshots_s: &cycle.snapshots_s, step_s: Some(cycle.output_step_s), sample_rows: false };
+    if plan.level == 0 {
+        // The classical check: rigid ropes along the motion profile; no dynamics, no wrap.
+        let (samples, accel) = level4::rigid_ropes(design, hoist, cycle).map_err(err)?;
+        return run_samples(design, scene, &samples, Some(&accel), before, output, plan, options);
+    }
+    let dynamics = level4::suspended_ropes(design, hoist, cycle).map_err(err)?;
+    let samples = level4::end_history(&dynamics);
+    let accel: Vec<f64> = dynamics.iter().map(|s| s.accel_m_s2).collect();
     let mut result = run_samples(design, scene, &samples, Some(&accel), before, output, plan, options)?;
     if let Some(history) = &mut result.history {
         history.anchors_n = history.rows.iter().map(|r| level4::anchors_at(&dynamics, r.t_s)).collect();
@@ -307,6 +355,7 @@ fn run_samples(
     let classical = level0::over_history(design, &states);
     let mut result = empty(scene, plan, classical);
     result.t_s = samples.last().map(|s| s.t_s);
+    result.worst = level0::worst_instant(design, &states);
     if result.plan.level < 2 {
         return Ok(result);
     }
@@ -353,6 +402,20 @@ fn ensure_finite(r: &SceneResult) -> Result<(), RunError> {
     fields.extend(c.safety_factor.map(|v| ("safety_factor", v)));
     fields.extend(c.static_safety_factor.map(|v| ("static_safety_factor", v)));
     let distributions = r.wrap.iter().map(|w| &w.distribution).chain(&r.snapshots);
+    if let Some(m) = &r.margins {
+        let all = [
+            &m.critical_mu,
+            &m.payload_to_slip_kg,
+            &m.payload_to_min_safety_factor_kg,
+            &m.braking_to_slip_m_s2,
+            &m.braking_to_min_safety_factor_m_s2,
+        ];
+        fields.extend(all.iter().filter_map(|x| x.value).map(|v| ("margins", v)));
+    }
+    if let Some(f) = &r.fit {
+        fields.extend([("fit.active_arc_deg", f.active_arc_deg), ("fit.idle_tension_n", f.idle_tension_n)]);
+        fields.push(("fit.rms_residual_n", f.rms_residual_n));
+    }
     if let Some(w) = &r.wrap {
         fields.push(("max_utilization", w.summary.max_utilization));
     }

@@ -181,6 +181,21 @@ fn cases() -> Vec<Case> {
             expect: &["m1_kg", "not a key of a duty-cycle scene"],
         },
         Case {
+            label: "outputs: unknown keyword",
+            input: edit("m2_kg = 10000.0\n", "m2_kg = 10000.0\noutputs = [\"checks\", \"plots\"]\n"),
+            expect: &["scene[1].outputs", "\"plots\"", "unknown output", "\"distribution\""],
+        },
+        Case {
+            label: "outputs: history asked of a loads scene",
+            input: edit("m2_kg = 10000.0\n", "m2_kg = 10000.0\noutputs = [\"history\"]\n"),
+            expect: &["scene[1].outputs", "a loads scene cannot give \"history\""],
+        },
+        Case {
+            label: "outputs: empty list",
+            input: edit("m2_kg = 10000.0\n", "m2_kg = 10000.0\noutputs = []\n"),
+            expect: &["scene[1].outputs", "empty"],
+        },
+        Case {
             label: "duty-cycle: emergency stop without deceleration",
             input: Input::Text(format!("{}\n[[scene]]\nname = \"d\"\nkind = \"duty-cycle\"\npayload_kg = 1000.0\nemergency_stop_s = 2.0\n\n[hoist]\nconveyance1_kg = 5000.0\nconveyance2_kg = 6000.0\nside1_length_m = 300.0\nside2_length_m = 20.0\n[[hoist.stage]]\nduration_s = 5.0\naccel_m_s2 = 0.5\n[[hoist.stage]]\naccel_m_s2 = -0.5\nstep = true\nuntil_stop = true\n", VALID)),
             expect: &["emergency_decel_m_s2", "missing"],

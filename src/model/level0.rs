@@ -294,6 +294,18 @@ pub fn over_history(design: &Design, states: &[(f64, EndState)]) -> Classical {
     c
 }
 
+/// The instant of a history with the lowest safety factor, or, when no instant has one (T1 = T2
+/// throughout), the highest tension ratio.
+pub fn worst_instant(design: &Design, states: &[(f64, EndState)]) -> Option<(f64, EndState)> {
+    let limit = euler_limit(design.pulley.mu, design.pulley.wrap_angle_rad);
+    let by_sf = states
+        .iter()
+        .filter_map(|(t, s)| safety_factor(s, limit).map(|sf| (sf, *t, *s)))
+        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .map(|(_, t, s)| (t, s));
+    by_sf.or_else(|| states.iter().max_by(|a, b| a.1.tension_ratio().total_cmp(&b.1.tension_ratio())).copied())
+}
+
 fn safety_check(
     name: &'static str,
     formula: &'static str,

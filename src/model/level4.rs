@@ -104,6 +104,41 @@ pub fn suspended_ropes(design: &Design, hoist: &Hoist, scene: &DutyCycleScene) -
     Ok(dynamics::simulate_with(&params, &profile, &options)?)
 }
 
+/// The end tensions of the classical design check (level 0 of a duty cycle): rigid ropes, so
+/// everything hanging below each tangent point moves with the conveyance:
+///
+/// `T1 = T1s(x)·(g + a)/g`, `T2 = T2s(x)·(g − a)/g`, with `T1s, T2s` the static tensions at the
+/// travel x ([`dynamics::static_tensions_n`]: conveyance, payload, hoisting and tail ropes),
+///
+/// sampled along the motion profile every `output_step_s` and at its end. Returns the samples and
+/// the acceleration at each. No rope stretch, no oscillation: the level-4 tensions swing about
+/// these values with the ropes' first longitudinal mode.
+pub fn rigid_ropes(
+    design: &Design,
+    hoist: &Hoist,
+    scene: &DutyCycleScene,
+) -> Result<(Vec<HistorySample>, Vec<f64>), Level4Error> {
+    let params = hoist_params(design, hoist, scene);
+    let profile = motion_profile(hoist, scene)?;
+    let g = design.g_m_s2;
+    let steps = (profile.duration_s() / scene.output_step_s).ceil() as usize;
+    let mut samples = Vec::with_capacity(steps + 1);
+    let mut accel = Vec::with_capacity(steps + 1);
+    for i in 0..=steps {
+        let t_s = (i as f64 * scene.output_step_s).min(profile.duration_s());
+        let k = profile.at(t_s);
+        let (t1s, t2s) = dynamics::static_tensions_n(&params, k.x_m)?;
+        samples.push(HistorySample {
+            t_s,
+            t1_n: t1s * (g + k.accel_m_s2) / g,
+            t2_n: t2s * (g - k.accel_m_s2) / g,
+            speed_m_s: at_rest_snapped(k.speed_m_s),
+        });
+        accel.push(k.accel_m_s2);
+    }
+    Ok((samples, accel))
+}
+
 /// Speeds below 1 nm/s are round-off of a profile that has come to rest: exactly 0.
 fn at_rest_snapped(speed_m_s: f64) -> f64 {
     if speed_m_s.abs() < 1e-9 { 0.0 } else { speed_m_s }

@@ -1,6 +1,8 @@
 //! The scalar summary of a run, as written to summary.json and summary.csv (INTERFACE.md).
 
 use crate::design::{Design, Requirements};
+use crate::fit::CreepFit;
+use crate::margins::Margins;
 use crate::model::level0::Check;
 use crate::model::level2::StepStats;
 use crate::roots::RootStats;
@@ -43,12 +45,25 @@ pub struct SceneSummary {
     /// Extension (time scenes): the reported row with the lowest safety factor, and its time.
     pub worst_t_s: Option<f64>,
     pub worst_safety_factor: Option<f64>,
+    /// Extension (`margins`): extra side-1 payload (kg, all ropes) before gross slip, and before
+    /// the safety factor falls to its minimum; braking deceleration (m/s²) before gross slip and
+    /// before the dynamic safety factor falls to its minimum. Null when the search found no such
+    /// value (its verdict in summary.json says why).
+    pub payload_margin_kg: Option<f64>,
+    pub payload_margin_sf_kg: Option<f64>,
+    pub braking_margin_m_s2: Option<f64>,
+    pub braking_margin_sf_m_s2: Option<f64>,
+    /// Extension (`fit`): the creep-theory active arc fitted to the distribution, and the RMS
+    /// residual relative to the range of T over the wrap (0: exactly the classical picture).
+    pub fit_active_arc_deg: Option<f64>,
+    pub fit_rms_residual_rel: Option<f64>,
 }
 
 impl SceneSummary {
     pub fn of(r: &SceneResult) -> Self {
         let c = &r.classical;
         let w = r.wrap.as_ref().map(|w| &w.summary);
+        let m = r.margins.as_ref();
         let worst = r.history.as_ref().and_then(|h| {
             h.rows.iter().filter_map(|row| row.safety_factor.map(|sf| (row.t_s, sf))).min_by(|a, b| a.1.total_cmp(&b.1))
         });
@@ -84,6 +99,12 @@ impl SceneSummary {
             centrifugal_n: c.state.centrifugal_n,
             worst_t_s: worst.map(|w| w.0),
             worst_safety_factor: worst.map(|w| w.1),
+            payload_margin_kg: m.and_then(|m| m.payload_to_slip_kg.value),
+            payload_margin_sf_kg: m.and_then(|m| m.payload_to_min_safety_factor_kg.value),
+            braking_margin_m_s2: m.and_then(|m| m.braking_to_slip_m_s2.value),
+            braking_margin_sf_m_s2: m.and_then(|m| m.braking_to_min_safety_factor_m_s2.value),
+            fit_active_arc_deg: r.fit.as_ref().map(|f| f.active_arc_deg),
+            fit_rms_residual_rel: r.fit.as_ref().map(|f| f.rms_residual_rel),
         }
     }
 }
@@ -97,6 +118,10 @@ pub struct SceneJson {
     pub root_finding: Option<RootStats>,
     /// Increments, node events and clarabel verdicts of the discrete level.
     pub solver: Option<StepStats>,
+    /// Design margins with their verdicts and root-finding tallies (when asked for).
+    pub margins: Option<Margins>,
+    /// The creep-theory picture fitted to the reported distribution (when asked for).
+    pub fit: Option<CreepFit>,
 }
 
 /// The whole summary.json document.
@@ -129,6 +154,8 @@ impl Summary {
                     checks: s.classical.checks.clone(),
                     root_finding: s.wrap.as_ref().map(|w| w.summary.roots),
                     solver: s.history.as_ref().map(|h| h.stats),
+                    margins: s.margins.clone(),
+                    fit: s.fit.clone(),
                 })
                 .collect(),
         }

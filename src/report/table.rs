@@ -1,6 +1,7 @@
 //! The human report on the terminal: a table of scenes, then every check with its formula,
 //! inputs and intermediate values so that it can be redone by hand.
 
+use crate::margins::{Margin, Margins};
 use crate::model::level0::{Check, EndState, Relation};
 use crate::run::RunResult;
 use std::fmt::Write;
@@ -107,6 +108,16 @@ pub fn render(title: &str, sheet: &str, run: &RunResult, style: Style) -> String
         for check in &s.classical.checks {
             render_check(&mut out, check, style);
         }
+        if let Some(m) = &s.margins {
+            render_margins(&mut out, m);
+        }
+        if let Some(f) = &s.fit {
+            let _ = writeln!(
+                out,
+                "  creep-theory fit: active arc β = {:.3}° ({} friction, entry at {}), T_idle = {:.1} N, RMS residual {:.1} N = {:.2e} of the tension range",
+                f.active_arc_deg, f.friction, f.entry, f.idle_tension_n, f.rms_residual_n, f.rms_residual_rel
+            );
+        }
     }
     let _ = writeln!(
         out,
@@ -145,4 +156,37 @@ fn render_check(out: &mut String, check: &Check, style: Style) {
     };
     let _ = writeln!(out, "      inputs:  {}", fmt_q(&check.inputs));
     let _ = writeln!(out, "      values:  {}", fmt_q(&check.intermediates));
+}
+
+/// The margins of a scene, one line each with its rigid-rope formula.
+fn render_margins(out: &mut String, m: &Margins) {
+    let at = m.at_t_s.map_or_else(String::new, |t| format!(" (from the worst instant, t = {t} s)"));
+    let _ = writeln!(
+        out,
+        "  margins{at}, by Brent root finding; rigid ropes, m1 = T1·n/(g + a) = {:.1} kg, m2 = T2·n/(g − a) = {:.1} kg:",
+        m.m1_kg, m.m2_kg
+    );
+    let line = |out: &mut String, name: &str, formula: &str, margin: &Margin, unit: &str, digits: usize| {
+        let value = match margin.value {
+            Some(v) => format!("{v:.digits$} {unit}"),
+            None => margin.verdict.clone(),
+        };
+        let _ = writeln!(out, "    {name:<37} {formula:<44} {}", value.trim_end());
+    };
+    line(out, "critical μ (gross slip below it)", "ln(ratio) = μα", &m.critical_mu, "", 6);
+    let slip = "ratio = e^{μα}";
+    line(
+        out,
+        "extra side-1 payload x to gross slip",
+        &format!("T1 + x(g + a)/n: {slip}"),
+        &m.payload_to_slip_kg,
+        "kg",
+        1,
+    );
+    let x = &m.payload_to_min_safety_factor_kg;
+    line(out, "extra side-1 payload x to σ minimum", "T1 + x(g + a)/n: σ = σ_min", x, "kg", 1);
+    let d = &m.braking_to_slip_m_s2;
+    line(out, "braking deceleration d to gross slip", &format!("T1,2 = m1,2(g ∓ d)/n: {slip}"), d, "m/s²", 4);
+    let d = &m.braking_to_min_safety_factor_m_s2;
+    line(out, "braking deceleration d to σ_d minimum", "T1,2 = m1,2(g ∓ d)/n: σ = σ_d,min", d, "m/s²", 4);
 }

@@ -8,6 +8,7 @@
 mod diag;
 mod history;
 mod hoist;
+mod outputs;
 mod raw;
 mod validate;
 

@@ -59,6 +59,7 @@ pub struct RawScene {
     pub emergency_stop_s: Option<Spanned<f64>>,
     pub emergency_decel_m_s2: Option<Spanned<f64>>,
     pub time_step_s: Option<Spanned<f64>>,
+    pub outputs: Option<Spanned<Vec<Spanned<String>>>>,
 }
 
 #[derive(Debug, Deserialize)]

@@ -396,8 +396,9 @@ fn scenes(
                 None
             }
         };
-        match (name, kind) {
-            (Some(name), Some(kind)) => out.push(Scene { name, kind }),
+        let outputs = kind.as_ref().and_then(|k| super::outputs::outputs(c, at, &raw.outputs, k));
+        match (name, kind, outputs) {
+            (Some(name), Some(kind), Some(outputs)) => out.push(Scene { name, kind, outputs }),
             _ => all_ok = false,
         }
     }

@@ -1,0 +1,163 @@
+//! Creep-theory parameters fitted to a distribution (MODEL §8): how far the load history has
+//! taken the wrap from the classical picture of steady rolling.
+//!
+//! The classical picture (MODEL §4): an idle arc at the rope's entry with constant tension
+//! `T_idle` and no friction, then an active arc of length β reaching to the exit, in which
+//!
+//! `T(φ) − m'v² = (T_idle − m'v²)·e^{kφ}`, `k = ±μ`, φ = distance into the active arc.
+//!
+//! For a given β and sign of k the model is linear in `A = T_idle − m'v²`, so the best A is the
+//! linear least-squares value `A = Σ sᵢyᵢ / Σ sᵢ²` (`yᵢ = Tᵢ − m'v²`, `sᵢ` the shape above); the
+//! remaining one-dimensional problem, min over β of the squared residual, is solved by argmin's
+//! Brent minimizer on the bracket around the best of a 1° scan. Both signs of k (positive and
+//! reverse friction) are tried, and both entry sides when the rope is at rest.
+
+use argmin::core::{CostFunction, Error as ArgminError, Executor, State, TerminationReason};
+use argmin::solver::brent::BrentOpt;
+use serde::Serialize;
+
+use crate::wrap::Distribution;
+
+/// Iteration cap of the minimizer (it needs a few dozen at most on a 2° bracket).
+const MAX_ITERS: u64 = 200;
+
+/// The best creep-theory picture of a distribution.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct CreepFit {
+    /// Length of the fitted active (slip) arc β, degrees.
+    pub active_arc_deg: f64,
+    /// Fitted tension of the idle arc, N per rope.
+    pub idle_tension_n: f64,
+    /// Friction in the fitted active arc: "positive" or "reverse".
+    pub friction: &'static str,
+    /// Where the rope enters the wrap in the fitted picture: "side 1" (θ = 0) or "side 2".
+    pub entry: &'static str,
+    /// Root mean square of T − T_fit over the distribution's samples, N.
+    pub rms_residual_n: f64,
+    /// The same relative to the range of the tension over the wrap, max T − min T (or to T when
+    /// it is uniform): 0 is exactly the classical picture.
+    pub rms_residual_rel: f64,
+    pub iterations: u64,
+    /// argmin's termination reason.
+    pub termination: String,
+}
+
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum FitError {
+    #[error("fit of the creep-theory picture: {0}")]
+    Solver(String),
+    #[error("fit of the creep-theory picture: the distribution has fewer than 3 samples")]
+    TooFewSamples,
+}
+
+/// One orientation of the picture: entry side and the sign of k.
+#[derive(Clone, Copy)]
+struct Shape<'a> {
+    theta_rad: &'a [f64],
+    y_n: &'a [f64],
+    alpha_rad: f64,
+    k: f64,
+    entry_side1: bool,
+}
+
+impl Shape<'_> {
+    /// φ at θ for an active arc of length β (0 on the idle arc).
+    fn phi(&self, theta: f64, beta: f64) -> f64 {
+        let phi = if self.entry_side1 { theta - (self.alpha_rad - beta) } else { beta - theta };
+        phi.max(0.0)
+    }
+
+    /// Best A for this β and the squared residual.
+    fn solve(&self, beta: f64) -> (f64, f64) {
+        let (mut sy, mut ss) = (0.0, 0.0);
+        for (&t, &y) in self.theta_rad.iter().zip(self.y_n) {
+            let s = (self.k * self.phi(t, beta)).exp();
+            sy += s * y;
+            ss += s * s;
+        }
+        let a = sy / ss;
+        let r = self
+            .theta_rad
+            .iter()
+            .zip(self.y_n)
+            .map(|(&t, &y)| {
+                let d = y - a * (self.k * self.phi(t, beta)).exp();
+                d * d
+            })
+            .sum();
+        (a, r)
+    }
+}
+
+impl CostFunction for Shape<'_> {
+    type Param = f64;
+    type Output = f64;
+    fn cost(&self, beta: &f64) -> Result<f64, ArgminError> {
+        Ok(self.solve(*beta).1)
+    }
+}
+
+/// Fits the creep-theory picture to `d`. `centrifugal_n`: m'v² of its state; `entry_side1`:
+/// `Some(true)` when the rope runs side 1 → side 2, `Some(false)` the other way, `None` at rest
+/// (both tried).
+pub fn creep_fit(d: &Distribution, centrifugal_n: f64, entry_side1: Option<bool>) -> Result<CreepFit, FitError> {
+    if d.samples.len() < 3 {
+        return Err(FitError::TooFewSamples);
+    }
+    let theta_rad: Vec<f64> = d.samples.iter().map(|s| s.theta_deg.to_radians()).collect();
+    let y_n: Vec<f64> = d.samples.iter().map(|s| s.tension_n - centrifugal_n).collect();
+    let alpha_rad = d.wrap_angle_deg.to_radians();
+    let entries: &[bool] = match entry_side1 {
+        Some(true) => &[true],
+        Some(false) => &[false],
+        None => &[true, false],
+    };
+    // Coarse scan: every orientation, β on a 1° grid; keep the best.
+    let steps = (d.wrap_angle_deg.ceil() as usize).max(2);
+    let mut best: Option<(Shape, usize, f64)> = None;
+    for &entry_side1 in entries {
+        for k in [-d.mu, d.mu] {
+            let shape = Shape { theta_rad: &theta_rad, y_n: &y_n, alpha_rad, k, entry_side1 };
+            for i in 0..=steps {
+                let r = shape.solve(alpha_rad * i as f64 / steps as f64).1;
+                if best.as_ref().is_none_or(|b| r < b.2) {
+                    best = Some((shape, i, r));
+                }
+            }
+        }
+    }
+    let Some((shape, i, _)) = best else { return Err(FitError::TooFewSamples) };
+    let grid = |j: usize| alpha_rad * j as f64 / steps as f64;
+    let (lo, hi) = (grid(i.saturating_sub(1)), grid((i + 1).min(steps)));
+    let result = Executor::new(shape, BrentOpt::new(lo, hi).set_tolerance(f64::EPSILON.sqrt(), 1e-12))
+        .configure(|s| s.max_iters(MAX_ITERS))
+        .timer(false)
+        .run()
+        .map_err(|e| FitError::Solver(e.to_string()))?;
+    let state = result.state();
+    let iterations = state.get_iter();
+    let beta = match state.get_termination_reason() {
+        Some(TerminationReason::SolverConverged) => state.get_best_param().copied().unwrap_or(f64::NAN),
+        Some(reason) => return Err(FitError::Solver(format!("did not converge: {}", reason.text()))),
+        None => return Err(FitError::Solver("no termination reason".into())),
+    };
+    let (a, r) = shape.solve(beta);
+    let rms = (r / y_n.len() as f64).sqrt();
+    let (lo, hi) = d
+        .samples
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), s| (lo.min(s.tension_n), hi.max(s.tension_n)));
+    let scale = if hi > lo { hi - lo } else { hi.abs().max(f64::MIN_POSITIVE) };
+    // T decreasing along +θ is positive friction (dT/dθ = −q): entering at side 1 that is k < 0.
+    let positive = (shape.k < 0.0) == shape.entry_side1;
+    Ok(CreepFit {
+        active_arc_deg: beta.to_degrees(),
+        idle_tension_n: a + centrifugal_n,
+        friction: if positive { "positive" } else { "reverse" },
+        entry: if shape.entry_side1 { "side 1" } else { "side 2" },
+        rms_residual_n: rms,
+        rms_residual_rel: rms / scale,
+        iterations,
+        termination: TerminationReason::SolverConverged.text().to_string(),
+    })
+}
