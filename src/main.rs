@@ -109,7 +109,8 @@ fn main() -> ExitCode {
         Ok(true) => ExitCode::SUCCESS,
         Ok(false) => ExitCode::from(2),
         Err(e) => {
-            eprintln!("error: {e:#}");
+            // Every error type here already prints its cause in its own message.
+            eprintln!("error: {e}");
             ExitCode::from(1)
         }
     }

@@ -55,12 +55,17 @@ pub struct Margins {
     pub payload_to_min_safety_factor_kg: Margin,
     pub braking_to_slip_m_s2: Margin,
     pub braking_to_min_safety_factor_m_s2: Margin,
+    /// Duty cycles with an emergency stop: the largest emergency deceleration before gross slip,
+    /// and before the dynamic safety factor falls to its minimum, with the ropes' dynamics (each
+    /// trial runs the whole scene's suspended ropes with that deceleration).
+    pub emergency_braking_to_slip_m_s2: Option<Margin>,
+    pub emergency_braking_to_min_safety_factor_m_s2: Option<Margin>,
     /// Calls and iterations of argmin's Brent method.
     pub root_finding: RootStats,
 }
 
 /// Largest x in [lo, hi] from which the criterion `h` (≥ 0: holds) still holds, as the root of h.
-fn largest_holding(h: impl Fn(f64) -> f64, lo: f64, hi: f64, stats: &mut RootStats) -> Margin {
+pub fn largest_holding(h: impl Fn(f64) -> f64, lo: f64, hi: f64, stats: &mut RootStats) -> Margin {
     let searched = [lo, hi];
     let verdict = |v: &str| Margin { value: None, verdict: v.to_string(), searched };
     let (h_lo, h_hi) = (h(lo), h(hi));
@@ -80,11 +85,13 @@ fn largest_holding(h: impl Fn(f64) -> f64, lo: f64, hi: f64, stats: &mut RootSta
     }
 }
 
-fn slip_residual(s: &EndState, limit: f64) -> f64 {
+/// `(T_lo − c)·E − (T_hi − c)`: ≥ 0 while the state does not slip grossly.
+pub fn slip_residual(s: &EndState, limit: f64) -> f64 {
     (s.t_lo_n() - s.centrifugal_n) * limit - (s.t_hi_n() - s.centrifugal_n)
 }
 
-fn sf_residual(s: &EndState, limit: f64, sf_min: f64) -> f64 {
+/// `(T_lo − c)(E − 1) − σ_min (T_hi − T_lo)`: ≥ 0 while the safety factor is at least σ_min.
+pub fn sf_residual(s: &EndState, limit: f64, sf_min: f64) -> f64 {
     (s.t_lo_n() - s.centrifugal_n) * (limit - 1.0) - sf_min * (s.t_hi_n() - s.t_lo_n())
 }
 
@@ -155,6 +162,8 @@ pub fn of(design: &Design, state: &EndState, at_t_s: Option<f64>) -> Margins {
         payload_to_min_safety_factor_kg,
         braking_to_slip_m_s2,
         braking_to_min_safety_factor_m_s2,
+        emergency_braking_to_slip_m_s2: None,
+        emergency_braking_to_min_safety_factor_m_s2: None,
         root_finding: stats,
     }
 }

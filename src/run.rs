@@ -147,7 +147,15 @@ fn derive_answers(design: &Design, scene: &Scene, result: &mut SceneResult) -> R
             Some((t, s)) => (Some(t), s),
             None => (None, result.classical.state),
         };
-        result.margins = Some(margins::of(design, &state, at_t_s));
+        let mut m = margins::of(design, &state, at_t_s);
+        // An emergency stop with the ropes' dynamics (level 4): each trial runs the ropes.
+        if let (SceneKind::DutyCycle(cycle), Some(hoist), 4) = (&scene.kind, &design.hoist, result.plan.level)
+            && let Some((slip, sf)) = level4::emergency_margins(design, hoist, cycle, &mut m.root_finding)
+        {
+            m.emergency_braking_to_slip_m_s2 = Some(slip);
+            m.emergency_braking_to_min_safety_factor_m_s2 = Some(sf);
+        }
+        result.margins = Some(m);
     }
     if scene.outputs.contains(Output::Fit)
         && let Some(wrap) = &result.wrap

@@ -166,3 +166,26 @@ fn anchor_tensions_match_the_papers_ranges_and_trends() {
     assert!(mean(20.0, 25.0, &|s| s.t1_n) < mean(37.0, 42.0, &|s| s.t1_n), "lifting side rises at the pulley too");
     assert!(mean(20.0, 25.0, &|s| s.anchor2_n) > mean(37.0, 42.0, &|s| s.anchor2_n), "lowering side falls");
 }
+
+/// The emergency-braking margin found by root finding over the ropes' dynamics is the edge of
+/// gross slip: the same stop 0.5 % gentler holds and 0.5 % harder slips (Brent converges to
+/// ~1e-12 m/s², far inside that band, and the worst ratio grows smoothly with the deceleration).
+/// It lies between the sheet's 1.5 m/s², which holds, and 3 m/s², which slips (its comment).
+#[test]
+fn emergency_braking_margin_is_the_edge_of_gross_slip() {
+    let d = design();
+    let r = run_scenes(&d, &["emergency-MID"]);
+    let m = r[0].margins.as_ref().expect("margins are a default output");
+    let edge = m.emergency_braking_to_slip_m_s2.as_ref().expect("an emergency stop").value.expect("found");
+    assert!(edge > 1.5 && edge < 3.0, "{edge}");
+    let sf_edge = m.emergency_braking_to_min_safety_factor_m_s2.as_ref().unwrap().value.expect("found");
+    assert!(sf_edge < edge, "the σ_d minimum is reached at a gentler stop: {sf_edge} vs {edge}");
+    for (factor, slips) in [(0.995, false), (1.005, true)] {
+        let mut trial = d.clone();
+        let scene = trial.scenes.iter_mut().find(|s| s.name == "emergency-MID").unwrap();
+        let SceneKind::DutyCycle(cycle) = &mut scene.kind else { panic!("a duty cycle") };
+        cycle.emergency.as_mut().unwrap().decel_m_s2 = edge * factor;
+        let r = run_scenes(&trial, &["emergency-MID"]);
+        assert_eq!(r[0].classical.gross_slip, slips, "deceleration {} m/s²", edge * factor);
+    }
+}

@@ -8,8 +8,11 @@
 //! 1e-3, far below what moves their tensions. The wrap therefore does not feed back into the
 //! suspended ropes, and each side's tension is what its rope column pulls with.
 
-use crate::design::{Design, Direction, DutyCycleScene, HistorySample, Hoist};
+use crate::design::{Design, Direction, DutyCycleScene, EmergencyStop, HistorySample, Hoist};
 use crate::dynamics::{self, DynSample, DynamicsError, HoistParams, MotionProfile, SimOptions, Stage};
+use crate::margins::{self, Margin};
+use crate::model::level0::{EndState, euler_limit};
+use crate::roots::RootStats;
 
 /// Finite elements per side of the suspended ropes (the first mode converges to well under 1 %
 /// with far fewer; more elements resolve the higher modes a jerk excites).
@@ -164,4 +167,50 @@ pub fn anchors_at(samples: &[DynSample], t_s: f64) -> [f64; 2] {
         (Some(s), _) | (None, Some(s)) => [s.anchor1_n, s.anchor2_n],
         (None, None) => [f64::NAN, f64::NAN],
     }
+}
+
+/// The largest emergency deceleration of a duty-cycle scene with an emergency stop before gross
+/// slip, and before the dynamic safety factor falls to `dynamic_safety_factor_min`, with the
+/// ropes' dynamics: each trial deceleration d runs the scene's suspended ropes
+/// ([`suspended_ropes`]) and takes the worst sample of the run,
+///
+/// `h_slip(d) = min_t [(T_lo − m'v²)·e^{μα} − (T_hi − m'v²)]`, `h_σ(d) = min_t [(T_lo − m'v²)(e^{μα} − 1) − σ_min(T_hi − T_lo)]`,
+///
+/// whose roots in d (Brent, on [d₀/2, 0.999 g], d₀ the scene's own deceleration: a much gentler
+/// brake would run the conveyance past the end of the shaft) are the margins. `None` for a scene without
+/// an emergency stop. A trial that cannot run (e.g. a hanging length reaching 0 during a long
+/// stop) is a failure of that margin's search, reported as its verdict.
+pub fn emergency_margins(
+    design: &Design,
+    hoist: &Hoist,
+    scene: &DutyCycleScene,
+    stats: &mut RootStats,
+) -> Option<(Margin, Margin)> {
+    let stop = scene.emergency?;
+    let limit = euler_limit(design.pulley.mu, design.pulley.wrap_angle_rad);
+    let m_v2 = design.rope.mass_per_m_kg;
+    let worst = |d: f64, residual: &dyn Fn(&EndState) -> f64| -> f64 {
+        let trial = DutyCycleScene { emergency: Some(EmergencyStop { decel_m_s2: d, ..stop }), ..scene.clone() };
+        match suspended_ropes(design, hoist, &trial) {
+            Ok(samples) => samples
+                .iter()
+                .map(|s| {
+                    let state = EndState {
+                        t1_n: s.t1_n,
+                        t2_n: s.t2_n,
+                        speed_m_s: s.speed_m_s,
+                        accel_m_s2: s.accel_m_s2,
+                        centrifugal_n: m_v2 * s.speed_m_s * s.speed_m_s,
+                    };
+                    residual(&state)
+                })
+                .fold(f64::INFINITY, f64::min),
+            Err(_) => f64::NAN,
+        }
+    };
+    let (lo, hi) = (0.5 * stop.decel_m_s2, 0.999 * design.g_m_s2);
+    let slip = margins::largest_holding(|d| worst(d, &|s| margins::slip_residual(s, limit)), lo, hi, stats);
+    let sf_min = design.requirements.dynamic_safety_factor_min;
+    let sf = margins::largest_holding(|d| worst(d, &|s| margins::sf_residual(s, limit, sf_min)), lo, hi, stats);
+    Some((slip, sf))
 }

@@ -189,4 +189,10 @@ fn render_margins(out: &mut String, m: &Margins) {
     line(out, "braking deceleration d to gross slip", &format!("T1,2 = m1,2(g ∓ d)/n: {slip}"), d, "m/s²", 4);
     let d = &m.braking_to_min_safety_factor_m_s2;
     line(out, "braking deceleration d to σ_d minimum", "T1,2 = m1,2(g ∓ d)/n: σ = σ_d,min", d, "m/s²", 4);
+    if let Some(d) = &m.emergency_braking_to_slip_m_s2 {
+        line(out, "emergency stop d to gross slip", "rope dynamics, worst instant: ratio = e^{μα}", d, "m/s²", 4);
+    }
+    if let Some(d) = &m.emergency_braking_to_min_safety_factor_m_s2 {
+        line(out, "emergency stop d to σ_d minimum", "rope dynamics, worst instant: σ = σ_d,min", d, "m/s²", 4);
+    }
 }
