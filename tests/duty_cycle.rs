@@ -189,3 +189,28 @@ fn emergency_braking_margin_is_the_edge_of_gross_slip() {
         assert_eq!(r[0].classical.gross_slip, slips, "deceleration {} m/s²", edge * factor);
     }
 }
+
+/// Level 0 of a duty cycle is the classical check on rigid ropes. At t = 10 s of the MID lift
+/// (constant 0.6 m/s² after the 1.71 s jerk-up ramp): x = 0.1·1.71² + 0.513·8.29 + 0.3·8.29²
+/// = 0.29241 + 4.25277 + 20.61723 = 25.16241 m, and everything below each tangent point moves
+/// with its conveyance:
+///   T1 = (95 000 + 64.86·(463.56 − x) + 69·(28.25 + x))·(9.81 + 0.6)/6,
+///   T2 = (95 000 + 64.86·(51.34 + x) + 69·(453.25 − x))·(9.81 − 0.6)/6.
+/// Same within 1e-9 relative (the profile is evaluated in closed form, no integration).
+#[test]
+fn level0_duty_cycle_is_the_rigid_rope_check() {
+    let d = design();
+    let SceneKind::DutyCycle(cycle) = &d.scenes.iter().find(|s| s.name == "duty-MID").unwrap().kind else {
+        panic!("duty-MID is a duty cycle")
+    };
+    let hoist = d.hoist.as_ref().unwrap();
+    let (samples, accel) = wrapcalc::model::level4::rigid_ropes(&d, hoist, cycle).expect("runs");
+    let i = samples.iter().position(|s| (s.t_s - 10.0).abs() < 1e-9).expect("a sample at 10 s");
+    let x = 0.1 * 1.71 * 1.71 + 0.513 * 8.29 + 0.3 * 8.29 * 8.29;
+    let t1 = (95_000.0 + 64.86 * (463.56 - x) + 69.0 * (28.25 + x)) * (9.81 + 0.6) / 6.0;
+    let t2 = (95_000.0 + 64.86 * (51.34 + x) + 69.0 * (453.25 - x)) * (9.81 - 0.6) / 6.0;
+    assert!((accel[i] - 0.6).abs() < 1e-12);
+    assert!(((samples[i].t1_n - t1) / t1).abs() < 1e-9, "T1 {} vs {t1}", samples[i].t1_n);
+    assert!(((samples[i].t2_n - t2) / t2).abs() < 1e-9, "T2 {} vs {t2}", samples[i].t2_n);
+    assert!((samples[i].speed_m_s - (0.513 + 0.6 * 8.29)).abs() < 1e-9);
+}
