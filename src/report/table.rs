@@ -80,8 +80,9 @@ pub fn render(title: &str, sheet: &str, run: &RunResult, style: Style) -> String
             c.euler_limit,
             factor(c.safety_factor),
             factor(c.static_safety_factor),
-            // Time scenes report their worst instant in motion; a loads scene its own acceleration.
-            if c.state.accel_m_s2 != 0.0 || s.history.is_some() {
+            // Where there is a dynamic check: a loads scene at its own acceleration, a time scene
+            // at its worst instant in motion.
+            if c.checks.iter().any(|k| k.name == "dynamic safety factor") {
                 factor(c.dynamic_safety_factor)
             } else {
                 "—".into()
