@@ -426,3 +426,38 @@ fn mid_lifting_cycle_tensions_are_physically_sensible() {
     assert!(rel(last.t1_n, 205_427.0) < 0.05, "T1 at the end {}", last.t1_n);
     assert!(last.dissipated_j > 0.0);
 }
+
+/// A run continued from a checkpoint is the same run: emergency stops of the reference hoist
+/// setting in at 30 s with 1.5 and 2 m/s² share the motion before the brake, so the 2 m/s² stop
+/// resumed from the 1.5 m/s² run's checkpoint (the last step before 30 s) gives bit-identical
+/// samples to integrating it from the start.
+#[test]
+fn resumed_run_equals_the_full_run() {
+    use wrapcalc::design::{EmergencyStop, SceneKind};
+    use wrapcalc::dynamics::simulate_resumable;
+    use wrapcalc::model::level4::{hoist_params, motion_profile};
+    let d = wrapcalc::sheet::load(std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/tables/guo2020.toml")))
+        .expect("bundled sheet");
+    let SceneKind::DutyCycle(scene) = &d.scenes.iter().find(|s| s.name == "emergency-MID").unwrap().kind else {
+        panic!("a duty cycle")
+    };
+    let hoist = d.hoist.as_ref().unwrap();
+    let p = hoist_params(&d, hoist, scene);
+    let opt = SimOptions { record_every: 5, ..SimOptions::new(1e-3, 24) };
+    let stop = scene.emergency.expect("an emergency stop");
+    let (_, cp) = simulate_resumable(&p, &motion_profile(hoist, scene).unwrap(), &opt, None, Some(stop.at_s)).unwrap();
+    let cp = cp.expect("a checkpoint");
+    assert!(cp.t_s() < stop.at_s && cp.t_s() > stop.at_s - 2e-3, "{}", cp.t_s());
+    let trial = wrapcalc::design::DutyCycleScene {
+        emergency: Some(EmergencyStop { decel_m_s2: 2.0, ..stop }),
+        ..scene.clone()
+    };
+    let profile = motion_profile(hoist, &trial).unwrap();
+    let (full, _) = simulate_resumable(&p, &profile, &opt, None, None).unwrap();
+    let (resumed, _) = simulate_resumable(&p, &profile, &opt, Some(&cp), None).unwrap();
+    assert_eq!(resumed[0].t_s, cp.t_s());
+    let tail: Vec<_> = full.iter().filter(|s| s.t_s > cp.t_s()).collect();
+    let resumed_tail: Vec<_> = resumed.iter().filter(|s| s.t_s > cp.t_s()).collect();
+    assert!(tail.len() > 100);
+    assert_eq!(tail, resumed_tail);
+}

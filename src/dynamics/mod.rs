@@ -57,7 +57,7 @@ mod rope;
 mod simulate;
 
 pub use profile::{Kinematics, MotionProfile, Stage};
-pub use simulate::{DynSample, SimOptions, simulate, simulate_with};
+pub use simulate::{Checkpoint, DynSample, SimOptions, simulate, simulate_resumable, simulate_with};
 
 use serde::{Deserialize, Serialize};
 

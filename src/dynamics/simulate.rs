@@ -75,10 +75,33 @@ pub fn simulate(
     simulate_with(p, profile, &SimOptions::new(dt_s, elements))
 }
 
+#[derive(Debug, Clone)]
 struct Side2 {
     side: Side,
     state: SideState,
     coeffs: Coeffs,
+}
+
+/// The integrator's state after one step of a run. A run over a profile that agrees with the
+/// first one up to that instant (the same stages, time step and mesh: e.g. emergency stops
+/// setting in at the same time with different decelerations) continues from it instead of
+/// integrating that stretch again; the result is the same to the last bit.
+#[derive(Debug, Clone)]
+pub struct Checkpoint {
+    step: usize,
+    t_s: f64,
+    dt_s: f64,
+    elements: usize,
+    sides: Vec<Side2>,
+    work_j: f64,
+    dissipated_j: f64,
+}
+
+impl Checkpoint {
+    /// Time of the step it was taken at, s.
+    pub fn t_s(&self) -> f64 {
+        self.t_s
+    }
 }
 
 /// Coefficients of a side at time `t_s` for the kinematics `x_m`, `accel_m_s2`.
@@ -102,6 +125,19 @@ pub fn simulate_with(
     profile: &MotionProfile,
     opt: &SimOptions,
 ) -> Result<Vec<DynSample>, DynamicsError> {
+    simulate_resumable(p, profile, opt, None, None).map(|(samples, _)| samples)
+}
+
+/// [`simulate_with`], starting from `from` (a checkpoint of a run with the same time step and
+/// mesh whose profile agrees with `profile` up to the checkpoint; the samples then start at the
+/// checkpoint's instant) and keeping a checkpoint at the last step strictly before `keep_at_s`.
+pub fn simulate_resumable(
+    p: &HoistParams,
+    profile: &MotionProfile,
+    opt: &SimOptions,
+    from: Option<&Checkpoint>,
+    keep_at_s: Option<f64>,
+) -> Result<(Vec<DynSample>, Option<Checkpoint>), DynamicsError> {
     p.validate()?;
     let dt = opt.dt_s;
     if !(dt.is_finite() && dt > 0.0) {
@@ -130,7 +166,7 @@ pub fn simulate_with(
     let every = opt.record_every.max(1);
 
     let k0 = profile.at(0.0);
-    let mut sides = Vec::with_capacity(2);
+    let mut sides: Vec<Side2> = Vec::with_capacity(2);
     for (k, side) in Side::BOTH.into_iter().enumerate() {
         // equilibrium under the loads at rest, then the loads of t = 0 (a step stage may start
         // with a non-zero acceleration)
@@ -158,11 +194,38 @@ pub fn simulate_with(
         dissipated_j,
     };
 
-    let mut out = Vec::with_capacity(steps / every + 2);
-    out.push(sample(0.0, k0, &sides, 0.0, 0.0));
     let (mut work_j, mut dissipated_j) = (0.0, 0.0);
-    let mut t_prev = 0.0;
-    for step in 1..=steps {
+    let (mut t_prev, mut first_step) = (0.0, 1);
+    if let Some(cp) = from.filter(|cp| cp.dt_s == dt && cp.elements == n && cp.step < steps) {
+        sides = cp.sides.clone();
+        (work_j, dissipated_j, t_prev, first_step) = (cp.work_j, cp.dissipated_j, cp.t_s, cp.step + 1);
+    }
+    let mut out = Vec::with_capacity((steps + 1 - first_step) / every + 2);
+    out.push(sample(t_prev, profile.at(t_prev), &sides, work_j, dissipated_j));
+    // The step a checkpoint is kept at: the last one strictly before `keep_at_s` (at that instant
+    // a stage that steps in may already act).
+    let keep_step = keep_at_s.filter(|t| t.is_finite() && *t > 0.0 && *t < total_s).map(|t| {
+        let mut k = ((t / dt).ceil() as usize).saturating_sub(1);
+        while k > 0 && k as f64 * dt >= t {
+            k -= 1;
+        }
+        while ((k + 1) as f64 * dt) < t {
+            k += 1;
+        }
+        k
+    });
+    let checkpoint = |step: usize, t_s: f64, sides: &[Side2], work_j: f64, dissipated_j: f64| Checkpoint {
+        step,
+        t_s,
+        dt_s: dt,
+        elements: n,
+        sides: sides.to_vec(),
+        work_j,
+        dissipated_j,
+    };
+    let mut kept =
+        (keep_step == Some(first_step - 1)).then(|| checkpoint(first_step - 1, t_prev, &sides, work_j, dissipated_j));
+    for step in first_step..=steps {
         let t = if step == steps { total_s } else { (step as f64 * dt).min(total_s) };
         let h = t - t_prev;
         if h <= 0.0 {
@@ -183,6 +246,9 @@ pub fn simulate_with(
         if step % every == 0 || step == steps {
             out.push(sample(t, kin, &sides, work_j, dissipated_j));
         }
+        if keep_step == Some(step) {
+            kept = Some(checkpoint(step, t, &sides, work_j, dissipated_j));
+        }
     }
-    Ok(out)
+    Ok((out, kept))
 }

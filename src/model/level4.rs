@@ -9,7 +9,7 @@
 //! suspended ropes, and each side's tension is what its rope column pulls with.
 
 use crate::design::{Design, Direction, DutyCycleScene, EmergencyStop, HistorySample, Hoist};
-use crate::dynamics::{self, DynSample, DynamicsError, HoistParams, MotionProfile, SimOptions, Stage};
+use crate::dynamics::{self, Checkpoint, DynSample, DynamicsError, HoistParams, MotionProfile, SimOptions, Stage};
 use crate::margins::{self, Margin};
 use crate::model::level0::{EndState, euler_limit};
 use crate::roots::RootStats;
@@ -98,13 +98,25 @@ pub fn motion_profile(hoist: &Hoist, scene: &DutyCycleScene) -> Result<MotionPro
     Ok(MotionProfile::new(&cut)?)
 }
 
-/// Runs the suspended ropes through the scene and returns their samples (one per `time_step_s`).
+/// Runs the suspended ropes through the scene and returns their samples (one every
+/// [`WRAP_SAMPLE_S`]).
 pub fn suspended_ropes(design: &Design, hoist: &Hoist, scene: &DutyCycleScene) -> Result<Vec<DynSample>, Level4Error> {
+    Ok(resumable_ropes(design, hoist, scene, None, None)?.0)
+}
+
+/// [`suspended_ropes`] from a checkpoint and/or keeping one ([`dynamics::simulate_resumable`]).
+fn resumable_ropes(
+    design: &Design,
+    hoist: &Hoist,
+    scene: &DutyCycleScene,
+    from: Option<&Checkpoint>,
+    keep_at_s: Option<f64>,
+) -> Result<(Vec<DynSample>, Option<Checkpoint>), Level4Error> {
     let params = hoist_params(design, hoist, scene);
     let profile = motion_profile(hoist, scene)?;
     let record_every = ((WRAP_SAMPLE_S / scene.time_step_s).round() as usize).max(1);
     let options = SimOptions { record_every, ..SimOptions::new(scene.time_step_s, ELEMENTS_PER_SIDE) };
-    Ok(dynamics::simulate_with(&params, &profile, &options)?)
+    Ok(dynamics::simulate_resumable(&params, &profile, &options, from, keep_at_s)?)
 }
 
 /// The end tensions of the classical design check (level 0 of a duty cycle): rigid ropes, so
@@ -189,28 +201,34 @@ pub fn emergency_margins(
     let stop = scene.emergency?;
     let limit = euler_limit(design.pulley.mu, design.pulley.wrap_angle_rad);
     let m_v2 = design.rope.mass_per_m_kg;
-    let worst = |d: f64, residual: &dyn Fn(&EndState) -> f64| -> f64 {
+    let state = |s: &DynSample| EndState {
+        t1_n: s.t1_n,
+        t2_n: s.t2_n,
+        speed_m_s: s.speed_m_s,
+        accel_m_s2: s.accel_m_s2,
+        centrifugal_n: m_v2 * s.speed_m_s * s.speed_m_s,
+    };
+    let slip = |s: &EndState| margins::slip_residual(s, limit);
+    let sf_min = design.requirements.dynamic_safety_factor_min;
+    let sf = |s: &EndState| margins::sf_residual(s, limit, sf_min);
+    // The motion before the brake sets in is the same for every trial: integrated once.
+    let (before, checkpoint) = match resumable_ropes(design, hoist, scene, None, Some(stop.at_s)) {
+        Ok((samples, Some(cp))) => (samples, cp),
+        _ => return None,
+    };
+    let worst_before = |residual: &dyn Fn(&EndState) -> f64| {
+        before.iter().filter(|s| s.t_s <= checkpoint.t_s()).map(|s| residual(&state(s))).fold(f64::INFINITY, f64::min)
+    };
+    let (slip_before, sf_before) = (worst_before(&slip), worst_before(&sf));
+    let worst = |d: f64, residual: &dyn Fn(&EndState) -> f64, before: f64| -> f64 {
         let trial = DutyCycleScene { emergency: Some(EmergencyStop { decel_m_s2: d, ..stop }), ..scene.clone() };
-        match suspended_ropes(design, hoist, &trial) {
-            Ok(samples) => samples
-                .iter()
-                .map(|s| {
-                    let state = EndState {
-                        t1_n: s.t1_n,
-                        t2_n: s.t2_n,
-                        speed_m_s: s.speed_m_s,
-                        accel_m_s2: s.accel_m_s2,
-                        centrifugal_n: m_v2 * s.speed_m_s * s.speed_m_s,
-                    };
-                    residual(&state)
-                })
-                .fold(f64::INFINITY, f64::min),
+        match resumable_ropes(design, hoist, &trial, Some(&checkpoint), None) {
+            Ok((samples, _)) => samples.iter().map(|s| residual(&state(s))).fold(before, f64::min),
             Err(_) => f64::NAN,
         }
     };
     let (lo, hi) = (0.5 * stop.decel_m_s2, 0.999 * design.g_m_s2);
-    let slip = margins::largest_holding(|d| worst(d, &|s| margins::slip_residual(s, limit)), lo, hi, stats);
-    let sf_min = design.requirements.dynamic_safety_factor_min;
-    let sf = margins::largest_holding(|d| worst(d, &|s| margins::sf_residual(s, limit, sf_min)), lo, hi, stats);
-    Some((slip, sf))
+    let to_slip = margins::largest_holding(|d| worst(d, &slip, slip_before), lo, hi, stats);
+    let to_sf = margins::largest_holding(|d| worst(d, &sf, sf_before), lo, hi, stats);
+    Some((to_slip, to_sf))
 }
