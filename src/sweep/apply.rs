@@ -15,8 +15,10 @@ pub struct Template {
     /// The sheet's file name (messages, and the base of relative `csv` paths).
     file: String,
     doc: Table,
-    /// The scenes `scene.KEY` applies to, by name (all scenes of the sheet when none selected).
+    /// The selected scenes (all scenes of the sheet when none selected), by name, in sheet order.
     scenes: Vec<String>,
+    /// Their kinds, which decide the `scene.KEY` they take.
+    kinds: Vec<&'static str>,
 }
 
 impl Template {
@@ -36,8 +38,13 @@ impl Template {
             sheet: file.to_string(),
             message: e.message().to_string(),
         })?;
-        let selected = design.scenes.iter().map(|s| s.name.clone()).filter(|n| scenes.is_empty() || scenes.contains(n));
-        Ok(Self { file: file.to_string(), doc, scenes: selected.collect() })
+        let selected: Vec<_> = design.scenes.iter().filter(|s| scenes.is_empty() || scenes.contains(&s.name)).collect();
+        Ok(Self {
+            file: file.to_string(),
+            doc,
+            scenes: selected.iter().map(|s| s.name.clone()).collect(),
+            kinds: selected.iter().map(|s| s.kind.name()).collect(),
+        })
     }
 
     /// The selected scene names, in sheet order.
@@ -46,9 +53,21 @@ impl Template {
     }
 
     /// Checks that every varied key has a place in this sheet: a `hoist.*` or
-    /// `pulley.guide.*` key needs that section (the sweep would otherwise write a partial one).
+    /// `pulley.guide.*` key needs that section (the sweep would otherwise write a partial one),
+    /// a `scene.KEY` a selected scene of a kind that has it.
     pub fn check_keys(&self, varies: &[Vary]) -> Result<(), SweepError> {
         for v in varies {
+            if v.key.starts_with("scene.") && !self.kinds.iter().any(|k| v.kinds.contains(k)) {
+                return Err(SweepError::Scene {
+                    sheet: self.file.clone(),
+                    message: format!(
+                        "--vary {}: no selected scene has this key (it belongs to {} scenes; selected: {})",
+                        v.key,
+                        v.kinds.join(", "),
+                        self.scenes.join(", ")
+                    ),
+                });
+            }
             for section in ["hoist", "pulley.guide"] {
                 if v.key.strip_prefix(section).is_some_and(|rest| rest.starts_with('.'))
                     && table_at(&self.doc, section).is_none()
@@ -77,11 +96,13 @@ impl Template {
                 Some(key) => {
                     let scenes = doc.get_mut("scene").and_then(Value::as_array_mut).into_iter().flatten();
                     for scene in scenes.filter_map(Value::as_table_mut) {
-                        let selected = scene
-                            .get("name")
-                            .and_then(Value::as_str)
-                            .is_some_and(|n| self.scenes.iter().any(|s| s == n));
-                        if selected {
+                        let name = scene.get("name").and_then(Value::as_str);
+                        let takes_key = self
+                            .scenes
+                            .iter()
+                            .zip(&self.kinds)
+                            .any(|(s, kind)| name == Some(s.as_str()) && v.kinds.contains(kind));
+                        if takes_key {
                             scene.insert(key.to_string(), value.clone());
                         }
                     }

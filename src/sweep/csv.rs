@@ -179,7 +179,7 @@ fn keys_of(head: &[&str]) -> Option<Vec<String>> {
     let n = head.len().checked_sub(LEAD.len() + SCENE.len() + RESULT_COLUMNS.len())?;
     let keys: Vec<String> = head[LEAD.len()..LEAD.len() + n].iter().map(|k| k.to_string()).collect();
     let valid = (1..=super::grid::MAX_KEYS).contains(&n)
-        && keys.iter().all(|k| KEYS.iter().any(|(known, _)| known == k))
+        && keys.iter().all(|k| KEYS.iter().any(|(known, ..)| known == k))
         && header(&keys) == head;
     valid.then_some(keys)
 }

@@ -16,41 +16,46 @@ pub enum KeyType {
     Integer,
 }
 
-/// The numeric keys a sweep can vary, by dotted path. `scene.KEY` sets the key in every selected
-/// scene. Each is validated by the sheet's own rules at every point.
-pub const KEYS: &[(&str, KeyType)] = &[
-    ("g_m_s2", KeyType::Float),
-    ("pulley.diameter_m", KeyType::Float),
-    ("pulley.mu", KeyType::Float),
-    ("pulley.wrap_angle_deg", KeyType::Float),
-    ("pulley.guide.diameter_m", KeyType::Float),
-    ("pulley.guide.vertical_m", KeyType::Float),
-    ("pulley.guide.horizontal_m", KeyType::Float),
-    ("rope.count", KeyType::Integer),
-    ("rope.mass_per_m_kg", KeyType::Float),
-    ("rope.ea_n", KeyType::Float),
-    ("requirements.static_safety_factor_min", KeyType::Float),
-    ("requirements.dynamic_safety_factor_min", KeyType::Float),
-    ("hoist.conveyance1_kg", KeyType::Float),
-    ("hoist.conveyance2_kg", KeyType::Float),
-    ("hoist.rope_damping_ratio", KeyType::Float),
-    ("hoist.tail_count", KeyType::Integer),
-    ("hoist.tail_mass_per_m_kg", KeyType::Float),
-    ("hoist.side1_length_m", KeyType::Float),
-    ("hoist.side2_length_m", KeyType::Float),
-    ("hoist.tail1_length_m", KeyType::Float),
-    ("hoist.tail2_length_m", KeyType::Float),
-    ("scene.m1_kg", KeyType::Float),
-    ("scene.m2_kg", KeyType::Float),
-    ("scene.t1_n", KeyType::Float),
-    ("scene.t2_n", KeyType::Float),
-    ("scene.accel_m_s2", KeyType::Float),
-    ("scene.speed_m_s", KeyType::Float),
-    ("scene.payload_kg", KeyType::Float),
-    ("scene.emergency_stop_s", KeyType::Float),
-    ("scene.emergency_decel_m_s2", KeyType::Float),
-    ("scene.time_step_s", KeyType::Float),
-    ("scene.output_step_s", KeyType::Float),
+const LOADS: &[&str] = &["loads"];
+const DUTY: &[&str] = &["duty-cycle"];
+const TIME: &[&str] = &["history", "duty-cycle"];
+
+/// The numeric keys a sweep can vary, by dotted path, with the scene kinds that have a `scene.KEY`
+/// (empty for the other keys). `scene.KEY` is set in every selected scene of those kinds; the
+/// others run as written. Every value is validated by the sheet's own rules at every point.
+pub const KEYS: &[(&str, KeyType, &[&str])] = &[
+    ("g_m_s2", KeyType::Float, &[]),
+    ("pulley.diameter_m", KeyType::Float, &[]),
+    ("pulley.mu", KeyType::Float, &[]),
+    ("pulley.wrap_angle_deg", KeyType::Float, &[]),
+    ("pulley.guide.diameter_m", KeyType::Float, &[]),
+    ("pulley.guide.vertical_m", KeyType::Float, &[]),
+    ("pulley.guide.horizontal_m", KeyType::Float, &[]),
+    ("rope.count", KeyType::Integer, &[]),
+    ("rope.mass_per_m_kg", KeyType::Float, &[]),
+    ("rope.ea_n", KeyType::Float, &[]),
+    ("requirements.static_safety_factor_min", KeyType::Float, &[]),
+    ("requirements.dynamic_safety_factor_min", KeyType::Float, &[]),
+    ("hoist.conveyance1_kg", KeyType::Float, &[]),
+    ("hoist.conveyance2_kg", KeyType::Float, &[]),
+    ("hoist.rope_damping_ratio", KeyType::Float, &[]),
+    ("hoist.tail_count", KeyType::Integer, &[]),
+    ("hoist.tail_mass_per_m_kg", KeyType::Float, &[]),
+    ("hoist.side1_length_m", KeyType::Float, &[]),
+    ("hoist.side2_length_m", KeyType::Float, &[]),
+    ("hoist.tail1_length_m", KeyType::Float, &[]),
+    ("hoist.tail2_length_m", KeyType::Float, &[]),
+    ("scene.m1_kg", KeyType::Float, LOADS),
+    ("scene.m2_kg", KeyType::Float, LOADS),
+    ("scene.t1_n", KeyType::Float, LOADS),
+    ("scene.t2_n", KeyType::Float, LOADS),
+    ("scene.accel_m_s2", KeyType::Float, LOADS),
+    ("scene.speed_m_s", KeyType::Float, LOADS),
+    ("scene.payload_kg", KeyType::Float, DUTY),
+    ("scene.emergency_stop_s", KeyType::Float, DUTY),
+    ("scene.emergency_decel_m_s2", KeyType::Float, DUTY),
+    ("scene.time_step_s", KeyType::Float, DUTY),
+    ("scene.output_step_s", KeyType::Float, TIME),
 ];
 
 /// Most values along one key.
@@ -63,6 +68,8 @@ pub const MAX_KEYS: usize = 2;
 pub struct Vary {
     pub key: &'static str,
     pub key_type: KeyType,
+    /// The scene kinds a `scene.KEY` applies to.
+    pub kinds: &'static [&'static str],
     pub start: f64,
     pub stop: f64,
     pub count: u64,
@@ -76,7 +83,7 @@ impl Vary {
             return Err(err("expected KEY=START:STOP:COUNT, e.g. pulley.mu=0.2:0.4:21".into()));
         };
         let key = key.trim();
-        let Some(&(key, key_type)) = KEYS.iter().find(|(k, _)| *k == key) else {
+        let Some(&(key, key_type, kinds)) = KEYS.iter().find(|(k, ..)| *k == key) else {
             let known: Vec<&str> = KEYS.iter().map(|k| k.0).collect();
             return Err(err(format!("unknown key {key:?}; a sweep can vary {}", known.join(", "))));
         };
@@ -93,7 +100,7 @@ impl Vary {
             Ok(n @ 1..=MAX_COUNT) => n,
             _ => return Err(err(format!("COUNT {count:?} must be a whole number from 1 to {MAX_COUNT}"))),
         };
-        let vary = Self { key, key_type, start, stop, count };
+        let vary = Self { key, key_type, kinds, start, stop, count };
         if key_type == KeyType::Integer
             && let Some(bad) = (0..count).map(|i| vary.value(i)).find(|v| v.fract() != 0.0)
         {
@@ -102,16 +109,24 @@ impl Vary {
         Ok(vary)
     }
 
-    /// The `i`-th value, `(START·(COUNT−1−i) + STOP·i)/(COUNT−1)`, with exact end points.
+    /// The `i`-th value, `(START·(COUNT−1−i) + STOP·i)/(COUNT−1)`, with exact end points and
+    /// the inner points rounded to the shortest decimal within 1e-13 of the grid's magnitude
+    /// (so 0.1:0.5:5 gives 0.3, not 0.30000000000000004; a relative change far below any
+    /// physical meaning, and the value written to the CSV is exactly the value run).
     pub fn value(&self, i: u64) -> f64 {
         let n = self.count - 1;
         if i == 0 || n == 0 {
-            self.start
-        } else if i == n {
-            self.stop
-        } else {
-            (self.start * (n - i) as f64 + self.stop * i as f64) / n as f64
+            return self.start;
         }
+        if i == n {
+            return self.stop;
+        }
+        let exact = (self.start * (n - i) as f64 + self.stop * i as f64) / n as f64;
+        let tolerance = 1e-13 * self.start.abs().max(self.stop.abs());
+        (0..17)
+            .filter_map(|digits| format!("{exact:.digits$e}").parse::<f64>().ok())
+            .find(|x| (x - exact).abs() <= tolerance)
+            .unwrap_or(exact)
     }
 }
 
@@ -203,6 +218,10 @@ mod tests {
         assert_eq!(g.values(3), vec![0.2, 1000.0]);
         assert_eq!(g.values(7), vec![0.3, 500.0]);
         assert_eq!(g.values(14), vec![0.5, 0.0]);
+        // 0.05·7 + 0.45 = 0.8000000000000000444 in floating point: the grid still gives 0.1.
+        let g = Grid::parse(&["pulley.mu=0.05:0.45:9".into()]).expect("grid");
+        let values: Vec<f64> = (0..9).map(|p| g.values(p)[0]).collect();
+        assert_eq!(values, vec![0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 0.35, 0.4, 0.45]);
     }
 
     #[test]
