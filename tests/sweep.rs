@@ -301,6 +301,11 @@ fn values_the_sheet_rejects_name_the_lowest_failing_point() {
     // A mass at which the sheet's own rule (rope on the pulley, T − m'v² > 0) fails, in one scene only.
     let message = run_sweep(&path, &spec(&["scene.m1_kg=1000:1:3"])).expect_err("lift-off").to_string();
     assert!(message.contains("scene.m1_kg = 1") && message.contains("lift off"), "{message}");
+    // Only the selected scenes run; the message still numbers the scene as the sheet does.
+    let mut only = spec(&["scene.m1_kg=1000:1:3"]);
+    only.scenes = vec!["accelerating".into()];
+    let message = run_sweep(&path, &only).expect_err("lift-off").to_string();
+    assert!(message.contains("scene[2].speed_m_s") && message.contains("scene \"accelerating\""), "{message}");
     // A key the sheet has no section for, a scene it does not have.
     let message = run_sweep(&path, &spec(&["hoist.conveyance1_kg=1:2:2"])).expect_err("no hoist").to_string();
     assert!(message.contains("no [hoist] section"), "{message}");

@@ -19,6 +19,8 @@ pub struct Template {
     scenes: Vec<String>,
     /// Their kinds, which decide the `scene.KEY` they take.
     kinds: Vec<&'static str>,
+    /// Their 1-based numbers among the sheet's `[[scene]]` tables (for `scene[i]` in messages).
+    numbers: Vec<usize>,
 }
 
 impl Template {
@@ -34,16 +36,31 @@ impl Template {
             });
         }
         // The text parsed as a sheet, so it parses as a TOML table.
-        let doc: Table = text.parse().map_err(|e: toml::de::Error| SweepError::Scene {
+        let mut doc: Table = text.parse().map_err(|e: toml::de::Error| SweepError::Scene {
             sheet: file.to_string(),
             message: e.message().to_string(),
         })?;
-        let selected: Vec<_> = design.scenes.iter().filter(|s| scenes.is_empty() || scenes.contains(&s.name)).collect();
+        let is_selected = |name: &str| scenes.is_empty() || scenes.iter().any(|s| s == name);
+        // Only the selected scenes run, so only they are kept (and validated) at every point.
+        let mut numbers = Vec::new();
+        if let Some(Value::Array(tables)) = doc.get_mut("scene") {
+            let mut i = 0;
+            tables.retain(|t| {
+                i += 1;
+                let keep = t.get("name").and_then(Value::as_str).is_some_and(is_selected);
+                if keep {
+                    numbers.push(i);
+                }
+                keep
+            });
+        }
+        let selected: Vec<_> = design.scenes.iter().filter(|s| is_selected(&s.name)).collect();
         Ok(Self {
             file: file.to_string(),
             doc,
             scenes: selected.iter().map(|s| s.name.clone()).collect(),
             kinds: selected.iter().map(|s| s.kind.name()).collect(),
+            numbers,
         })
     }
 
@@ -124,9 +141,19 @@ impl Template {
         sheet::parse(&self.file, &text).map_err(|mut e| {
             for d in &mut e.diagnostics {
                 (d.line, d.column) = (0, 0);
+                d.key = self.renumber(&d.key);
             }
             e
         })
+    }
+
+    /// `scene[j].key` of the document of selected scenes → `scene[i].key` of the sheet.
+    fn renumber(&self, key: &str) -> String {
+        let parsed = key.strip_prefix("scene[").and_then(|rest| {
+            let (j, tail) = rest.split_once(']')?;
+            Some((self.numbers.get(j.parse::<usize>().ok()?.checked_sub(1)?)?, tail))
+        });
+        parsed.map_or_else(|| key.to_string(), |(i, tail)| format!("scene[{i}]{tail}"))
     }
 }
 
