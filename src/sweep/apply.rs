@@ -24,9 +24,10 @@ pub struct Template {
 }
 
 impl Template {
-    /// Validates the sheet as written, then keeps its document. `scenes`: the selected scene
-    /// names (empty: all), each of which must exist.
-    pub fn new(file: &str, text: &str, scenes: &[String]) -> Result<Self, SweepError> {
+    /// Validates the sheet as written, then keeps the part of its document the sweep runs: the
+    /// selected scenes (`scenes`, empty: all; each must exist), and the `[hoist]` only when a
+    /// duty-cycle scene runs it or a `hoist.*` key is varied. Checks the keys of `varies`.
+    pub fn new(file: &str, text: &str, scenes: &[String], varies: &[Vary]) -> Result<Self, SweepError> {
         let design = sheet::parse(file, text)?;
         if let Some(missing) = scenes.iter().find(|n| !design.scenes.iter().any(|s| &s.name == *n)) {
             let known: Vec<&str> = design.scenes.iter().map(|s| s.name.as_str()).collect();
@@ -55,13 +56,19 @@ impl Template {
             });
         }
         let selected: Vec<_> = design.scenes.iter().filter(|s| is_selected(&s.name)).collect();
-        Ok(Self {
+        let mut template = Self {
             file: file.to_string(),
             doc,
             scenes: selected.iter().map(|s| s.name.clone()).collect(),
             kinds: selected.iter().map(|s| s.kind.name()).collect(),
             numbers,
-        })
+        };
+        template.check_keys(varies)?;
+        let hoist_used = template.kinds.contains(&"duty-cycle") || varies.iter().any(|v| v.key.starts_with("hoist."));
+        if !hoist_used {
+            template.doc.remove("hoist");
+        }
+        Ok(template)
     }
 
     /// The selected scene names, in sheet order.
@@ -72,7 +79,7 @@ impl Template {
     /// Checks that every varied key has a place in this sheet: a `hoist.*` or
     /// `pulley.guide.*` key needs that section (the sweep would otherwise write a partial one),
     /// a `scene.KEY` a selected scene of a kind that has it.
-    pub fn check_keys(&self, varies: &[Vary]) -> Result<(), SweepError> {
+    fn check_keys(&self, varies: &[Vary]) -> Result<(), SweepError> {
         for v in varies {
             if v.key.starts_with("scene.") && !self.kinds.iter().any(|k| v.kinds.contains(k)) {
                 return Err(SweepError::Scene {

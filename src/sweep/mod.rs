@@ -82,8 +82,7 @@ pub fn sweep(path: &Path, spec: &Spec, progress: &(dyn Fn(u64) + Sync)) -> Resul
         sheet: file.clone(),
         message: format!("cannot read the design sheet: {e}"),
     })?;
-    let template = Template::new(&file, &text, &spec.scenes)?;
-    template.check_keys(&grid.varies)?;
+    let template = Template::new(&file, &text, &spec.scenes, &grid.varies)?;
     let range = spec.shard.map_or(0..grid.points(), |s| s.range(grid.points()));
     let rows = run::run(&template, &grid, spec.options, range, progress)?;
     Ok(SweepFile { keys: grid.keys().into_iter().map(str::to_string).collect(), rows })
