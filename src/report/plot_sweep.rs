@@ -28,6 +28,8 @@ const PALETTE: [RGBColor; 10] = [
     RGBColor(188, 189, 34),
     RGBColor(23, 190, 207),
 ];
+/// The required minima (static, dynamic, …), one colour each.
+const MIN_COLORS: [RGBColor; 2] = [RGBColor(200, 0, 0), RGBColor(230, 130, 0)];
 const SLIP: RGBColor = RGBColor(245, 160, 150);
 const BELOW_MIN: RGBColor = RGBColor(255, 222, 140);
 const OK_LO: (u8, u8, u8) = (205, 235, 200);
@@ -186,18 +188,19 @@ fn draw_lines(body: &Area, key: &str, rows: &[SweepRow], scenes: &[String]) -> R
                 .label("slip limit σ = 1")
                 .legend(|(px, py)| Rectangle::new([(px, py - 1), (px + 24, py + 1)], BLACK.filled()));
             for (j, m) in mins.iter().enumerate() {
+                let min_color = MIN_COLORS[j % MIN_COLORS.len()];
                 let label = match m[..] {
                     [(_, first), ..] if m.iter().all(|p| p.1 == first) => format!("required σ ≥ {first}"),
                     _ => "required minimum".to_string(),
                 };
                 let drawn = chart
-                    .draw_series(std::iter::once(DashedPathElement::new(m.clone(), 10, 6, RED.stroke_width(2))))
+                    .draw_series(std::iter::once(DashedPathElement::new(m.clone(), 10, 6, min_color.stroke_width(2))))
                     .map_err(e)?;
                 // One legend entry per distinct minimum.
                 if j < 4 {
                     drawn
                         .label(label)
-                        .legend(|(px, py)| Rectangle::new([(px, py - 1), (px + 24, py + 1)], RED.filled()));
+                        .legend(move |(px, py)| Rectangle::new([(px, py - 1), (px + 24, py + 1)], min_color.filled()));
                 }
             }
         }

@@ -19,6 +19,7 @@ use crate::sheet::SheetError;
 use apply::Template;
 use csv::SweepFile;
 use grid::{Grid, Shard};
+use std::fs::File;
 use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
 
@@ -94,33 +95,30 @@ pub fn csv_name(shard: Option<Shard>) -> String {
 }
 
 /// Writes `csv_name` (and `sweep.png` when `plot`) into `dir`, next to whatever else is there.
-/// Each file is staged in `dir` and renamed into place only once all are drawn, so a failure
-/// leaves the files as they were.
+/// The files are drawn in a staging directory inside `dir` and renamed into place only once all
+/// are complete, so a failure leaves `dir` as it was.
 pub fn write(dir: &Path, csv_name: &str, file: &SweepFile, plot: bool) -> Result<Vec<PathBuf>, SweepError> {
     let fail = |path: &Path| {
         let path = path.display().to_string();
         move |e: &dyn std::fmt::Display| SweepError::Write { path: path.clone(), message: e.to_string() }
     };
     std::fs::create_dir_all(dir).map_err(|e| fail(dir)(&e))?;
-    let staged = |suffix: &str| {
-        tempfile::Builder::new().prefix(".wrapcalc-sweep-").suffix(suffix).tempfile_in(dir).map_err(|e| fail(dir)(&e))
-    };
-    let mut outputs = Vec::new();
-    let csv_path = dir.join(csv_name);
-    let mut csv_file = staged(".csv")?;
-    let mut out = BufWriter::new(csv_file.as_file_mut());
-    csv::write(&mut out, &file.keys, &file.rows).map_err(|e| fail(&csv_path)(&e))?;
-    out.flush().map_err(|e| fail(&csv_path)(&e))?;
-    drop(out);
-    outputs.push((csv_file, csv_path));
+    // Removed with whatever is left in it when dropped.
+    let staging = tempfile::Builder::new().prefix(".wrapcalc-sweep-").tempdir_in(dir).map_err(|e| fail(dir)(&e))?;
+    let staged_csv = staging.path().join(csv_name);
+    let csv_file = File::create(&staged_csv).map_err(|e| fail(&staged_csv)(&e))?;
+    let mut out = BufWriter::new(csv_file);
+    csv::write(&mut out, &file.keys, &file.rows).map_err(|e| fail(&staged_csv)(&e))?;
+    out.flush().map_err(|e| fail(&staged_csv)(&e))?;
+    let mut names = vec![csv_name];
     if plot {
-        let png = staged(".png")?;
-        plot_sweep::plot_sweep(png.path(), &file.keys, &file.rows)?;
-        outputs.push((png, dir.join(SWEEP_PNG)));
+        plot_sweep::plot_sweep(&staging.path().join(SWEEP_PNG), &file.keys, &file.rows)?;
+        names.push(SWEEP_PNG);
     }
     let mut written = Vec::new();
-    for (staged, path) in outputs {
-        staged.persist(&path).map_err(|e| fail(&path)(&e.error))?;
+    for name in names {
+        let path = dir.join(name);
+        std::fs::rename(staging.path().join(name), &path).map_err(|e| fail(&path)(&e))?;
         written.push(path);
     }
     Ok(written)
