@@ -240,6 +240,27 @@ fn a_sweep_row_equals_a_plain_run_of_the_sheet_with_that_value() {
     }
 }
 
+#[test]
+fn a_varied_wrap_angle_replaces_the_guide_geometry() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let guided = SHEET
+        .replace("wrap_angle_deg = 180.0", "[pulley.guide]\ndiameter_m = 4.0\nvertical_m = 13.0\nhorizontal_m = 3.35");
+    let path = sheet_in(dir.path(), &guided);
+    let mut s = spec(&["pulley.wrap_angle_deg=150:210:3"]);
+    s.scenes = vec!["rest".into()];
+    let file = run_sweep(&path, &s).expect("sweep");
+    for alpha_deg in [150.0, 180.0, 210.0] {
+        let r = row(&file, "rest", alpha_deg);
+        // Stored in radians and reported in degrees: the round trip costs a few ulps (1e-14 relative).
+        let reported = r.num("wrap_angle_deg").expect("angle");
+        assert!((reported - alpha_deg).abs() <= 1e-14 * alpha_deg, "{reported}");
+        // e^{μα} with μ = 0.25.
+        let limit = (0.25 * f64::to_radians(alpha_deg)).exp();
+        let got = r.num("euler_limit").expect("limit");
+        assert!((got - limit).abs() <= 1e-14 * limit, "α = {alpha_deg}: {got} vs {limit}");
+    }
+}
+
 fn vary_error(specs: &[&str]) -> String {
     let specs: Vec<String> = specs.iter().map(|s| s.to_string()).collect();
     match Grid::parse(&specs) {

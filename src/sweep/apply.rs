@@ -64,6 +64,12 @@ impl Template {
             numbers,
         };
         template.check_keys(varies)?;
+        // A varied wrap angle replaces the guide-pulley geometry it is otherwise derived from.
+        if varies.iter().any(|v| v.key == "pulley.wrap_angle_deg")
+            && let Some(Value::Table(pulley)) = template.doc.get_mut("pulley")
+        {
+            pulley.remove("guide");
+        }
         let hoist_used = template.kinds.contains(&"duty-cycle") || varies.iter().any(|v| v.key.starts_with("hoist."));
         if !hoist_used {
             template.doc.remove("hoist");

@@ -49,8 +49,9 @@ pub enum SweepError {
     Scene { sheet: String, message: String },
     #[error(transparent)]
     Run(#[from] RunError),
-    #[error("point {point} ({assignment}): {source}")]
-    Point { point: u64, assignment: String, source: PointError },
+    /// (The point's error is part of this message, not a separate cause.)
+    #[error("point {point} ({assignment}): {error}")]
+    Point { point: u64, assignment: String, error: PointError },
     #[error("merge: {message}")]
     Merge { message: String },
     #[error("cannot write {path}: {message}")]

@@ -47,7 +47,7 @@ fn run_point(
     count: u64,
 ) -> Result<Vec<SweepRow>, SweepError> {
     let values = grid.values(point);
-    let at = |source| SweepError::Point {
+    let at = |error| SweepError::Point {
         point,
         assignment: grid
             .varies
@@ -56,7 +56,7 @@ fn run_point(
             .map(|(v, x)| format!("{} = {x}", v.key))
             .collect::<Vec<_>>()
             .join(", "),
-        source,
+        error,
     };
     let design = template.design(&grid.varies, &values).map_err(|e| at(e.into()))?;
     let scenes: Vec<_> = design.scenes.iter().filter(|s| template.scenes().contains(&s.name)).collect();
