@@ -86,7 +86,13 @@ fn one_thread_and_all_threads_give_the_same_bytes() {
     let single = one.install(|| run_sweep(&path, &spec)).expect("1-thread sweep");
     let many = rayon::ThreadPoolBuilder::new().num_threads(4).build().expect("pool");
     let parallel = many.install(|| run_sweep(&path, &spec)).expect("4-thread sweep");
-    let default = run_sweep(&path, &spec).expect("default-pool sweep");
+    // The default pool, counting the progress reports: one per point.
+    let reported = std::sync::atomic::AtomicU64::new(0);
+    let count = |n: u64| {
+        reported.fetch_add(n, std::sync::atomic::Ordering::Relaxed);
+    };
+    let default = sweep::sweep(&path, &spec, &count).expect("default-pool sweep");
+    assert_eq!(reported.into_inner(), 35);
     // 35 points × 3 scenes, in point order, then sheet order within a point.
     assert_eq!(single.rows.len(), 105);
     let order: Vec<(u64, &str)> = single.rows.iter().map(|r| (r.point, r.scene.as_str())).collect();
