@@ -198,8 +198,9 @@ fn sweep_command(args: SweepArgs) -> anyhow::Result<()> {
     let grid = sweep::grid::Grid::parse(&spec.vary)?;
     let points = shard.map_or(0..grid.points(), |s| s.range(grid.points()));
     let bar = progress_bar(points.end - points.start, args.quiet);
-    let file = sweep::sweep(&args.sheet, &spec, &|n| bar.inc(n))?;
+    let file = sweep::sweep(&args.sheet, &spec, &|n| bar.inc(n));
     bar.finish_and_clear();
+    let file = file?;
     let out_dir = args.out.unwrap_or_else(|| {
         let mut dir = default_out_dir(&args.sheet).into_os_string();
         dir.push("-sweep");
@@ -207,7 +208,7 @@ fn sweep_command(args: SweepArgs) -> anyhow::Result<()> {
     });
     let written = sweep::write(&out_dir, &sweep::csv_name(shard), &file, !args.no_plots && shard.is_none())?;
     if !args.quiet {
-        let failing = file.rows.iter().filter(|r| !passes(r)).count();
+        let failing = file.rows.iter().filter(|r| r.flag("checks_pass") != Some(true)).count();
         println!(
             "{} points ({}..{} of {}), {} rows, {} failing a design check",
             points.end - points.start,
@@ -222,11 +223,6 @@ fn sweep_command(args: SweepArgs) -> anyhow::Result<()> {
         }
     }
     Ok(())
-}
-
-fn passes(row: &sweep::csv::SweepRow) -> bool {
-    let at = sweep::csv::column("checks_pass").and_then(|i| row.cells.get(i));
-    matches!(at, Some(sweep::csv::Cell::Flag(true)))
 }
 
 fn merge_command(args: MergeArgs) -> anyhow::Result<()> {

@@ -209,10 +209,7 @@ fn mu_rows_match_the_closed_form_safety_factor_and_active_arc() {
     }
     // σ = 1.75 at e^{μπ} = 1 + 1.75·4905/24525, μ = 0.0955: fails at 0.05 (where the ratio
     // 1.2 exceeds e^{0.05π} = 1.170: gross slip), passes from 0.1 on.
-    let flag = |mu: f64, col: &str| {
-        let cell = row(&file, "rest", mu).cells[sweep_csv::column(col).expect("col")];
-        matches!(cell, sweep_csv::Cell::Flag(true))
-    };
+    let flag = |mu: f64, col: &str| row(&file, "rest", mu).flag(col).expect("a yes/no column");
     assert!(!flag(0.05, "checks_pass") && flag(0.05, "gross_slip"));
     assert!(flag(0.1, "checks_pass") && !flag(0.1, "gross_slip"));
 }

@@ -31,13 +31,13 @@ impl Template {
         let design = sheet::parse(file, text)?;
         if let Some(missing) = scenes.iter().find(|n| !design.scenes.iter().any(|s| &s.name == *n)) {
             let known: Vec<&str> = design.scenes.iter().map(|s| s.name.as_str()).collect();
-            return Err(SweepError::Scene {
+            return Err(SweepError::Input {
                 sheet: file.to_string(),
                 message: format!("--scene {missing:?}: no such scene; the sheet has: {}", known.join(", ")),
             });
         }
         // The text parsed as a sheet, so it parses as a TOML table.
-        let mut doc: Table = text.parse().map_err(|e: toml::de::Error| SweepError::Scene {
+        let mut doc: Table = text.parse().map_err(|e: toml::de::Error| SweepError::Input {
             sheet: file.to_string(),
             message: e.message().to_string(),
         })?;
@@ -88,7 +88,7 @@ impl Template {
     fn check_keys(&self, varies: &[Vary]) -> Result<(), SweepError> {
         for v in varies {
             if v.key.starts_with("scene.") && !self.kinds.iter().any(|k| v.kinds.contains(k)) {
-                return Err(SweepError::Scene {
+                return Err(SweepError::Input {
                     sheet: self.file.clone(),
                     message: format!(
                         "--vary {}: no selected scene has this key (it belongs to {} scenes; selected: {})",
@@ -102,7 +102,7 @@ impl Template {
                 if v.key.strip_prefix(section).is_some_and(|rest| rest.starts_with('.'))
                     && table_at(&self.doc, section).is_none()
                 {
-                    return Err(SweepError::Scene {
+                    return Err(SweepError::Input {
                         sheet: self.file.clone(),
                         message: format!("--vary {}: the sheet has no [{section}] section to vary", v.key),
                     });

@@ -104,8 +104,16 @@ impl SweepRow {
 
     /// A result number by column name (`None` when empty or not a number column).
     pub fn num(&self, name: &str) -> Option<f64> {
-        match column(name).map(|i| self.cells[i]) {
-            Some(Cell::Num(v)) => v,
+        match column(name).and_then(|i| self.cells.get(i)) {
+            Some(Cell::Num(v)) => *v,
+            _ => None,
+        }
+    }
+
+    /// A yes/no result by column name (`None` when not a yes/no column).
+    pub fn flag(&self, name: &str) -> Option<bool> {
+        match column(name).and_then(|i| self.cells.get(i)) {
+            Some(Cell::Flag(b)) => Some(*b),
             _ => None,
         }
     }

@@ -45,8 +45,9 @@ pub enum SweepError {
     Shard { spec: String, message: String },
     #[error(transparent)]
     Sheet(#[from] SheetError),
+    /// The sweep's options do not fit the sheet (no such scene, a key it has no place for).
     #[error("{sheet}: {message}")]
-    Scene { sheet: String, message: String },
+    Input { sheet: String, message: String },
     #[error(transparent)]
     Run(#[from] RunError),
     /// (The point's error is part of this message, not a separate cause.)
@@ -80,7 +81,7 @@ pub fn sweep(path: &Path, spec: &Spec, progress: &(dyn Fn(u64) + Sync)) -> Resul
     let design = crate::sheet::load(path)?;
     let file = design.sheet;
     // The sheet was just read as UTF-8 text.
-    let text = std::fs::read_to_string(path).map_err(|e| SweepError::Scene {
+    let text = std::fs::read_to_string(path).map_err(|e| SweepError::Input {
         sheet: file.clone(),
         message: format!("cannot read the design sheet: {e}"),
     })?;
