@@ -423,6 +423,64 @@ mod tests {
         }
     }
 
+    fn row(point: u64, values: &[f64], scene: &str, sf: Option<f64>) -> SweepRow {
+        use crate::sweep::csv::{Cell, RESULT_COLUMNS};
+        let mut r = SweepRow {
+            point,
+            point_count: 0,
+            values: values.to_vec(),
+            scene: scene.into(),
+            kind: "loads".into(),
+            level: 1,
+            cells: vec![Cell::Num(None); RESULT_COLUMNS.len()],
+        };
+        let mut set = |name: &str, v: Option<f64>| {
+            if let Some(i) = crate::sweep::csv::column(name) {
+                r.cells[i] = Cell::Num(v);
+            }
+        };
+        set("safety_factor", sf);
+        set("safety_factor_min", Some(1.75));
+        set("positive_arc_deg", sf.map(|s| 10.0 * s));
+        set("reverse_arc_deg", Some(0.0));
+        r
+    }
+
+    #[test]
+    fn draws_normal_and_degenerate_sweeps_without_panicking() {
+        let dir = tempfile::tempdir().expect("temp dir");
+        let k1 = vec!["pulley.mu".to_string()];
+        let k2 = vec!["pulley.mu".to_string(), "scene.m1_kg".to_string()];
+        let line: Vec<SweepRow> = (0..20u8)
+            .flat_map(|i| {
+                let mu = 0.1 + 0.01 * f64::from(i);
+                [row(u64::from(i), &[mu], "a", Some(20.0 * mu)), row(u64::from(i), &[mu], "b", None)]
+            })
+            .collect();
+        let map: Vec<SweepRow> = (0..36u8)
+            .map(|p| {
+                let (mu, m) = (0.1 + 0.05 * f64::from(p / 6), 1000.0 * f64::from(p % 6));
+                row(u64::from(p), &[mu, m], "a", (m > 0.0).then(|| 40.0 * mu - m / 2000.0))
+            })
+            .collect();
+        let one_column: Vec<SweepRow> =
+            (0..4u8).map(|p| row(u64::from(p), &[0.2, f64::from(p)], "a", Some(1.5))).collect();
+        let cases: [(&str, &[String], &[SweepRow]); 5] = [
+            ("line", &k1, &line),
+            ("one", &k1, &line[..1]),
+            ("empty", &k1, &[]),
+            ("map", &k2, &map),
+            ("column", &k2, &one_column),
+        ];
+        for (name, keys, rows) in cases {
+            let path = dir.path().join(format!("{name}.png"));
+            plot_sweep(&path, keys, rows).expect("plot");
+            assert!(path.metadata().map(|m| m.len() > 5_000).unwrap_or(false), "{name}: no image");
+        }
+        assert!(plot_sweep(&dir.path().join("missing/x.png"), &k1, &line).is_err());
+        assert!(plot_sweep(&dir.path().join("three.png"), &[], &line).is_err());
+    }
+
     #[test]
     fn units_come_from_key_names() {
         assert_eq!(key_label("scene.accel_m_s2"), "scene.accel_m_s2 (m/s²)");
