@@ -23,4 +23,5 @@ pub mod report;
 pub mod roots;
 pub mod run;
 pub mod sheet;
+pub mod sweep;
 pub mod wrap;

@@ -9,6 +9,7 @@ use wrapcalc::planner::Request;
 use wrapcalc::report::{self, summary::Summary, table};
 use wrapcalc::run::{self, Options, RunResult};
 use wrapcalc::sheet;
+use wrapcalc::sweep;
 
 #[derive(Parser)]
 #[command(
@@ -27,6 +28,10 @@ enum Command {
     Run(RunArgs),
     /// Level-0 anti-slip checks only (instant); writes no report.
     Check(CheckArgs),
+    /// Run a sheet over a grid of one or two varied keys; writes sweep.csv and sweep.png.
+    Sweep(SweepArgs),
+    /// Join the CSVs of `sweep --shard` runs into the sweep.csv (and sweep.png) of a single run.
+    Merge(MergeArgs),
 }
 
 #[derive(clap::Args)]
@@ -64,6 +69,52 @@ struct CheckArgs {
     sheet: PathBuf,
     #[arg(long, value_enum, default_value_t = Format::Table)]
     format: Format,
+}
+
+#[derive(clap::Args)]
+struct SweepArgs {
+    /// The design sheet (TOML).
+    sheet: PathBuf,
+    /// KEY=START:STOP:COUNT, e.g. pulley.mu=0.2:0.4:21 (once or twice; the first key varies slowest).
+    #[arg(long = "vary", value_name = "KEY=START:STOP:COUNT", required = true)]
+    vary: Vec<String>,
+    /// Run only this scene (repeatable); `scene.KEY` is set in these scenes.
+    #[arg(long = "scene", value_name = "NAME")]
+    scenes: Vec<String>,
+    /// Model level for every scene: auto (the planner chooses) or 0–4.
+    #[arg(long, default_value = "auto", value_parser = parse_level)]
+    level: LevelArg,
+    /// Number of wrap nodes of the output grid / discrete levels.
+    #[arg(long, default_value_t = run::DEFAULT_NODES)]
+    nodes: usize,
+    /// Output directory [default: reports/<sheet file stem>-sweep/].
+    #[arg(long)]
+    out: Option<PathBuf>,
+    /// Run only the K-th of N slices of the points (writes sweep-shard-K-of-N.csv, no plot).
+    #[arg(long, value_name = "K/N")]
+    shard: Option<String>,
+    /// Do not draw sweep.png.
+    #[arg(long)]
+    no_plots: bool,
+    /// Print nothing but errors; no progress bar.
+    #[arg(long)]
+    quiet: bool,
+}
+
+#[derive(clap::Args)]
+struct MergeArgs {
+    /// The shard CSVs (sweep-shard-K-of-N.csv), in any order.
+    #[arg(required = true)]
+    shards: Vec<PathBuf>,
+    /// Output directory for sweep.csv and sweep.png.
+    #[arg(long)]
+    out: PathBuf,
+    /// Do not draw sweep.png.
+    #[arg(long)]
+    no_plots: bool,
+    /// Print nothing but errors.
+    #[arg(long)]
+    quiet: bool,
 }
 
 #[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -127,7 +178,78 @@ fn execute(cli: Cli) -> anyhow::Result<bool> {
             print_result(&design, &result, args.format, false);
             Ok(result.all_checks_pass())
         }
+        Command::Sweep(args) => sweep_command(args).map(|()| true),
+        Command::Merge(args) => merge_command(args).map(|()| true),
     }
+}
+
+/// A sweep exits 0 once it ran, whatever the checks at its points say (they are in sweep.csv).
+fn sweep_command(args: SweepArgs) -> anyhow::Result<()> {
+    let shard = args.shard.as_deref().map(sweep::grid::Shard::parse).transpose()?;
+    let forced_level = match args.level {
+        LevelArg::Auto => None,
+        LevelArg::Level(l) => Some(l),
+    };
+    let spec = sweep::Spec {
+        vary: args.vary.clone(),
+        scenes: args.scenes.clone(),
+        options: Options { request: Request::Full { forced_level }, nodes: args.nodes, ..Options::default() },
+        shard,
+    };
+    let grid = sweep::grid::Grid::parse(&spec.vary)?;
+    let points = shard.map_or(0..grid.points(), |s| s.range(grid.points()));
+    let bar = progress_bar(points.end - points.start, args.quiet);
+    let file = sweep::sweep(&args.sheet, &spec, &|n| bar.inc(n));
+    bar.finish_and_clear();
+    let file = file?;
+    let out_dir = args.out.unwrap_or_else(|| {
+        let mut dir = default_out_dir(&args.sheet).into_os_string();
+        dir.push("-sweep");
+        PathBuf::from(dir)
+    });
+    let written = sweep::write(&out_dir, &sweep::csv_name(shard), &file, !args.no_plots && shard.is_none())?;
+    if !args.quiet {
+        let failing = file.rows.iter().filter(|r| r.flag("checks_pass") != Some(true)).count();
+        println!(
+            "{} points ({}..{} of {}), {} rows, {} failing a design check",
+            points.end - points.start,
+            points.start,
+            points.end,
+            grid.points(),
+            file.rows.len(),
+            failing
+        );
+        for path in written {
+            println!("written {}", path.display());
+        }
+    }
+    Ok(())
+}
+
+fn merge_command(args: MergeArgs) -> anyhow::Result<()> {
+    let file = sweep::merge::merge(&args.shards)?;
+    let written = sweep::write(&args.out, sweep::SWEEP_CSV, &file, !args.no_plots)?;
+    if !args.quiet {
+        for path in written {
+            println!("written {}", path.display());
+        }
+    }
+    Ok(())
+}
+
+/// A progress bar on stderr when it is a terminal and neither --quiet nor NO_COLOR asks for
+/// plain output; hidden otherwise.
+fn progress_bar(len: u64, quiet: bool) -> indicatif::ProgressBar {
+    let plain =
+        quiet || !std::io::stderr().is_terminal() || std::env::var_os("NO_COLOR").is_some_and(|v| !v.is_empty());
+    if plain {
+        return indicatif::ProgressBar::hidden();
+    }
+    let bar = indicatif::ProgressBar::new(len);
+    if let Ok(style) = indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} points, {elapsed} (eta {eta})") {
+        bar.set_style(style);
+    }
+    bar
 }
 
 fn run_command(args: RunArgs) -> anyhow::Result<bool> {

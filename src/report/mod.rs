@@ -8,6 +8,7 @@
 pub mod csv_out;
 pub mod plot;
 pub mod plot_history;
+pub mod plot_sweep;
 pub mod summary;
 pub mod table;
 

@@ -1,0 +1,490 @@
+//! sweep.png. One varied key: three panels against it, the safety factor of every scene with
+//! the slip limit σ = 1 and the required minimum, the positive and reverse arcs, and the JDP.
+//! Two keys: a map of the safety factor of the first scene over the grid, banded into slip
+//! (σ < 1), below the required minimum and above it, with the slip boundary (σ = 1, i.e.
+//! tension ratio = e^{μα}) and the required-minimum contour traced by marching squares.
+//!
+//! The safety factor plotted is the lowest one of a time scene, else the reported state's.
+
+use super::plot::{PlotError, font, font_ready, tick_format};
+use crate::sweep::csv::SweepRow;
+use plotters::coord::Shift;
+use plotters::element::DashedPathElement;
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+use std::path::Path;
+
+type Area<'b> = DrawingArea<BitMapBackend<'b>, Shift>;
+
+const PALETTE: [RGBColor; 10] = [
+    RGBColor(31, 119, 180),
+    RGBColor(214, 39, 40),
+    RGBColor(44, 160, 44),
+    RGBColor(255, 127, 14),
+    RGBColor(148, 103, 189),
+    RGBColor(140, 86, 75),
+    RGBColor(227, 119, 194),
+    RGBColor(127, 127, 127),
+    RGBColor(188, 189, 34),
+    RGBColor(23, 190, 207),
+];
+/// The required minima (static, dynamic, …), one colour each.
+const MIN_COLORS: [RGBColor; 2] = [RGBColor(200, 0, 0), RGBColor(230, 130, 0)];
+const SLIP: RGBColor = RGBColor(245, 160, 150);
+const BELOW_MIN: RGBColor = RGBColor(255, 222, 140);
+const OK_LO: (u8, u8, u8) = (205, 235, 200);
+const OK_HI: (u8, u8, u8) = (30, 90, 150);
+
+fn e<E: std::fmt::Display>(err: E) -> String {
+    err.to_string()
+}
+
+/// The axis label of a key: its path and the unit its name ends in.
+pub fn key_label(key: &str) -> String {
+    let units =
+        [("_m_s2", "m/s²"), ("_m_s", "m/s"), ("_kg", "kg"), ("_deg", "deg"), ("_n", "N"), ("_s", "s"), ("_m", "m")];
+    match units.iter().find(|(suffix, _)| key.ends_with(suffix)) {
+        Some((_, unit)) => format!("{key} ({unit})"),
+        None => key.to_string(),
+    }
+}
+
+/// The safety factor a row is judged by, and the minimum it must reach.
+fn factor(row: &SweepRow) -> (Option<f64>, Option<f64>) {
+    (row.num("worst_safety_factor").or(row.num("safety_factor")), row.num("safety_factor_min"))
+}
+
+/// Draws sweep.png for the rows of a sweep over `keys` (one or two).
+pub fn plot_sweep(path: &Path, keys: &[String], rows: &[SweepRow]) -> Result<(), PlotError> {
+    let fail = |message: String| PlotError { path: path.display().to_string(), message };
+    if !font_ready() {
+        return Err(fail("the embedded font cannot be loaded".into()));
+    }
+    let scenes = scene_order(rows);
+    let title = match keys {
+        [k] => format!("sweep of {k}: safety factor, arcs and JDP"),
+        [k1, k2] => format!(
+            "sweep of {k1} × {k2}: safety factor of scene \"{}\" (first scene)",
+            scenes.first().map_or("", String::as_str)
+        ),
+        _ => return Err(fail(format!("a sweep plot needs one or two keys, got {}", keys.len()))),
+    };
+    let size = if keys.len() == 1 { (1200, 1300) } else { (1200, 1000) };
+    let root = BitMapBackend::new(path, size).into_drawing_area();
+    let drawn = (|| {
+        root.fill(&WHITE).map_err(e)?;
+        let (caption, body) = root.split_vertically(56);
+        let style = font(24).color(&BLACK).pos(Pos::new(HPos::Center, VPos::Center));
+        caption.draw_text(&title, &style, (size.0 as i32 / 2, 28)).map_err(e)?;
+        match keys {
+            [k] => draw_lines(&body, k, rows, &scenes),
+            [k1, k2] => draw_map(&body, (k1, k2), rows, scenes.first().map_or("", String::as_str)),
+            _ => Ok(()),
+        }
+    })();
+    drawn.map_err(fail)?;
+    root.present().map_err(|x| fail(x.to_string()))
+}
+
+/// Scene names in the order they first appear.
+fn scene_order(rows: &[SweepRow]) -> Vec<String> {
+    let mut out: Vec<String> = Vec::new();
+    for r in rows {
+        if !out.contains(&r.scene) {
+            out.push(r.scene.clone());
+        }
+    }
+    out
+}
+
+type Series = (String, RGBColor, Vec<(f64, f64)>, bool);
+/// A panel: y-axis label, its lines, y range, and the note shown when it has no line.
+type Panel<'a> = (&'a str, &'a [Series], (f64, f64), &'a str);
+
+fn draw_lines(body: &Area, key: &str, rows: &[SweepRow], scenes: &[String]) -> Result<(), String> {
+    let xs = rows.iter().filter_map(|r| r.values.first().copied());
+    let (x0, x1) = xs.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| (a.min(x), b.max(x)));
+    let (x0, x1) = if x0 < x1 {
+        (x0, x1)
+    } else if x0.is_finite() {
+        (x0 - 0.5, x0 + 0.5)
+    } else {
+        (0.0, 1.0)
+    };
+    let series = |scene: &str, f: &dyn Fn(&SweepRow) -> Option<f64>| -> Vec<(f64, f64)> {
+        rows.iter()
+            .filter(|r| r.scene == scene)
+            .filter_map(|r| Some((*r.values.first()?, f(r).filter(|v| v.is_finite())?)))
+            .collect()
+    };
+    let color = |i: usize| PALETTE[i % PALETTE.len()];
+    let sf: Vec<Series> =
+        scenes.iter().enumerate().map(|(i, s)| (s.clone(), color(i), series(s, &|r| factor(r).0), false)).collect();
+    // Distinct minimum lines (one per requirement in force, e.g. static 1.75 and dynamic 1.25).
+    let mut mins: Vec<Vec<(f64, f64)>> = Vec::new();
+    for s in scenes {
+        let m = series(s, &|r| factor(r).1);
+        if !m.is_empty() && !mins.contains(&m) {
+            mins.push(m);
+        }
+    }
+    let min_hi = mins.iter().flatten().map(|p| p.1).fold(1.0, f64::max);
+    let (lo, hi) =
+        sf.iter().flat_map(|s| s.2.iter().map(|p| p.1)).fold((f64::INFINITY, 0.0f64), |(a, b), v| (a.min(v), b.max(v)));
+    // Up to the largest factor, but not beyond 10× the smallest (or the minimum), so the
+    // dangerous end stays readable when T1 ≈ T2 makes σ huge.
+    let top = (hi * 1.05).min(10.0 * lo.max(min_hi)).max(2.0 * min_hi);
+    let top = if top.is_finite() { top } else { 2.0 * min_hi };
+    let arcs: Vec<Series> = scenes
+        .iter()
+        .enumerate()
+        .flat_map(|(i, s)| {
+            [
+                (format!("{s} positive"), color(i), series(s, &|r| r.num("positive_arc_deg")), false),
+                (format!("{s} reverse"), color(i), series(s, &|r| r.num("reverse_arc_deg")), true),
+            ]
+        })
+        .filter(|s| !s.2.is_empty())
+        .collect();
+    let jdp: Vec<Series> = scenes
+        .iter()
+        .enumerate()
+        .map(|(i, s)| (s.clone(), color(i), series(s, &|r| r.num("jdp_deg")), false))
+        .filter(|s| !s.2.is_empty())
+        .collect();
+    let panels = body.split_evenly((3, 1));
+    let arc_top = arcs.iter().chain(&jdp).flat_map(|s| s.2.iter().map(|p| p.1)).fold(10.0, f64::max) * 1.08;
+    let specs: [Panel; 3] = [
+        ("safety factor σ", &sf, (0.0, top), ""),
+        ("arc (deg): solid positive, dashed reverse", &arcs, (0.0, arc_top), "no arcs: level 0 gives no distribution"),
+        ("JDP (deg)", &jdp, (0.0, arc_top), "no JDP at any point"),
+    ];
+    for (i, (area, (y_desc, lines, y, empty_note))) in panels.iter().zip(specs).enumerate() {
+        let last = i == 2;
+        let mut chart = ChartBuilder::on(area)
+            .margin(14)
+            .x_label_area_size(if last { 52 } else { 30 })
+            .y_label_area_size(96)
+            .build_cartesian_2d(x0..x1, y.0..y.1)
+            .map_err(e)?;
+        let (xf, yf) = (tick_format(x0, x1), tick_format(y.0, y.1));
+        let x_desc = key_label(key);
+        chart
+            .configure_mesh()
+            .x_desc(if last { x_desc.as_str() } else { "" })
+            .y_desc(y_desc)
+            .x_label_formatter(&xf)
+            .y_label_formatter(&yf)
+            .label_style(font(15))
+            .axis_desc_style(font(17))
+            .light_line_style(TRANSPARENT)
+            .bold_line_style(RGBColor(215, 215, 215))
+            .draw()
+            .map_err(e)?;
+        if i == 0 {
+            chart
+                .draw_series(std::iter::once(PathElement::new(vec![(x0, 1.0), (x1, 1.0)], BLACK.stroke_width(2))))
+                .map_err(e)?
+                .label("slip limit σ = 1")
+                .legend(|(px, py)| Rectangle::new([(px, py - 1), (px + 24, py + 1)], BLACK.filled()));
+            for (j, m) in mins.iter().enumerate() {
+                let min_color = MIN_COLORS[j % MIN_COLORS.len()];
+                let label = match m[..] {
+                    [(_, first), ..] if m.iter().all(|p| p.1 == first) => format!("required σ ≥ {first}"),
+                    _ => "required minimum".to_string(),
+                };
+                let drawn = chart
+                    .draw_series(std::iter::once(DashedPathElement::new(m.clone(), 10, 6, min_color.stroke_width(2))))
+                    .map_err(e)?;
+                // One legend entry per distinct minimum.
+                if j < 4 {
+                    drawn
+                        .label(label)
+                        .legend(move |(px, py)| Rectangle::new([(px, py - 1), (px + 24, py + 1)], min_color.filled()));
+                }
+            }
+        }
+        if lines.is_empty() && !empty_note.is_empty() {
+            let style = font(17).color(&RGBColor(120, 120, 120)).pos(Pos::new(HPos::Center, VPos::Center));
+            let (w, h) = chart.plotting_area().dim_in_pixel();
+            chart
+                .plotting_area()
+                .strip_coord_spec()
+                .draw_text(empty_note, &style, (w as i32 / 2, h as i32 / 2))
+                .map_err(e)?;
+        }
+        for (label, color, points, dashed) in lines.iter().cloned() {
+            let drawn = match (dashed, points.len()) {
+                (_, 1) => chart.draw_series(points.iter().map(|&p| Circle::new(p, 4, color.filled()))).map_err(e)?,
+                (true, _) => chart
+                    .draw_series(std::iter::once(DashedPathElement::new(points, 8, 5, color.stroke_width(2))))
+                    .map_err(e)?,
+                (false, _) => chart.draw_series(LineSeries::new(points, color.stroke_width(2))).map_err(e)?,
+            };
+            drawn
+                .label(label)
+                .legend(move |(px, py)| Rectangle::new([(px, py - 2), (px + 24, py + 2)], color.filled()));
+        }
+        if !lines.is_empty() || i == 0 {
+            chart
+                .configure_series_labels()
+                .position(SeriesLabelPosition::UpperRight)
+                .background_style(WHITE.mix(0.85))
+                .border_style(RGBColor(180, 180, 180))
+                .label_font(font(14))
+                .draw()
+                .map_err(e)?;
+        }
+    }
+    Ok(())
+}
+
+/// Colour of a safety factor `sf` against its minimum: slip, below the minimum, or a ramp from
+/// the minimum up to `top`; unbounded factors (equal tensions) take the top colour.
+fn band_color(sf: Option<f64>, min: f64, top: f64) -> RGBColor {
+    match sf {
+        Some(s) if s < 1.0 => SLIP,
+        Some(s) if s < min => BELOW_MIN,
+        _ => {
+            let s = sf.map_or(1.0, |s| ((s - min) / (top - min)).clamp(0.0, 1.0));
+            let m = |a: u8, b: u8| (f64::from(a) + (f64::from(b) - f64::from(a)) * s).round() as u8;
+            RGBColor(m(OK_LO.0, OK_HI.0), m(OK_LO.1, OK_HI.1), m(OK_LO.2, OK_HI.2))
+        }
+    }
+}
+
+/// Sorted distinct values.
+fn distinct(values: impl Iterator<Item = f64>) -> Vec<f64> {
+    let mut v: Vec<f64> = values.filter(|x| x.is_finite()).collect();
+    v.sort_by(f64::total_cmp);
+    v.dedup();
+    v
+}
+
+/// Cell edges around sorted grid values: half-way between neighbours, half a step beyond the ends.
+fn edges(values: &[f64]) -> Vec<f64> {
+    match values {
+        [] => vec![0.0, 1.0],
+        [v] => vec![v - 0.5 * v.abs().max(1e-9), v + 0.5 * v.abs().max(1e-9)],
+        _ => {
+            let n = values.len();
+            let mut out = vec![values[0] - 0.5 * (values[1] - values[0])];
+            out.extend(values.windows(2).map(|w| 0.5 * (w[0] + w[1])));
+            out.push(values[n - 1] + 0.5 * (values[n - 1] - values[n - 2]));
+            out
+        }
+    }
+}
+
+fn draw_map(body: &Area, (k1, k2): (&str, &str), rows: &[SweepRow], scene: &str) -> Result<(), String> {
+    let rows: Vec<&SweepRow> = rows.iter().filter(|r| r.scene == scene && r.values.len() == 2).collect();
+    let xs = distinct(rows.iter().map(|r| r.values[0]));
+    let ys = distinct(rows.iter().map(|r| r.values[1]));
+    let (xe, ye) = (edges(&xs), edges(&ys));
+    let index = |v: &[f64], x: f64| v.binary_search_by(|p| p.total_cmp(&x)).ok();
+    // grid[i][j]: (σ, minimum) at (xs[i], ys[j]); None where no row or no bounded factor.
+    let mut grid: Vec<Vec<(Option<f64>, f64)>> = vec![vec![(None, f64::NAN); ys.len()]; xs.len()];
+    let mut present = vec![vec![false; ys.len()]; xs.len()];
+    for r in &rows {
+        if let (Some(i), Some(j)) = (index(&xs, r.values[0]), index(&ys, r.values[1])) {
+            let (sf, min) = factor(r);
+            grid[i][j] = (sf, min.unwrap_or(1.0));
+            present[i][j] = true;
+        }
+    }
+    let min_hi = grid.iter().flatten().map(|c| c.1).filter(|m| m.is_finite()).fold(1.0, f64::max);
+    let top = 3.0 * min_hi;
+    let (legend, plot) = body.split_vertically(44);
+    let (x0, x1) = (xe[0].min(xe[xe.len() - 1]), xe[0].max(xe[xe.len() - 1]));
+    let (y0, y1) = (ye[0].min(ye[ye.len() - 1]), ye[0].max(ye[ye.len() - 1]));
+    let mut chart = ChartBuilder::on(&plot)
+        .margin(14)
+        .x_label_area_size(52)
+        .y_label_area_size(110)
+        .build_cartesian_2d(x0..x1, y0..y1)
+        .map_err(e)?;
+    let (xf, yf) = (tick_format(x0, x1), tick_format(y0, y1));
+    chart
+        .configure_mesh()
+        .x_desc(key_label(k1))
+        .y_desc(key_label(k2))
+        .x_label_formatter(&xf)
+        .y_label_formatter(&yf)
+        .label_style(font(15))
+        .axis_desc_style(font(17))
+        .disable_mesh()
+        .draw()
+        .map_err(e)?;
+    let area = chart.plotting_area();
+    for (i, col) in grid.iter().enumerate() {
+        for (j, &(sf, min)) in col.iter().enumerate() {
+            if present[i][j] {
+                let c = band_color(sf, min, top);
+                area.draw(&Rectangle::new([(xe[i], ye[j]), (xe[i + 1], ye[j + 1])], c.filled())).map_err(e)?;
+            }
+        }
+    }
+    // Contours: σ − 1 = 0 (slip boundary) and σ − minimum = 0. An unbounded σ counts as large.
+    let big = 1e3 * top;
+    let field = |level: &dyn Fn(f64) -> f64| -> Vec<Vec<f64>> {
+        grid.iter()
+            .zip(&present)
+            .map(|(col, p)| {
+                col.iter()
+                    .zip(p)
+                    .map(|(&(sf, m), &here)| if here { sf.unwrap_or(big) - level(m) } else { f64::NAN })
+                    .collect()
+            })
+            .collect()
+    };
+    for (f, style) in [(field(&|_| 1.0), BLACK.stroke_width(3)), (field(&|m| m), RGBColor(150, 0, 0).stroke_width(3))] {
+        for seg in contour(&xs, &ys, &f) {
+            area.draw(&PathElement::new(seg.to_vec(), style)).map_err(e)?;
+        }
+    }
+    // Legend strip.
+    let text = font(16).color(&BLACK).pos(Pos::new(HPos::Left, VPos::Center));
+    let mut lx = 120;
+    let items: [(RGBColor, bool, String); 6] = [
+        (SLIP, false, "σ < 1: gross slip".into()),
+        (BELOW_MIN, false, "1 ≤ σ < required".into()),
+        (band_color(Some(min_hi), min_hi, top), false, format!("σ ≥ required ({min_hi})")),
+        (band_color(Some(top), min_hi, top), false, format!("σ ≥ {top}")),
+        (BLACK, true, "slip boundary σ = 1".into()),
+        (RGBColor(150, 0, 0), true, "σ = required".into()),
+    ];
+    for (color, line, label) in items {
+        if line {
+            legend.draw(&PathElement::new(vec![(lx, 22), (lx + 26, 22)], color.stroke_width(3))).map_err(e)?;
+        } else {
+            legend.draw(&Rectangle::new([(lx, 12), (lx + 26, 32)], color.filled())).map_err(e)?;
+        }
+        legend.draw_text(&label, &text, (lx + 32, 22)).map_err(e)?;
+        lx += 44 + legend.estimate_text_size(&label, &text).map_err(e)?.0 as i32;
+    }
+    Ok(())
+}
+
+/// The zero contour of `f[i][j]` (at `(xs[i], ys[j])`) by marching squares: one segment per
+/// cell crossing, linear interpolation along the cell edges; cells with a missing corner (NaN)
+/// are skipped, a saddle is resolved by the cell's mean.
+pub fn contour(xs: &[f64], ys: &[f64], f: &[Vec<f64>]) -> Vec<[(f64, f64); 2]> {
+    let mut out = Vec::new();
+    for i in 0..xs.len().saturating_sub(1) {
+        for j in 0..ys.len().saturating_sub(1) {
+            // Corners counter-clockwise from (i, j).
+            let c = [(i, j), (i + 1, j), (i + 1, j + 1), (i, j + 1)];
+            let v: Vec<f64> = c.iter().map(|&(a, b)| f[a][b]).collect();
+            if v.iter().any(|x| !x.is_finite()) {
+                continue;
+            }
+            let mut cross = Vec::with_capacity(4);
+            for k in 0..4 {
+                let (a, b) = (k, (k + 1) % 4);
+                if (v[a] < 0.0) != (v[b] < 0.0) {
+                    let t = v[a] / (v[a] - v[b]);
+                    let p = |(ci, cj): (usize, usize)| (xs[ci], ys[cj]);
+                    let (pa, pb) = (p(c[a]), p(c[b]));
+                    cross.push((pa.0 + t * (pb.0 - pa.0), pa.1 + t * (pb.1 - pa.1)));
+                }
+            }
+            match cross[..] {
+                [p, q] => out.push([p, q]),
+                [p, q, r, s] => {
+                    // Saddle: corner 0 joins the crossings next to it when the centre shares its sign.
+                    let centre_like_0 = (v.iter().sum::<f64>() < 0.0) == (v[0] < 0.0);
+                    if centre_like_0 {
+                        out.extend([[p, q], [r, s]]);
+                    } else {
+                        out.extend([[s, p], [q, r]]);
+                    }
+                }
+                _ => {}
+            }
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn contour_of_a_plane_is_the_straight_line_where_it_vanishes() {
+        // f = x + y − 1 on [0, 2]²: the contour is x + y = 1, exactly (f is linear, so the
+        // edge interpolation is exact up to round-off: 1e-12).
+        let g: Vec<f64> = (0..5).map(|i| 0.5 * f64::from(i)).collect();
+        let f: Vec<Vec<f64>> = g.iter().map(|x| g.iter().map(|y| x + y - 1.0).collect()).collect();
+        let segs = contour(&g, &g, &f);
+        assert!(!segs.is_empty());
+        for p in segs.iter().flatten() {
+            assert!((p.0 + p.1 - 1.0).abs() < 1e-12, "{p:?}");
+        }
+    }
+
+    fn row(point: u64, values: &[f64], scene: &str, sf: Option<f64>) -> SweepRow {
+        use crate::sweep::csv::{Cell, RESULT_COLUMNS};
+        let mut r = SweepRow {
+            point,
+            point_count: 0,
+            values: values.to_vec(),
+            scene: scene.into(),
+            kind: "loads".into(),
+            level: 1,
+            cells: vec![Cell::Num(None); RESULT_COLUMNS.len()],
+        };
+        let mut set = |name: &str, v: Option<f64>| {
+            if let Some(i) = crate::sweep::csv::column(name) {
+                r.cells[i] = Cell::Num(v);
+            }
+        };
+        set("safety_factor", sf);
+        set("safety_factor_min", Some(1.75));
+        set("positive_arc_deg", sf.map(|s| 10.0 * s));
+        set("reverse_arc_deg", Some(0.0));
+        r
+    }
+
+    #[test]
+    fn draws_normal_and_degenerate_sweeps_without_panicking() {
+        let dir = tempfile::tempdir().expect("temp dir");
+        let k1 = vec!["pulley.mu".to_string()];
+        let k2 = vec!["pulley.mu".to_string(), "scene.m1_kg".to_string()];
+        let line: Vec<SweepRow> = (0..20u8)
+            .flat_map(|i| {
+                let mu = 0.1 + 0.01 * f64::from(i);
+                [row(u64::from(i), &[mu], "a", Some(20.0 * mu)), row(u64::from(i), &[mu], "b", None)]
+            })
+            .collect();
+        let map: Vec<SweepRow> = (0..36u8)
+            .map(|p| {
+                let (mu, m) = (0.1 + 0.05 * f64::from(p / 6), 1000.0 * f64::from(p % 6));
+                row(u64::from(p), &[mu, m], "a", (m > 0.0).then(|| 40.0 * mu - m / 2000.0))
+            })
+            .collect();
+        let one_column: Vec<SweepRow> =
+            (0..4u8).map(|p| row(u64::from(p), &[0.2, f64::from(p)], "a", Some(1.5))).collect();
+        let cases: [(&str, &[String], &[SweepRow]); 5] = [
+            ("line", &k1, &line),
+            ("one", &k1, &line[..1]),
+            ("empty", &k1, &[]),
+            ("map", &k2, &map),
+            ("column", &k2, &one_column),
+        ];
+        for (name, keys, rows) in cases {
+            let path = dir.path().join(format!("{name}.png"));
+            plot_sweep(&path, keys, rows).expect("plot");
+            assert!(path.metadata().map(|m| m.len() > 5_000).unwrap_or(false), "{name}: no image");
+        }
+        assert!(plot_sweep(&dir.path().join("missing/x.png"), &k1, &line).is_err());
+        assert!(plot_sweep(&dir.path().join("three.png"), &[], &line).is_err());
+    }
+
+    #[test]
+    fn units_come_from_key_names() {
+        assert_eq!(key_label("scene.accel_m_s2"), "scene.accel_m_s2 (m/s²)");
+        assert_eq!(key_label("scene.m1_kg"), "scene.m1_kg (kg)");
+        assert_eq!(key_label("pulley.mu"), "pulley.mu");
+    }
+}
