@@ -187,6 +187,10 @@ impl Outputs {
         Self(self.0 | output.bit())
     }
 
+    pub fn without(self, output: Output) -> Self {
+        Self(self.0 & !output.bit())
+    }
+
     /// The outputs, in the order of [`Output::ALL`].
     pub fn iter(self) -> impl Iterator<Item = Output> {
         Output::ALL.into_iter().filter(move |o| self.contains(*o))

@@ -55,6 +55,10 @@ pub const RESULT_COLUMNS: &[(&str, Get)] = &[
     ("jdp_deg", Get::Num(|s, _| s.jdp_deg)),
     ("max_utilization", Get::Num(|s, _| s.max_utilization)),
     ("critical_mu", Get::Num(|s, _| Some(s.critical_mu))),
+    ("payload_margin_kg", Get::Num(|s, _| s.payload_margin_kg)),
+    ("payload_margin_sf_kg", Get::Num(|s, _| s.payload_margin_sf_kg)),
+    ("braking_margin_m_s2", Get::Num(|s, _| s.braking_margin_m_s2)),
+    ("braking_margin_sf_m_s2", Get::Num(|s, _| s.braking_margin_sf_m_s2)),
     ("gross_slip", Get::Flag(|s| s.gross_slip)),
     ("checks_pass", Get::Flag(|s| s.checks_pass)),
 ];
