@@ -4,7 +4,7 @@
 //! histories, abrupt steps and reversals. Every case either gives finite results that obey
 //! Coulomb's law and the end conditions (MODEL §5), or a clear error; never a panic or NaN.
 //!
-//! The long cases (N = 100 000, 1e6 steps, a duty cycle at Δt = 1e-5 s) are `#[ignore]`d:
+//! The long cases (N = 100 000, 1e6 steps, a duty cycle at Δt = 1e-6 s) are `#[ignore]`d:
 //! `cargo test --release --test stress -- --ignored` runs them; `wrapcalc bench --long` times the
 //! same sizes.
 
@@ -281,9 +281,9 @@ fn duty_cycle_time_steps_from_coarse_to_rejected() {
 }
 
 #[test]
-#[ignore = "long: a duty cycle at Δt = 1e-5 s (6.4 million steps of the suspended ropes)"]
+#[ignore = "long: a duty cycle at Δt = 1e-6 s (64 million steps of the suspended ropes)"]
 fn duty_cycle_at_a_fine_time_step() {
-    let design = duty_with_step(1e-5).expect("valid");
+    let design = duty_with_step(1e-6).expect("valid");
     let result = run_design(&design, 180).expect("runs");
     let h = result.scenes[0].history.as_ref().expect("history");
     assert!(h.rows.iter().all(|r| r.t1_n.is_finite() && r.t2_n.is_finite() && r.max_utilization.is_finite()));

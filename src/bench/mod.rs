@@ -51,9 +51,10 @@ pub struct Entry {
     pub sweep: Sweep,
 }
 
-const NODES: &[usize] = &[16, 64, 256, 1024, 4096, 16384];
+/// Node counts: ×4 from 16, and the default (180).
+const NODES: &[usize] = &[16, 64, 180, 256, 1024, 4096, 16384];
 const LONG_NODES: &[usize] = &[65536, 100_000];
-const CLARABEL_NODES: &[usize] = &[16, 64, 256];
+const CLARABEL_NODES: &[usize] = &[16, 64, 180, 256, 1024];
 /// Node counts of the duty cycle at its default time step, and the time steps at N = 360.
 const DUTY_NODES: &[usize] = &[90, 180, 360, 720, 1440];
 const DUTY_STEPS_S: &[f64] = &[4e-3, 2e-3, 1e-3, 5e-4];
@@ -154,6 +155,9 @@ pub struct BenchRow {
     pub repeats: usize,
     pub error: Option<f64>,
     pub error_metric: &'static str,
+    /// Duty cycle: RMS difference of the history's positive and reverse arcs from the finest
+    /// run (deg), reported beside the error (see [`cases`]).
+    pub arc_rms_deg: Option<f64>,
     pub peak_rss_kb: Option<u64>,
 }
 
@@ -256,16 +260,16 @@ fn run_table(
 ) -> Result<Vec<BenchRow>, BenchError> {
     let mut rows = Vec::new();
     // Finest runs of the duty cycle, by (N, Δt): each is run once, as a "reference" row.
-    let mut references: Vec<((usize, f64), Vec<cases::HistoryRow>)> = Vec::new();
+    let mut references: Vec<((usize, f64), cases::DutyRun)> = Vec::new();
     for entry in TABLE {
         for point in points(&entry.sweep, options.long) {
-            let error_of =
-                |m: &measure::Measured<Outcome>, refs: &[((usize, f64), Vec<cases::HistoryRow>)]| match duty_reference(
-                    entry,
-                ) {
-                    Some(key) => refs.iter().find(|r| r.0 == key).and_then(|r| cases::duty_error(&m.value.rows, &r.1)),
-                    None => m.value.error,
-                };
+            let error_of = |m: &measure::Measured<Outcome>, refs: &[((usize, f64), cases::DutyRun)]| {
+                let reference = duty_reference(entry).and_then(|key| refs.iter().find(|r| r.0 == key));
+                match (reference, &m.value.duty) {
+                    (Some(r), Some(run)) => cases::duty_error(run, &r.1),
+                    _ => (m.value.error, None),
+                }
+            };
             if let Some(key) = duty_reference(entry).filter(|k| !references.iter().any(|r| r.0 == *k)) {
                 let spec = Spec {
                     case: Case::DutyMid,
@@ -274,10 +278,11 @@ fn run_table(
                     point: Point { nodes: Some(key.0), time_step_s: Some(key.1), samples: None },
                 };
                 let m = run_point(options, spec)?;
-                let row = BenchRow { sweep: "reference", ..row_of(options, spec, entry.sweep.name(), &m, None) };
+                let row =
+                    BenchRow { sweep: "reference", ..row_of(options, spec, entry.sweep.name(), &m, (None, None)) };
                 progress(&row);
                 rows.push(row);
-                references.push((key, m.value.rows));
+                references.push((key, m.value.duty.unwrap_or_default()));
             }
             let spec = Spec { case: entry.case, level: entry.level, solver: entry.solver, point };
             let m = run_point(options, spec)?;
@@ -353,7 +358,7 @@ fn row_of(
     spec: Spec,
     sweep: &'static str,
     m: &measure::Measured<Outcome>,
-    error: Option<f64>,
+    (error, arc_rms_deg): (Option<f64>, Option<f64>),
 ) -> BenchRow {
     let point = spec.point;
     let error_metric = match (spec.case, spec.level) {
@@ -379,13 +384,14 @@ fn row_of(
         repeats: m.repeats,
         error,
         error_metric,
+        arc_rms_deg,
         peak_rss_kb: child_peak_rss_kb(options, spec),
     }
 }
 
 /// The measured scaling of one sweep: log–log slopes of run time and of peak memory (above the
 /// smallest point's process) against the swept size (N, samples, or 1/Δt), fitted over its
-/// larger half where fixed costs have faded.
+/// larger half (at least three points) where fixed costs have faded.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Scaling {
     pub case: &'static str,
@@ -421,7 +427,8 @@ pub fn scaling(rows: &[BenchRow]) -> Vec<Scaling> {
             .filter_map(|r| size(r).map(|x| (x, r)))
             .collect();
         pts.sort_by(|a, b| a.0.total_cmp(&b.0));
-        let upper = &pts[pts.len() / 2..];
+        // The larger half, but at least three points where the sweep has them.
+        let upper = &pts[(pts.len() / 2).min(pts.len().saturating_sub(3))..];
         if upper.len() < 2 {
             continue;
         }
