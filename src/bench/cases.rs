@@ -228,9 +228,12 @@ pub fn run_closed_form(case: Case, level: u8, solver: Solver, nodes: usize) -> R
 }
 
 /// The reference sheet's duty cycle with the given integration step.
-pub fn duty_design(sheet: &Path, time_step_s: f64) -> Result<Design, crate::sheet::SheetError> {
+pub fn duty_design(sheet: &Path, time_step_s: f64) -> Result<Design, super::BenchError> {
     let mut design = crate::sheet::load(sheet)?;
-    design.scenes.retain(|s| s.name == DUTY_SCENE);
+    design.scenes.retain(|s| s.name == DUTY_SCENE && matches!(s.kind, SceneKind::DutyCycle(_)));
+    if design.scenes.is_empty() {
+        return Err(super::BenchError::NoDutyScene { sheet: design.sheet });
+    }
     for s in &mut design.scenes {
         if let SceneKind::DutyCycle(c) = &mut s.kind {
             c.time_step_s = time_step_s;
@@ -344,6 +347,22 @@ mod tests {
         assert_eq!(exact_tension_n(Case::SteadyRolling, 0.0), Some(ROLL_T1_N));
         // The slip zone of the step: ln 1.15 / 0.25 = 0.559046 rad = 32.0310°.
         assert!(((STEP_K.ln() / MU).to_degrees() - 32.031).abs() < 1e-3);
+    }
+
+    #[test]
+    fn the_models_meet_the_closed_forms_of_the_bench_cases() {
+        // Levels 1 and 2 are exact on these cases (slip boundaries inserted exactly, exact
+        // exponentials between knots): the error is rounding, 1e-12 leaves room for the
+        // exp/ln round trips over a few hundred knots.
+        for (case, level) in
+            [(Case::StandstillStep, 2), (Case::NestedUnloading, 2), (Case::SteadyRolling, 1), (Case::SteadyRolling, 2)]
+        {
+            let out = run_closed_form(case, level, Solver::Fast, 64).expect("runs");
+            let error = out.error.expect("a closed form");
+            assert!(error < 1e-12, "{} at level {level}: {error}", case.name());
+        }
+        let checks = run_checks(Case::StandstillStep).expect("runs");
+        assert!(checks.error.expect("hand arithmetic") < 1e-14);
     }
 
     #[test]

@@ -169,6 +169,8 @@ pub enum BenchError {
     Level2 { case: &'static str, source: Level2Error },
     #[error(transparent)]
     Sheet(#[from] SheetError),
+    #[error("{sheet}: the bench runs the duty-cycle scene \"{}\", which this sheet does not have", cases::DUTY_SCENE)]
+    NoDutyScene { sheet: String },
     #[error("cannot start the single-threaded pool: {0}")]
     Pool(String),
     #[error("--probe {0:?}: expected case:level:solver:nodes:time_step_s:samples")]
@@ -259,6 +261,10 @@ fn run_table(
     progress: &mut (dyn FnMut(&BenchRow) + Send),
 ) -> Result<Vec<BenchRow>, BenchError> {
     let mut rows = Vec::new();
+    // A sheet that cannot be read fails the bench before anything runs.
+    if TABLE.iter().any(|e| e.case == Case::DutyMid) {
+        cases::duty_design(&options.sheet, DUTY_DEFAULT_STEP_S)?;
+    }
     // Finest runs of the duty cycle, by (N, Δt): each is run once, as a "reference" row.
     let mut references: Vec<((usize, f64), cases::DutyRun)> = Vec::new();
     for entry in TABLE {
