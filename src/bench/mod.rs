@@ -339,8 +339,9 @@ fn run_point(options: &BenchOptions, spec: Spec) -> Result<measure::Measured<Out
     measure::measure(|| run_once(options, spec))
 }
 
-/// One run of a point. Inputs (a sheet, a long history) are prepared outside the timing only
-/// where noted: the duty cycle's sheet is read and the walk's samples are drawn inside it.
+/// One run of a point, as timed: it includes reading the sheet of the duty cycle (milliseconds
+/// against 0.1–5 s) and drawing the random walk's samples (under 1 % of its run),
+/// so that a memory probe measures the same work.
 fn run_once(options: &BenchOptions, spec: Spec) -> Result<Outcome, BenchError> {
     let case = spec.case.name();
     let run_err = |source| BenchError::Run { case, source };
