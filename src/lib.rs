@@ -10,6 +10,7 @@
 //! (α); v > 0 means the rope travels side 1 → side 2; friction q on the rope is positive in +θ
 //! and `dT/dθ = −q`; tensions are per rope; SI units, angles reported in degrees.
 
+pub mod bench;
 pub mod contact;
 pub mod derived;
 pub mod design;

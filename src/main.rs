@@ -32,6 +32,27 @@ enum Command {
     Sweep(SweepArgs),
     /// Join the CSVs of `sweep --shard` runs into the sweep.csv (and sweep.png) of a single run.
     Merge(MergeArgs),
+    /// Run time against error of every level on fixed cases; writes bench.csv, scaling.csv, bench.png.
+    Bench(BenchArgs),
+}
+
+#[derive(clap::Args)]
+struct BenchArgs {
+    /// Report directory.
+    #[arg(long, default_value = "reports/bench")]
+    out: PathBuf,
+    /// Also the largest cases (N = 100 000, a history of 1e6 samples); takes minutes.
+    #[arg(long)]
+    long: bool,
+    /// The reference sheet whose duty-MID scene is benched.
+    #[arg(long, default_value = "tables/guo2020.toml")]
+    sheet: PathBuf,
+    /// Print nothing but errors.
+    #[arg(long)]
+    quiet: bool,
+    /// Run one point alone and print the process's peak memory (kB); used by the bench itself.
+    #[arg(long, hide = true, value_name = "SPEC")]
+    probe: Option<String>,
 }
 
 #[derive(clap::Args)]
@@ -171,6 +192,26 @@ fn main() -> ExitCode {
 fn execute(cli: Cli) -> anyhow::Result<bool> {
     match cli.command {
         Command::Run(args) => run_command(args),
+        Command::Bench(args) => {
+            let probe_exe = std::env::current_exe().ok();
+            let options = wrapcalc::bench::BenchOptions { long: args.long, sheet: args.sheet, probe_exe };
+            if let Some(spec) = &args.probe {
+                println!("{}", wrapcalc::bench::probe(&options, spec)?.map_or_else(|| "-".into(), |kb| kb.to_string()));
+                return Ok(true);
+            }
+            let rows = wrapcalc::bench::run(&options, &mut |r| {
+                if !args.quiet {
+                    eprintln!("{}", wrapcalc::bench::output::progress_line(r));
+                }
+            })?;
+            let scaling = wrapcalc::bench::scaling(&rows);
+            wrapcalc::bench::output::write(&args.out, &rows, &scaling)?;
+            if !args.quiet {
+                print!("{}", wrapcalc::bench::output::scaling_table(&scaling));
+                println!("bench report written to {}", args.out.display());
+            }
+            Ok(true)
+        }
         Command::Check(args) => {
             let design = sheet::load(&args.sheet)?;
             let scenes: Vec<&Scene> = design.scenes.iter().collect();

@@ -7,6 +7,7 @@
 
 pub mod csv_out;
 pub mod plot;
+pub mod plot_bench;
 pub mod plot_history;
 pub mod plot_sweep;
 pub mod summary;
@@ -29,7 +30,7 @@ pub enum ReportError {
     Plot(#[from] plot::PlotError),
 }
 
-fn io(path: &Path) -> impl FnOnce(std::io::Error) -> ReportError + '_ {
+pub(crate) fn io(path: &Path) -> impl FnOnce(std::io::Error) -> ReportError + '_ {
     move |source| ReportError::Io { path: path.display().to_string(), source }
 }
 
@@ -41,13 +42,19 @@ pub struct ReportOptions {
 
 /// Writes the complete report for `run` to `dir`, atomically.
 pub fn write(dir: &Path, summary: &Summary, run: &RunResult, options: ReportOptions) -> Result<(), ReportError> {
+    write_dir(dir, |staged| write_into(staged, summary, run, options))
+}
+
+/// Puts a directory in place whole or not at all: `fill` writes it into a fresh staging
+/// directory beside `dir`, which then replaces `dir`.
+pub fn write_dir(dir: &Path, fill: impl FnOnce(&Path) -> Result<(), ReportError>) -> Result<(), ReportError> {
     let parent = match dir.parent() {
         Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
         _ => PathBuf::from("."),
     };
     fs::create_dir_all(&parent).map_err(io(&parent))?;
     let staging = tempfile::Builder::new().prefix(".wrapcalc-new-").tempdir_in(&parent).map_err(io(&parent))?;
-    write_into(staging.path(), summary, run, options)?;
+    fill(staging.path())?;
     swap_into_place(staging, dir, &parent)
 }
 

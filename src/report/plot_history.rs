@@ -34,7 +34,7 @@ fn e<E: std::fmt::Display>(err: E) -> String {
 }
 
 /// Draws a `size` PNG at `path` with `draw` under a centred caption.
-fn render(
+pub(super) fn render(
     path: &Path,
     size: (u32, u32),
     title: &str,
