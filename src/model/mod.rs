@@ -6,4 +6,5 @@
 pub mod level0;
 pub mod level1;
 pub mod level2;
+pub mod level3;
 pub mod level4;
