@@ -158,12 +158,8 @@ impl Program {
             self.q.push(-state.tension_n[j + 1] / s + rho * (y(j + 1) - y(j)));
         }
         self.b.clear();
-        for k in 0..n {
-            self.b.push(loads.mu * normal_n[k] / s - d(k));
-        }
-        for k in 0..n {
-            self.b.push(loads.mu * normal_n[k] / s + d(k));
-        }
+        self.b.extend(normal_n.iter().enumerate().map(|(k, nk)| loads.mu * nk / s - d(k)));
+        self.b.extend(normal_n.iter().enumerate().map(|(k, nk)| loads.mu * nk / s + d(k)));
         match &mut self.solver {
             Some(solver) => {
                 solver.update_q(&self.q).map_err(|e| SolveError { status: format!("data update: {e:?}") })?;
@@ -185,8 +181,8 @@ impl Program {
         }
         state.tension_n[0] = loads.t1_n;
         state.tension_n[n] = loads.t2_n;
-        for j in 0..m {
-            state.tension_n[j + 1] = x[j] * s;
+        for (t, xj) in state.tension_n[1..n].iter_mut().zip(x) {
+            *t = xj * s;
         }
         // Slip from the multipliers: the complementary energy is (Rh s²/EA) times the scaled
         // objective, so the slip conjugate to F_k is z · R h s / EA; the bound F ≤ μN is active

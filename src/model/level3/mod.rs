@@ -375,10 +375,12 @@ pub fn summarize(state: &State, mu: f64, zones: bool) -> Result<WrapSummary, Roo
         if above && q > 0.0 {
             last_positive = Some(k);
         }
-        if above && q < 0.0 && jdp.is_none() {
-            if let Some(p) = last_positive {
-                jdp = Some(sign_change(state, p, k, &mut roots)?);
-            }
+        if above
+            && q < 0.0
+            && jdp.is_none()
+            && let Some(p) = last_positive
+        {
+            jdp = Some(sign_change(state, p, k, &mut roots)?);
         }
         if zones {
             let st = law.state(if u >= SLIP_UTILIZATION { 1.0 } else { 0.0 }, q);
