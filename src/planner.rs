@@ -6,11 +6,17 @@
 //! | `loads` | checks + distribution | 1 (creep theory, exact for constant end loads) |
 //! | `history` | checks + history + distributions | 2 (discrete stick–slip model: the stuck rope remembers the history) |
 //! | `duty-cycle` | checks + history + distributions | 4 (suspended-rope dynamics give T1(t), T2(t); level 2 on the wrap) |
+//!
+//! A sheet with a `[lining]` section switches level 3 (elastic lining, rope bending and inertia)
+//! on for the scenes that run the wrap in time ([`plan_with_lining`]): `history` scenes run at
+//! level 3; `duty-cycle` scenes stay level 4 (the suspended ropes) with the wrap at level 3, as
+//! their reason says ([`wrap_level`]). `--level 3` forces it (also on a `loads` scene, run as
+//! a steady run-through) and is an error without a `[lining]`.
 
 use crate::design::{Scene, SceneKind};
 
-/// The levels this version implements (level 3, lining compliance, is not among them yet).
-pub const LEVELS: &[u8] = &[0, 1, 2, 4];
+/// The levels this version implements.
+pub const LEVELS: &[u8] = &[0, 1, 2, 3, 4];
 
 /// What the caller wants from a run.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -29,7 +35,7 @@ pub struct Plan {
 
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum PlanError {
-    #[error("scene \"{scene}\": level {level} is not available in this version (levels 0, 1, 2, 4); use --level auto")]
+    #[error("scene \"{scene}\": level {level} is not available in this version (levels 0–4); use --level auto")]
     NotAvailable { scene: String, level: u8 },
     #[error(
         "scene \"{scene}\": level {level} cannot answer a {kind} scene ({why}); use --level auto or a level ≥ {needed}"
@@ -37,6 +43,10 @@ pub enum PlanError {
     TooLow { scene: String, kind: &'static str, level: u8, needed: u8, why: &'static str },
     #[error("scene \"{scene}\": level 4 runs the hoist of a duty-cycle scene; a {kind} scene has no hoist to run")]
     NoHoist { scene: String, kind: &'static str },
+    #[error(
+        "scene \"{scene}\": level 3 is not available without a [lining] section in the sheet (shear_stiffness_n_per_m2, or thickness_m, shear_modulus_pa and contact_width_m); add one or use --level auto"
+    )]
+    NoLining { scene: String },
 }
 
 /// Chooses the level for one scene.
@@ -84,5 +94,40 @@ pub fn plan(scene: &Scene, request: Request) -> Result<Plan, PlanError> {
             level: 4,
             reason: "a hoisting cycle: the suspended ropes' dynamics give the end tensions, the discrete stick–slip model the wrap (level 4)".into(),
         }),
+    }
+}
+
+/// [`plan`] for a design that may have a `[lining]` (`lining`): level 3 where the sheet
+/// switches it on or `--level 3` forces it; everything else as [`plan`].
+pub fn plan_with_lining(scene: &Scene, request: Request, lining: bool) -> Result<Plan, PlanError> {
+    const WRAP3: &str = "the wrap at level 3 (elastic lining of the sheet's [lining], rope bending and inertia)";
+    match (request, &scene.kind, lining) {
+        (Request::Full { forced_level: Some(3) }, _, false) => Err(PlanError::NoLining { scene: scene.name.clone() }),
+        (Request::Full { forced_level: Some(3) }, SceneKind::DutyCycle(_), true) => Ok(Plan {
+            level: 4,
+            reason: format!("forced by --level 3: {WRAP3}, its ends from the suspended ropes' dynamics (level 4)"),
+        }),
+        (Request::Full { forced_level: Some(3) }, _, true) => {
+            Ok(Plan { level: 3, reason: format!("forced by --level 3: {WRAP3}") })
+        }
+        (Request::Full { forced_level: None }, SceneKind::History(_), true) => Ok(Plan {
+            level: 3,
+            reason: format!("a load history on an elastic lining: the stuck rope and the sheared lining remember it; {WRAP3}"),
+        }),
+        (Request::Full { forced_level: lvl @ (None | Some(4)) }, SceneKind::DutyCycle(_), true) => {
+            let how = if lvl.is_some() { "forced by --level 4" } else { "a hoisting cycle" };
+            Ok(Plan { level: 4, reason: format!("{how}: the suspended ropes' dynamics give the end tensions (level 4), {WRAP3}") })
+        }
+        _ => plan(scene, request),
+    }
+}
+
+/// The level the wrap runs at in a time scene of this plan: 3 for a level-3 plan and for a
+/// level-4 plan on a sheet with a `[lining]`, else 2.
+pub fn wrap_level(plan: &Plan, lining: bool) -> u8 {
+    match plan.level {
+        3 => 3,
+        4 if lining => 3,
+        _ => 2,
     }
 }
