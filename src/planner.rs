@@ -112,11 +112,16 @@ pub fn plan_with_lining(scene: &Scene, request: Request, lining: bool) -> Result
         }
         (Request::Full { forced_level: None }, SceneKind::History(_), true) => Ok(Plan {
             level: 3,
-            reason: format!("a load history on an elastic lining: the stuck rope and the sheared lining remember it; {WRAP3}"),
+            reason: format!(
+                "a load history on an elastic lining: the stuck rope and the sheared lining remember it; {WRAP3}"
+            ),
         }),
         (Request::Full { forced_level: lvl @ (None | Some(4)) }, SceneKind::DutyCycle(_), true) => {
             let how = if lvl.is_some() { "forced by --level 4" } else { "a hoisting cycle" };
-            Ok(Plan { level: 4, reason: format!("{how}: the suspended ropes' dynamics give the end tensions (level 4), {WRAP3}") })
+            Ok(Plan {
+                level: 4,
+                reason: format!("{how}: the suspended ropes' dynamics give the end tensions (level 4), {WRAP3}"),
+            })
         }
         _ => plan(scene, request),
     }

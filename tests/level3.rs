@@ -219,3 +219,96 @@ fn an_unsolved_increment_is_an_error() {
         other => panic!("expected a solver error, got {other}"),
     }
 }
+
+const LINING_SHEET: &str = r#"title = "level 3 sheet"
+[pulley]
+diameter_m = 5.0
+mu = 0.25
+wrap_angle_deg = 187.42
+
+[rope]
+count = 6
+mass_per_m_kg = 10.81
+ea_n = 2.634e8
+diameter_m = 0.054
+modulus_pa = 1.15e11
+
+[lining]
+thickness_m = 0.03
+shear_modulus_pa = 5.0e6
+contact_width_m = 0.045
+rope_inertia = true
+
+[[scene]]
+name = "steps"
+kind = "history"
+t_s = [0.0, 1.0, 2.0, 4.0]
+t1_n = [2.0e5, 2.3e5, 2.3e5, 2.3e5]
+t2_n = [2.0e5, 2.0e5, 2.2e5, 2.2e5]
+speed_m_s = [0.0, 0.0, 0.0, 0.5]
+snapshots_s = [2.0]
+
+[[scene]]
+name = "still"
+kind = "loads"
+t1_n = 2.1e5
+t2_n = 2.0e5
+"#;
+
+/// The sheet's keys reach the model: k_s = G b / t and EI = 0.001 E π d⁴/64 (the default ratio).
+#[test]
+fn sheet_keys_derive_the_lining_and_bending_stiffness() {
+    let design = wrapcalc::sheet::parse("l3.toml", LINING_SHEET).expect("valid sheet");
+    let lining = design.lining.expect("a lining");
+    assert!((lining.shear_stiffness_n_per_m2 - 5.0e6 * 0.045 / 0.03).abs() < 1e-6);
+    assert!(lining.rope_inertia);
+    let ei = 0.001 * 1.15e11 * std::f64::consts::PI * 0.054_f64.powi(4) / 64.0;
+    assert!((design.rope.bending_stiffness_n_m2 - ei).abs() < 1e-9 * ei, "{}", design.rope.bending_stiffness_n_m2);
+    assert!((ei - 48.0).abs() < 0.05, "hand value 48.0 N·m²: {ei}");
+}
+
+/// With a [lining] the planner runs history scenes at level 3, keeps loads scenes at level 1,
+/// and `--level 3` forces it; without one, `--level 3` is an error naming the section.
+#[test]
+fn the_planner_switches_level_3_on_with_the_lining() {
+    use wrapcalc::planner::{PlanError, Request, plan_with_lining, wrap_level};
+    let design = wrapcalc::sheet::parse("l3.toml", LINING_SHEET).expect("valid sheet");
+    let auto = Request::Full { forced_level: None };
+    let forced3 = Request::Full { forced_level: Some(3) };
+    let history = &design.scenes[0];
+    let loads = &design.scenes[1];
+    assert_eq!(plan_with_lining(history, auto, true).unwrap().level, 3);
+    assert_eq!(plan_with_lining(loads, auto, true).unwrap().level, 1);
+    assert_eq!(plan_with_lining(loads, forced3, true).unwrap().level, 3);
+    assert_eq!(plan_with_lining(history, auto, false).unwrap().level, 2);
+    let plan2 = plan_with_lining(history, Request::Full { forced_level: Some(2) }, true).unwrap();
+    assert_eq!(wrap_level(&plan2, true), 2, "--level 2 keeps the rigid lining");
+    let err = plan_with_lining(history, forced3, false).unwrap_err();
+    assert!(matches!(err, PlanError::NoLining { .. }));
+    assert!(err.to_string().contains("[lining]"), "{err}");
+}
+
+/// A history scene on an elastic lining through the whole run: level 3 in the result,
+/// Coulomb at every reported row, finite values, clarabel verdicts tallied.
+#[test]
+fn a_history_scene_runs_at_level_3() {
+    use wrapcalc::run::{Options, run};
+    let design = wrapcalc::sheet::parse("l3.toml", LINING_SHEET).expect("valid sheet");
+    let scenes: Vec<_> = design.scenes.iter().take(1).collect();
+    let result = run(&design, &scenes, Options { nodes: 90, ..Options::default() }).expect("runs");
+    let scene = &result.scenes[0];
+    assert_eq!(scene.plan.level, 3);
+    let wrap = scene.wrap.as_ref().expect("a distribution");
+    for d in scene.snapshots.iter().chain([&wrap.distribution]) {
+        for s in &d.samples {
+            assert!(s.friction_n_per_rad.is_finite() && s.normal_n_per_rad > 0.0);
+            assert!(s.friction_n_per_rad.abs() <= d.mu * s.normal_n_per_rad * (1.0 + 1e-8), "{s:?}");
+        }
+    }
+    // At t = 2 s both ends were raised at rest: positive friction from side 1, reverse from
+    // side 2, one sign change between.
+    let at2 = &scene.snapshots[0];
+    assert!(at2.jdp_deg.is_some_and(|j| j > 0.0 && j < 187.42), "{:?}", at2.jdp_deg);
+    let stats = scene.history.as_ref().expect("history").stats;
+    assert!(stats.qp_solved > 0 && stats.qp_almost_solved == 0);
+}

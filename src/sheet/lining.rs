@@ -4,8 +4,8 @@
 use super::diag::Collector;
 use super::raw::{RawLining, RawRope};
 use super::validate::{At, NON_NEGATIVE, POSITIVE, checked, optional, required};
-use toml::Spanned;
 use crate::design::{Lining, Rope};
+use toml::Spanned;
 
 /// The paper's bending-stiffness ratio of a stranded rope (EI over that of a solid bar).
 pub const DEFAULT_BENDING_RATIO: f64 = 0.001;
@@ -26,7 +26,8 @@ pub(super) fn lining_section(
         if let (Some(r), Some(rope)) = (raw_rope, rope)
             && rope.bending_stiffness_n_m2 > 0.0
         {
-            let span = r.get_ref().bending_stiffness_n_m2.as_ref().or(r.get_ref().diameter_m.as_ref()).map(|v| v.span());
+            let span =
+                r.get_ref().bending_stiffness_n_m2.as_ref().or(r.get_ref().diameter_m.as_ref()).map(|v| v.span());
             c.push(
                 span,
                 None,
@@ -44,7 +45,8 @@ pub(super) fn lining_section(
     let k_s = match (&l.shear_stiffness_n_per_m2, derived.iter().any(|v| v.is_some())) {
         (Some(k), false) => checked(c, at, "shear_stiffness_n_per_m2", k, POSITIVE),
         (Some(k), true) => {
-            let msg = "give either shear_stiffness_n_per_m2 or thickness_m, shear_modulus_pa and contact_width_m, not both";
+            let msg =
+                "give either shear_stiffness_n_per_m2 or thickness_m, shear_modulus_pa and contact_width_m, not both";
             c.push(Some(k.span()), None, "lining.shear_stiffness_n_per_m2", msg);
             None
         }
@@ -85,7 +87,9 @@ pub(super) fn bending_stiffness(c: &mut Collector, at: At, r: &RawRope) -> Optio
             let d = required(c, at, "diameter_m", &r.diameter_m, POSITIVE);
             let e = required(c, at, "modulus_pa", &r.modulus_pa, POSITIVE);
             let ratio = match &r.bending_ratio {
-                Some(v) => super::validate::in_range(c, at, "bending_ratio", v, |x| x > 0.0 && x <= 1.0, "a ratio 0 < r ≤ 1"),
+                Some(v) => {
+                    super::validate::in_range(c, at, "bending_ratio", v, |x| x > 0.0 && x <= 1.0, "a ratio 0 < r ≤ 1")
+                }
                 None => optional(c, at, "bending_ratio", &None, POSITIVE, DEFAULT_BENDING_RATIO),
             };
             Some(ratio? * e? * std::f64::consts::PI * d?.powi(4) / 64.0)
