@@ -360,6 +360,7 @@ fn wrap_history(
                 bending_stiffness_n_m2: design.rope.bending_stiffness_n_m2,
                 rope_inertia: lining.rope_inertia,
                 max_iter: level3::MAX_ITER,
+                solver: options.solver,
             };
             let initial = level3::State::from_tension(alpha, options.nodes, |theta| match initial {
                 Initial::Uniform(t) => t,

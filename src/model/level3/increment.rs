@@ -132,31 +132,81 @@ impl Program {
             .map_err(|e| SolveError { status: format!("{e}") })
     }
 
+    /// The linear term `q` of the objective for the increment from `state` (old tensions and
+    /// shear) to `loads`: `q = −x° + ρ Dᵀ(d − f°)`.
+    fn linear_term(&mut self, state: &State, loads: &Loads) {
+        let n = self.segments;
+        let s = loads.t1_n.max(loads.t2_n);
+        let rho = self.rho;
+        self.q.clear();
+        for j in 0..n - 1 {
+            // Variable j is cut j + 1: +1 in segment j + 1, −1 in segment j.
+            let y = |k: usize| end_term(loads, n, k) - state.friction_n[k] / s;
+            self.q.push(-state.tension_n[j + 1] / s + rho * (y(j + 1) - y(j)));
+        }
+    }
+
+    /// The increment when no segment reaches its Coulomb bound: the unconstrained minimiser
+    /// `(I + ρ DᵀD) x = −q` (tridiagonal, O(N) by the Thomas algorithm). It is the solution of
+    /// the program exactly when it satisfies every bound strictly (all multipliers zero), which
+    /// the caller checks against the contact forces of the new tensions. Returns false, leaving
+    /// `state` unchanged, if a bound is violated.
+    pub fn solve_elastic(
+        &mut self,
+        state: &mut State,
+        loads: &Loads,
+        mu: f64,
+        normal_n: &mut Vec<f64>,
+        bending: &super::state::Bending,
+        centrifugal_n: f64,
+    ) -> bool {
+        let n = self.segments;
+        let m = n - 1;
+        let s = loads.t1_n.max(loads.t2_n);
+        let (diag, off) = (1.0 + 2.0 * self.rho, -self.rho);
+        self.linear_term(state, loads);
+        // Thomas: forward sweep on c' and d', back substitution into x (kept in self.b).
+        let (mut c, x) = (vec![0.0; m], &mut self.b);
+        x.clear();
+        x.resize(m, 0.0);
+        let mut denom = diag;
+        c[0] = off / denom;
+        x[0] = -self.q[0] / denom;
+        for j in 1..m {
+            denom = diag - off * c[j - 1];
+            c[j] = off / denom;
+            x[j] = (-self.q[j] - off * x[j - 1]) / denom;
+        }
+        for j in (0..m - 1).rev() {
+            x[j] -= c[j] * x[j + 1];
+        }
+        let mut tension = Vec::with_capacity(n + 1);
+        tension.push(loads.t1_n);
+        tension.extend(x.iter().map(|v| v * s));
+        tension.push(loads.t2_n);
+        super::state::normal_forces(&tension, centrifugal_n, state.pitch_rad, bending, normal_n);
+        let inside = (0..n).all(|k| {
+            let f = tension[k] - tension[k + 1] + loads.inertia_n;
+            f.is_finite() && f.abs() < mu * normal_n[k] * (1.0 - 1e-6)
+        });
+        if inside {
+            for k in 0..n {
+                state.friction_n[k] = tension[k] - tension[k + 1] + loads.inertia_n;
+                state.slip_m[k] = 0.0;
+            }
+            state.tension_n = tension;
+        }
+        inside
+    }
+
     /// Solves the increment from `state` (its tensions and shear are the old values; its ends
     /// are replaced by the loads) with the contact forces `normal_n` in Coulomb's bound.
     /// On success the state holds the new tensions, friction and slip.
     pub fn solve(&mut self, state: &mut State, loads: &Loads, normal_n: &[f64]) -> Result<Verdict, SolveError> {
         let n = self.segments;
-        let m = n - 1;
         let s = loads.t1_n.max(loads.t2_n);
-        let rho = self.rho;
-        // d_k: the end cuts and the inertia, scaled.
-        let d = |k: usize| {
-            let mut v = loads.inertia_n / s;
-            if k == 0 {
-                v += loads.t1_n / s;
-            }
-            if k == n - 1 {
-                v -= loads.t2_n / s;
-            }
-            v
-        };
-        // q = −x° + ρ Dᵀ(d − f°); (Dᵀy)_j = y_{j+1}·(+1)… var j is cut j+1: +1 from segment j+1, −1 from segment j.
-        self.q.clear();
-        for j in 0..m {
-            let y = |k: usize| d(k) - state.friction_n[k] / s;
-            self.q.push(-state.tension_n[j + 1] / s + rho * (y(j + 1) - y(j)));
-        }
+        let d = |k: usize| end_term(loads, n, k);
+        self.linear_term(state, loads);
         self.b.clear();
         self.b.extend(normal_n.iter().enumerate().map(|(k, nk)| loads.mu * nk / s - d(k)));
         self.b.extend(normal_n.iter().enumerate().map(|(k, nk)| loads.mu * nk / s + d(k)));
@@ -195,4 +245,18 @@ impl Program {
         }
         Ok(verdict)
     }
+}
+
+/// `d_k`: what the end tensions and the inertia add to segment k's friction, scaled by
+/// `max(T1, T2)`.
+fn end_term(loads: &Loads, segments: usize, k: usize) -> f64 {
+    let s = loads.t1_n.max(loads.t2_n);
+    let mut v = loads.inertia_n / s;
+    if k == 0 {
+        v += loads.t1_n / s;
+    }
+    if k == segments - 1 {
+        v -= loads.t2_n / s;
+    }
+    v
 }

@@ -40,6 +40,12 @@
 //! counted in [`StepStats::qp_solved`]; the number of extra passes in
 //! [`StepStats::normal_force_passes`]).
 //!
+//! With the fast solver (the default) each increment first tries the unconstrained minimiser, a
+//! tridiagonal solve: when it keeps every segment strictly inside its Coulomb bound it *is* the
+//! program's optimum (all multipliers zero) and clarabel is not called; otherwise clarabel
+//! solves the program. `--solver clarabel` calls clarabel on every increment; both give the same
+//! increments (tested).
+//!
 //! # Time stepping
 //!
 //! Between history samples the ends and speed are linear in time. A sample interval is split
@@ -56,7 +62,7 @@ pub mod state;
 use crate::contact::{ARC_THRESHOLD, ContactLaw, SLIP_UTILIZATION};
 use crate::derived::{ArcTally, WrapSummary};
 use crate::model::level0::{EndState, euler_limit, safety_factor};
-use crate::model::level2::{HistoryRow, HistoryRun, MAP_COLUMNS, Output, Snapshot, StepStats};
+use crate::model::level2::{HistoryRow, HistoryRun, MAP_COLUMNS, Output, Snapshot, Solver, StepStats};
 use crate::roots::{RootError, RootStats, brent};
 use crate::wrap::{Distribution, Sample, Zone};
 pub use increment::{Loads, Program, SolveError, Verdict};
@@ -90,6 +96,9 @@ pub struct Params {
     pub rope_inertia: bool,
     /// clarabel's iteration cap per solve.
     pub max_iter: u32,
+    /// `Fast`: try the elastic minimiser first ([`Program::solve_elastic`]) and call clarabel
+    /// only when a segment reaches its bound; `Clarabel`: clarabel on every increment.
+    pub solver: Solver,
 }
 
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -200,8 +209,15 @@ impl<'a> Simulation<'a> {
         Ok(())
     }
 
-    /// One increment: advect by `delta_rad`, then solve for the ends of `s`.
-    fn increment(&mut self, s: &HistorySample, delta_rad: f64, accel_m_s2: f64, dt_s: f64) -> Result<(), Level3Error> {
+    /// One increment: advect by `delta_rad` (pulley travel, rad), then solve for the ends of
+    /// `s` at rope acceleration `accel_m_s2` over `dt_s`.
+    pub fn increment(
+        &mut self,
+        s: &HistorySample,
+        delta_rad: f64,
+        accel_m_s2: f64,
+        dt_s: f64,
+    ) -> Result<(), Level3Error> {
         let p = self.params;
         let c = p.mass_per_m_kg * s.speed_m_s * s.speed_m_s;
         let lo = s.t1_n.min(s.t2_n);
@@ -223,7 +239,12 @@ impl<'a> Simulation<'a> {
         let mut next = std::mem::take(&mut self.scratch);
         state::normal_forces(&self.state.tension_n, c, self.state.pitch_rad, &bending, &mut normal);
         self.gross_slip = false;
-        for pass in 1.. {
+        let elastic = p.solver == Solver::Fast
+            && self.program.solve_elastic(&mut self.state, &loads, p.mu, &mut normal, &bending, c);
+        if elastic {
+            self.stats.elastic_increments += 1;
+        }
+        for pass in (1..).take_while(|_| !elastic) {
             if pass > MAX_NORMAL_PASSES {
                 return Err(Level3Error::NormalForces { t_s: s.t_s });
             }
@@ -245,7 +266,7 @@ impl<'a> Simulation<'a> {
                 }
             }
             state::normal_forces(&self.state.tension_n, c, self.state.pitch_rad, &bending, &mut next);
-            let settled = normal.iter().zip(&next).all(|(a, b)| (a - b).abs() <= NORMAL_TOLERANCE * b.abs());
+            let settled = settled(&self.state.friction_n, &normal, &next, p.mu);
             std::mem::swap(&mut normal, &mut next);
             if settled {
                 break;
@@ -262,6 +283,21 @@ impl<'a> Simulation<'a> {
         Ok(())
     }
 }
+
+/// Whether a solution found with the contact forces `used` is the fixed point for the forces
+/// `new` of its own tensions. Only segments at the Coulomb bound see N in the optimality
+/// conditions: there N must agree to [`NORMAL_TOLERANCE`]; a segment inside the bound stays a
+/// solution of the same program as long as it is inside the new bound too.
+fn settled(friction_n: &[f64], used: &[f64], new: &[f64], mu: f64) -> bool {
+    friction_n.iter().zip(used).zip(new).all(|((f, a), b)| {
+        let at_bound = f.abs() >= mu * a * (1.0 - ACTIVE_GAP);
+        if at_bound { (a - b).abs() <= NORMAL_TOLERANCE * b.abs() } else { f.abs() < mu * b }
+    })
+}
+
+/// A segment whose friction is within this fraction of its bound counts as at the bound
+/// (clarabel's interior-point solution approaches an active bound to about 1e-9).
+const ACTIVE_GAP: f64 = 1e-6;
 
 /// The rope sliding over the whole wrap (no admissible field): the contact force falls from
 /// the higher end at |q| = μn (without the bending contribution), friction saturated.
