@@ -1,8 +1,8 @@
 //! One level-3 increment as a convex QP in clarabel (the formulation is in the [module
 //! doc](super)).
 //!
-//! Unknowns: the interior cut tensions `x_k = T_k / s`, k = 1 … N − 1, scaled by
-//! `s = max(n1, n2)`. With `D` the segment difference (`(Dx)_k = x_k − x_{k+1}`, end cuts as
+//! Unknowns: the changes over the increment of the interior cut tensions `x_k = T_k / s`,
+//! k = 1 … N − 1, scaled by `s = max(T1, T2)` (written below for x itself). With `D` the segment difference (`(Dx)_k = x_k − x_{k+1}`, end cuts as
 //! data in `d`), the friction of segment k is `F_k / s = (Dx)_k + d_k`. The complementary energy
 //! of the increment, times `EA/(R h s²)`, is
 //!
@@ -207,9 +207,29 @@ impl Program {
         let s = loads.t1_n.max(loads.t2_n);
         let d = |k: usize| end_term(loads, n, k);
         self.linear_term(state, loads);
+        // The unknowns are the changes y = x − x° (an increment moves little, so the optimum's
+        // objective is small and clarabel's tolerances act on the change itself):
+        // q_y = q + P x°, and A y ≤ b − A x° with (A x°)_k = ±(D x°)_k.
+        let old = |j: usize| state.tension_n[j + 1] / s;
+        let rho = self.rho;
+        for (j, qj) in self.q.iter_mut().enumerate() {
+            let mut px = (1.0 + 2.0 * rho) * old(j);
+            if j > 0 {
+                px -= rho * old(j - 1);
+            }
+            if j + 2 < n {
+                px -= rho * old(j + 1);
+            }
+            *qj += px;
+        }
+        let dx_old = |k: usize| {
+            let here = if k >= 1 { state.tension_n[k] / s } else { 0.0 };
+            let next = if k + 1 < n { state.tension_n[k + 1] / s } else { 0.0 };
+            here - next
+        };
         self.b.clear();
-        self.b.extend(normal_n.iter().enumerate().map(|(k, nk)| loads.mu * nk / s - d(k)));
-        self.b.extend(normal_n.iter().enumerate().map(|(k, nk)| loads.mu * nk / s + d(k)));
+        self.b.extend(normal_n.iter().enumerate().map(|(k, nk)| loads.mu * nk / s - d(k) - dx_old(k)));
+        self.b.extend(normal_n.iter().enumerate().map(|(k, nk)| loads.mu * nk / s + d(k) + dx_old(k)));
         match &mut self.solver {
             Some(solver) => {
                 solver.update_q(&self.q).map_err(|e| SolveError { status: format!("data update: {e:?}") })?;
@@ -231,8 +251,8 @@ impl Program {
         }
         state.tension_n[0] = loads.t1_n;
         state.tension_n[n] = loads.t2_n;
-        for (t, xj) in state.tension_n[1..n].iter_mut().zip(x) {
-            *t = xj * s;
+        for (t, yj) in state.tension_n[1..n].iter_mut().zip(x) {
+            *t += yj * s;
         }
         // Slip from the multipliers: the complementary energy is (Rh s²/EA) times the scaled
         // objective, so the slip conjugate to F_k is z · R h s / EA; the bound F ≤ μN is active
