@@ -1,6 +1,8 @@
 //! Level 3 run time: one increment (elastic lining, clarabel, fixed point on the contact
 //! forces) at N = 90 and 360, and the reference hoist's MID lifting cycle on an elastic lining
-//! (`tables/guo2020-lining.toml`, wrap at level 3) at N = 90 and 180.
+//! (`tables/guo2020-lining.toml`, wrap at level 3) at N = 90, 180 and 360 with the fast path
+//! (elastic minimiser, clarabel where a bound is reached) and at N = 90 with clarabel on every
+//! increment.
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
@@ -49,9 +51,14 @@ fn bench(c: &mut Criterion) {
     let design =
         sheet::load(Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/tables/guo2020-lining.toml"))).expect("loads");
     let scene = design.scenes.iter().find(|s| s.name == "duty-MID").expect("duty-MID");
-    for nodes in [90, 180] {
-        group.bench_function(format!("mid_cycle_n{nodes}"), |b| {
-            b.iter(|| run::run(&design, &[scene], Options { nodes, ..Options::default() }).expect("runs"))
+    for (nodes, solver, name) in [
+        (90, Solver::Fast, "fast"),
+        (180, Solver::Fast, "fast"),
+        (360, Solver::Fast, "fast"),
+        (90, Solver::Clarabel, "clarabel"),
+    ] {
+        group.bench_function(format!("mid_cycle_n{nodes}_{name}"), |b| {
+            b.iter(|| run::run(&design, &[scene], Options { nodes, solver, ..Options::default() }).expect("runs"))
         });
     }
     group.finish();

@@ -90,6 +90,12 @@ impl Program {
             .tol_gap_rel(1e-11)
             .tol_feas(1e-11)
             .max_iter(max_iter)
+            // ρ = (λ/Rh)² reaches 1e5 and more on fine wraps: without tight static regularization
+            // and thorough iterative refinement the KKT solves stall (InsufficientProgress).
+            .static_regularization_constant(1e-14)
+            .iterative_refinement_reltol(1e-16)
+            .iterative_refinement_abstol(1e-16)
+            .iterative_refinement_max_iter(50)
             .build()
             .map_err(|e| SolveError { status: format!("settings: {e:?}") })?;
         Ok(Self { segments, rho, ea_n, radius_m, solver: None, settings, q: Vec::new(), b: Vec::new() })
