@@ -350,3 +350,23 @@ fn a_history_scene_runs_at_level_3() {
     assert!(stats.increments > 0 && stats.qp_solved + stats.elastic_increments >= stats.increments);
     assert_eq!(stats.qp_almost_solved, 0);
 }
+
+/// Ends beyond the Euler limit at rest: no admissible field (clarabel: primal infeasible), the
+/// run reports gross slip at those rows, and everything stays finite and within Coulomb.
+#[test]
+fn gross_slip_is_reported_not_an_error() {
+    let alpha = std::f64::consts::PI;
+    let p = params(0.25, alpha, 1e8);
+    // e^{μα} = e^{0.785} = 2.19 < 2.5: the last sample slips grossly.
+    let samples = [at_rest(0.0, T0_N, T0_N), at_rest(1.0, 2.5 * T0_N, T0_N)];
+    let run = level3::run_history(p, &samples, Output::default(), State::uniform(alpha, 90, T0_N)).expect("runs");
+    let last = run.rows.last().expect("rows");
+    assert!(last.gross_slip && run.stats.gross_slip_increments > 0);
+    assert!(!run.rows[0].gross_slip);
+    let d = &run.last().distribution;
+    assert!(d.gross_slip);
+    for s in &d.samples {
+        assert!(s.tension_n.is_finite() && s.friction_n_per_rad.is_finite());
+        assert!(s.friction_n_per_rad.abs() <= p.mu * s.normal_n_per_rad * (1.0 + 1e-8), "{s:?}");
+    }
+}

@@ -262,6 +262,10 @@ impl<'a> Simulation<'a> {
                     self.gross_slip = true;
                     gross_slip_field(&mut self.state, &loads, c);
                     state::normal_forces(&self.state.tension_n, c, self.state.pitch_rad, &bending, &mut normal);
+                    let sign = if loads.t1_n >= loads.t2_n { 1.0 } else { -1.0 };
+                    for (f, nk) in self.state.friction_n.iter_mut().zip(&normal) {
+                        *f = sign * p.mu * nk;
+                    }
                     break;
                 }
             }
@@ -300,26 +304,24 @@ fn settled(friction_n: &[f64], used: &[f64], new: &[f64], mu: f64) -> bool {
 const ACTIVE_GAP: f64 = 1e-6;
 
 /// The rope sliding over the whole wrap (no admissible field): the contact force falls from
-/// the higher end at |q| = μn (without the bending contribution), friction saturated.
+/// the higher end at |q| = μn, and every segment's friction is at its bound against the slide
+/// (set by the caller from the contact forces); the rest of the end-tension difference
+/// accelerates the sliding rope, which a quasi-static model does not follow.
 fn gross_slip_field(state: &mut State, loads: &Loads, centrifugal_n: f64) {
     let n = state.segments();
     let h = state.pitch_rad;
     let (n1, n2) = (loads.t1_n - centrifugal_n, loads.t2_n - centrifugal_n);
     for k in 1..n {
         let theta = k as f64 * h;
-        let t = if n1 >= n2 {
+        state.tension_n[k] = if n1 >= n2 {
             centrifugal_n + n1 * (-loads.mu * theta).exp()
         } else {
             centrifugal_n + n2 * (-loads.mu * (state.wrap_angle_rad - theta)).exp()
         };
-        state.tension_n[k] = t;
     }
     state.tension_n[0] = loads.t1_n;
     state.tension_n[n] = loads.t2_n;
-    for k in 0..n {
-        state.friction_n[k] = state.tension_n[k] - state.tension_n[k + 1] + loads.inertia_n;
-        state.slip_m[k] = 0.0;
-    }
+    state.slip_m.fill(0.0);
 }
 
 /// Runs a history at level 3 from `initial`, reporting as level 2 does (rows, snapshots,
