@@ -103,8 +103,15 @@ fn jdp_is_the_sign_change_of_friction() {
         if g(mid) > 0.0 { lo = mid } else { hi = mid }
     }
     let exact = lo / R_M;
-    // Midpoint friction is O(h²) accurate and its linear interpolant too: a few % of a pitch.
-    assert!((jdp - exact).abs() < 0.05 * state.pitch_rad, "JDP {jdp} rad, closed form {exact} rad");
+    // Midpoint friction is O(h²) accurate and so is its linear interpolant near a simple zero
+    // (measured 2e-4 of a pitch): bound 1 % of a pitch.
+    assert!((jdp - exact).abs() < 0.01 * state.pitch_rad, "JDP {jdp} rad, closed form {exact} rad");
+    eprintln!(
+        "JDP: {:.5}° against {:.5}° ({:.1e} pitch)",
+        jdp.to_degrees(),
+        exact.to_degrees(),
+        (jdp - exact).abs() / state.pitch_rad
+    );
     assert!(summary.positive_arc_rad > 0.0 && summary.reverse_arc_rad > 0.0);
     assert!(summary.roots.calls >= 1, "the JDP comes from a root search");
 }
