@@ -3,7 +3,8 @@
 //! MODEL §5 as the lining stiffens, the hand formula of a wrapped rope's force balance with
 //! bending stiffness, Coulomb's law at every segment, and clarabel's verdicts.
 
-use wrapcalc::model::level2::{HistorySample, Output, Solver};
+use wrapcalc::contact::ContactLaw;
+use wrapcalc::model::level2::{self, HistorySample, Output, Solver};
 use wrapcalc::model::level3::{self, Level3Error, Params, State, summarize};
 
 const R_M: f64 = 2.5;
@@ -116,8 +117,9 @@ fn jdp_is_the_sign_change_of_friction() {
     assert!(summary.roots.calls >= 1, "the JDP comes from a root search");
 }
 
-/// As the lining stiffens (λ → 0), level 3 tends to the rigid-lining solution of MODEL §5:
-/// T1 raised to 1.15 T0 at rest gives T = 1.15 T0 e^{−μθ} on [0, ln 1.15/μ] and T0 beyond.
+/// As the lining stiffens (λ → 0), level 3 tends to level 2, the rigid-lining solution of
+/// MODEL §5: T1 raised to 1.15 T0 at rest gives T = 1.15 T0 e^{−μθ} on [0, ln 1.15/μ] and T0
+/// beyond.
 #[test]
 fn converges_to_level_2_as_the_lining_stiffens() {
     let alpha = 187.42_f64.to_radians();
@@ -127,15 +129,43 @@ fn converges_to_level_2_as_the_lining_stiffens() {
     let exact = |theta: f64| if theta <= beta { k * T0_N * (-mu * theta).exp() } else { T0_N };
     let n = 1440;
     let length_m = R_M * alpha;
+    let samples = [at_rest(0.0, T0_N, T0_N), at_rest(1.0, k * T0_N, T0_N)];
+    // Level 2 itself (the exact O(N) clamp) on the same history, read at the cuts; it is the
+    // closed form to round-off, which checks the reference.
+    let l2 = level2::Params {
+        mu,
+        wrap_angle_rad: alpha,
+        radius_m: R_M,
+        mass_per_m_kg: 10.81,
+        ea_n: EA_N,
+        solver: Solver::Fast,
+    };
+    let mut sim2 = level2::Simulation::new(l2, &samples, level2::WrapState::uniform(alpha, n, T0_N));
+    sim2.settle().expect("settles");
+    sim2.advance_to(1.0).expect("runs");
+    let field = sim2.state.field(0.0);
+    let law = ContactLaw::new(mu, 0.0);
+    let level2_at = |theta: f64| field.piece_at(theta, &law).tension_n(theta);
+    let h = alpha / n as f64;
+    for j in 0..=n {
+        let theta = j as f64 * h;
+        assert!(
+            (level2_at(theta) - exact(theta)).abs() < 1e-6,
+            "level 2 at {theta}: {} vs {}",
+            level2_at(theta),
+            exact(theta)
+        );
+    }
     let mut errors = Vec::new();
     let lambdas = [0.1, 0.03, 0.01];
     for frac in lambdas {
         let lambda_m = frac * length_m;
         let p = params(mu, alpha, EA_N / (lambda_m * lambda_m));
-        let state = standstill(p, n, &[at_rest(0.0, T0_N, T0_N), at_rest(1.0, k * T0_N, T0_N)]);
+        let state = standstill(p, n, &samples);
         assert_coulomb(&state, mu);
-        let err = (0..=n).map(|j| (state.tension_n[j] - exact(j as f64 * state.pitch_rad)).abs()).fold(0.0, f64::max)
-            / ((k - 1.0) * T0_N);
+        let err =
+            (0..=n).map(|j| (state.tension_n[j] - level2_at(j as f64 * state.pitch_rad)).abs()).fold(0.0, f64::max)
+                / ((k - 1.0) * T0_N);
         errors.push(err);
     }
     eprintln!("level 3 → level 2: λ/L = {lambdas:?}, max tension error / ΔT = {errors:?}");
@@ -145,7 +175,9 @@ fn converges_to_level_2_as_the_lining_stiffens() {
     // Rate in λ (k_s ∝ λ⁻²) between the two stiffest linings.
     let rate = (errors[1] / errors[2]).ln() / (lambdas[1] / lambdas[2]).ln();
     eprintln!("observed rate: error ∝ λ^{rate:.2} = k_s^-{:.2}", rate / 2.0);
-    assert!(rate > 0.5, "error should fall at least like √λ, rate {rate}");
+    // The lining's shear lag spreads the change of tension over about λ past the slip zone's
+    // end (where level 2 has a corner), so the error is first order in λ (measured 1.02).
+    assert!((0.8..1.2).contains(&rate), "error should fall like λ, rate {rate}");
     assert!(errors[2] < 0.05, "stiffest lining within 5 % of ΔT: {}", errors[2]);
 }
 
