@@ -243,6 +243,9 @@ impl<'a> Simulation<'a> {
             && self.program.solve_elastic(&mut self.state, &loads, p.mu, &mut normal, &bending, c);
         if elastic {
             self.stats.elastic_increments += 1;
+        } else if p.solver == Solver::Fast {
+            // The rejected elastic trial left its own contact forces: start from the old ones.
+            state::normal_forces(&self.state.tension_n, c, self.state.pitch_rad, &bending, &mut normal);
         }
         for pass in (1..).take_while(|_| !elastic) {
             if pass > MAX_NORMAL_PASSES {
