@@ -306,7 +306,7 @@ fn run_samples(
         .then(|| level1::steady_rolling(design.pulley.mu, alpha, &first, direction.sign(), design.rope.ea_n));
     let initial = match &rolling {
         None => Initial::Uniform(first.t1_n),
-        Some(r) => Initial::Rolling(r),
+        Some(r) => Initial::Rolling { level1: r, first, direction },
     };
     let run = wrap_history(design, scene, &result.plan, samples, output, initial, options)?;
     let mut snapshots: Vec<level2::Snapshot> = run.snapshots;
@@ -332,8 +332,10 @@ fn run_samples(
 enum Initial<'a> {
     /// Uniform tension (N).
     Uniform(f64),
-    /// The steady rolling state of creep theory.
-    Rolling(&'a level1::SteadyRolling),
+    /// The state after the rope last ran in `direction` under the loads `first`: creep
+    /// theory's steady rolling on a rigid lining (level 2); on an elastic lining (level 3) the
+    /// state those loads reach when the rope runs 1.5 wrap lengths through the wrap.
+    Rolling { level1: &'a level1::SteadyRolling, first: EndState, direction: Direction },
 }
 
 /// Runs the wrap through a history at the plan's wrap level (2, or 3 on an elastic lining).
@@ -362,18 +364,26 @@ fn wrap_history(
                 max_iter: level3::MAX_ITER,
                 solver: options.solver,
             };
-            let initial = level3::State::from_tension(alpha, options.nodes, |theta| match initial {
-                Initial::Uniform(t) => t,
-                Initial::Rolling(r) => r.field.piece_at(theta, &r.law).tension_n(theta),
-            });
-            level3::run_history(params, samples, output, initial)
-                .map_err(|source| RunError::Level3 { scene: scene.name.clone(), source })
+            let err = |source| RunError::Level3 { scene: scene.name.clone(), source };
+            let initial = match initial {
+                Initial::Uniform(t) => level3::State::uniform(alpha, options.nodes, t),
+                Initial::Rolling { first, direction, .. } => {
+                    let run_in = steady_run(design, &first, direction);
+                    let entry = if run_in[0].speed_m_s >= 0.0 { first.t1_n } else { first.t2_n };
+                    let start = level3::State::uniform(alpha, options.nodes, entry);
+                    let mut sim = level3::Simulation::new(params, &run_in, start).map_err(err)?;
+                    sim.settle().map_err(err)?;
+                    sim.advance_to(run_in.last().map_or(0.0, |s| s.t_s)).map_err(err)?;
+                    sim.state
+                }
+            };
+            level3::run_history(params, samples, output, initial).map_err(err)
         }
         (3, None) => Err(PlanError::NoLining { scene: scene.name.clone() }.into()),
         _ => {
             let initial = match initial {
                 Initial::Uniform(t) => WrapState::uniform(alpha, options.nodes, t),
-                Initial::Rolling(r) => WrapState::from_field(alpha, options.nodes, &r.field),
+                Initial::Rolling { level1, .. } => WrapState::from_field(alpha, options.nodes, &level1.field),
             };
             level2::run_history(params(design, options.solver), samples, output, initial, options.nodes)
                 .map_err(|source| RunError::Level2 { scene: scene.name.clone(), source })
