@@ -1,10 +1,10 @@
 //! One level-3 increment as a convex QP in clarabel (the formulation is in the [module
 //! doc](super)).
 //!
-//! Unknowns: the changes over the increment of the interior cut tensions `x_k = T_k / s`,
-//! k = 1 … N − 1, scaled by `s = max(T1, T2)` (written below for x itself). With `D` the segment difference (`(Dx)_k = x_k − x_{k+1}`, end cuts as
-//! data in `d`), the friction of segment k is `F_k / s = (Dx)_k + d_k`. The complementary energy
-//! of the increment, times `EA/(R h s²)`, is
+//! Cut tensions are scaled by `s = max(T1, T2)`: `x_k = T_k / s` for the interior cuts
+//! k = 1 … N − 1. With `D` the segment difference (`(Dx)_k = x_k − x_{k+1}`, end cuts and inertia
+//! as data in `d`), the friction of segment k is `F_k / s = (Dx)_k + d_k`. The complementary
+//! energy of the increment, times `EA/(R h s²)`, is
 //!
 //! ```text
 //! ½ Σ_k (x_k − x_k°)² + ½ ρ Σ_k ((Dx)_k + d_k − f_k°)²,      ρ = EA / (k_s R² h²) = (λ / Rh)²
@@ -13,7 +13,9 @@
 //! so `P = I + ρ DᵀD` (tridiagonal) and `A = [D; −D]` never change during a run: the clarabel
 //! solver is built once per run and each increment only updates `q` and `b` (its KKT structure,
 //! symbolic factorization and storage are reused; an interior-point method restarts its
-//! iterates). Coulomb's law `|F_k| ≤ μ N_k` is the nonnegative cone `b − A x ≥ 0`.
+//! iterates). Coulomb's law `|F_k| ≤ μ N_k` is the nonnegative cone `b − A x ≥ 0`. clarabel's
+//! unknowns are the changes `y = x − x°` (an increment moves little, so its tolerances act on
+//! the change itself).
 //!
 //! clarabel's status is data: `Solved` is success, `AlmostSolved` a counted warning, primal
 //! infeasibility gross slip (no admissible field), anything else an error of the run.
@@ -154,9 +156,9 @@ impl Program {
 
     /// The increment when no segment reaches its Coulomb bound: the unconstrained minimiser
     /// `(I + ρ DᵀD) x = −q` (tridiagonal, O(N) by the Thomas algorithm). It is the solution of
-    /// the program exactly when it satisfies every bound strictly (all multipliers zero), which
-    /// the caller checks against the contact forces of the new tensions. Returns false, leaving
-    /// `state` unchanged, if a bound is violated.
+    /// the program exactly when it satisfies every bound strictly (all multipliers zero), checked
+    /// here against the contact forces of its own tensions (written to `normal_n`), so no fixed
+    /// point is needed. Returns false, leaving the state unchanged, if a bound is not met.
     pub fn solve_elastic(
         &mut self,
         state: &mut State,
