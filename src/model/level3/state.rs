@@ -107,7 +107,7 @@ impl State {
 /// Contact force of every segment (N): `∫ n dθ` of the membrane part `n = T − m'v²`, taken as
 /// an exponential between the cuts (its integral is `h` times the logarithmic mean of the cut
 /// values, so that `|F| ≤ μN` on a slipping segment is exactly `|Δ ln n| ≤ μh`, the rigid-lining
-/// law of level 2), plus the bending part of [`bending_load_n`].
+/// law of level 2), plus the bending part of [`Bending::load_n`].
 pub fn normal_forces(tension_n: &[f64], centrifugal_n: f64, pitch_rad: f64, bending: &Bending, out: &mut Vec<f64>) {
     out.clear();
     out.extend(tension_n.windows(2).enumerate().map(|(k, w)| {
