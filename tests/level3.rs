@@ -163,6 +163,19 @@ fn converges_to_level_2_as_the_lining_stiffens() {
         let p = params(mu, alpha, EA_N / (lambda_m * lambda_m));
         let state = standstill(p, n, &samples);
         assert_coulomb(&state, mu);
+        // Slip (the Coulomb multipliers): where friction is at its bound the pulley drags the
+        // rope forward, so the rope slips backward (−θ) on the last loading increment; a stuck
+        // segment does not slip.
+        let slipping = (0..n).filter(|&j| state.utilization(j, mu) > 1.0 - 1e-6).count();
+        assert!(slipping > 0, "T1 raised by 15 % must slip at the side-1 end");
+        for j in 0..n {
+            let u = state.utilization(j, mu);
+            if u > 1.0 - 1e-6 {
+                assert!(state.slip_m[j] < 0.0, "segment {j} at the bound slips forward: {}", state.slip_m[j]);
+            } else if u < 0.99 {
+                assert!(state.slip_m[j].abs() < 1e-12, "stuck segment {j} slips {}", state.slip_m[j]);
+            }
+        }
         let err =
             (0..=n).map(|j| (state.tension_n[j] - level2_at(j as f64 * state.pitch_rad)).abs()).fold(0.0, f64::max)
                 / ((k - 1.0) * T0_N);
