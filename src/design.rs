@@ -16,6 +16,19 @@ pub struct Design {
     /// The hoist that `duty-cycle` scenes run (the `[hoist]` section), when the sheet has one.
     pub hoist: Option<Hoist>,
     pub scenes: Vec<Scene>,
+    /// The elastic lining of level 3 (the `[lining]` section), when the sheet has one: it
+    /// switches level 3 on for the scenes that run the wrap in time.
+    pub lining: Option<Lining>,
+}
+
+/// The pulley's friction lining as an elastic shear foundation (level 3).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Lining {
+    /// k_s: friction force per metre of rope per metre of rope–lining displacement (N/m²),
+    /// given or derived as `G b / t` (shear modulus × contact width / thickness).
+    pub shear_stiffness_n_per_m2: f64,
+    /// Whether the rope's inertia along the wrap enters its equilibrium.
+    pub rope_inertia: bool,
 }
 
 /// What hangs from the pulley and how the pulley moves (`[hoist]`). Side 1 is the conveyance
@@ -100,6 +113,9 @@ pub struct Rope {
     pub mass_per_m_kg: f64,
     /// Axial stiffness EA of one rope (N).
     pub ea_n: f64,
+    /// Bending stiffness EI of one rope (N·m², level 3): given, or `ratio · E π d⁴/64`; 0 when
+    /// the sheet gives none.
+    pub bending_stiffness_n_m2: f64,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]

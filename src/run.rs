@@ -10,6 +10,7 @@ use crate::margins::{self, Margins};
 use crate::model::level0::{self, Classical, EndState};
 use crate::model::level1;
 use crate::model::level2::{self, HistoryRow, Level2Error, Params, Solver, StepStats, WrapState};
+use crate::model::level3::{self, Level3Error};
 use crate::model::level4::{self, Level4Error};
 use crate::planner::{self, Plan, PlanError, Request};
 use crate::roots::RootError;
@@ -50,6 +51,8 @@ pub enum RunError {
     Level2 { scene: String, source: Level2Error },
     #[error("scene \"{scene}\": {source}")]
     Level4 { scene: String, source: Level4Error },
+    #[error("scene \"{scene}\": level 3: {source}")]
+    Level3 { scene: String, source: Level3Error },
     #[error("scene \"{scene}\": {source}")]
     Fit { scene: String, source: FitError },
 }
@@ -127,7 +130,7 @@ pub fn run(design: &Design, scenes: &[&Scene], options: Options) -> Result<RunRe
 
 fn run_scene(design: &Design, scene: &Scene, options: Options) -> Result<SceneResult, RunError> {
     let start = Instant::now();
-    let plan = planner::plan(scene, options.request)?;
+    let plan = planner::plan_with_lining(scene, options.request, design.lining.is_some())?;
     let mut result = match &scene.kind {
         SceneKind::Loads(loads) => run_loads(design, scene, loads, plan, options)?,
         SceneKind::History(history) => run_history(design, scene, history, plan, options)?,
@@ -241,15 +244,8 @@ fn run_loads(
             let state = result.classical.state;
             let samples = steady_run(design, &state, loads.direction);
             let entry = if samples[0].speed_m_s >= 0.0 { state.t1_n } else { state.t2_n };
-            let initial = WrapState::uniform(design.pulley.wrap_angle_rad, options.nodes, entry);
-            let run = level2::run_history(
-                params(design, options.solver),
-                &samples,
-                level2::Output::default(),
-                initial,
-                options.nodes,
-            )
-            .map_err(|source| RunError::Level2 { scene: scene.name.clone(), source })?;
+            let initial = Initial::Uniform(entry);
+            let run = wrap_history(design, scene, &result.plan, &samples, level2::Output::default(), initial, options)?;
             let last = run.snapshots.into_iter().last();
             result.wrap = last
                 .map(|s| WrapResult { summary: s.summary, distribution: Distribution { t_s: 0.0, ..s.distribution } });
@@ -370,14 +366,13 @@ fn run_samples(
     let first = states[0].1;
     let alpha = design.pulley.wrap_angle_rad;
     // Uniform rope when the history starts balanced, else the steady rolling state of its first loads.
-    let initial = if first.t1_n == first.t2_n {
-        WrapState::uniform(alpha, options.nodes, first.t1_n)
-    } else {
-        let rolling = level1::steady_rolling(design.pulley.mu, alpha, &first, direction.sign(), design.rope.ea_n);
-        WrapState::from_field(alpha, options.nodes, &rolling.field)
+    let rolling = (first.t1_n != first.t2_n)
+        .then(|| level1::steady_rolling(design.pulley.mu, alpha, &first, direction.sign(), design.rope.ea_n));
+    let initial = match &rolling {
+        None => Initial::Uniform(first.t1_n),
+        Some(r) => Initial::Rolling { level1: r, first, direction },
     };
-    let run = level2::run_history(params(design, options.solver), samples, output, initial, options.nodes)
-        .map_err(|source| RunError::Level2 { scene: scene.name.clone(), source })?;
+    let run = wrap_history(design, scene, &result.plan, samples, output, initial, options)?;
     let mut snapshots: Vec<level2::Snapshot> = run.snapshots;
     let last = snapshots.pop();
     result.snapshots = snapshots.into_iter().map(|s| s.distribution).collect();
@@ -394,6 +389,70 @@ fn run_samples(
     result.history = Some(HistoryOutput { rows: run.rows, map: run.map, stats: run.stats, anchors_n: Vec::new() });
     result.nodes = Some(options.nodes);
     Ok(result)
+}
+
+/// The wrap's state when a history starts.
+#[derive(Clone, Copy)]
+enum Initial<'a> {
+    /// Uniform tension (N).
+    Uniform(f64),
+    /// The state after the rope last ran in `direction` under the loads `first`: creep
+    /// theory's steady rolling on a rigid lining (level 2); on an elastic lining (level 3) the
+    /// state those loads reach when the rope runs 1.5 wrap lengths through the wrap.
+    Rolling { level1: &'a level1::SteadyRolling, first: EndState, direction: Direction },
+}
+
+/// Runs the wrap through a history at the plan's wrap level (2, or 3 on an elastic lining).
+fn wrap_history(
+    design: &Design,
+    scene: &Scene,
+    plan: &Plan,
+    samples: &[HistorySample],
+    output: level2::Output,
+    initial: Initial,
+    options: Options,
+) -> Result<level2::HistoryRun, RunError> {
+    let alpha = design.pulley.wrap_angle_rad;
+    match (planner::wrap_level(plan, design.lining.is_some()), design.lining) {
+        (3, Some(lining)) => {
+            let p = params(design, options.solver);
+            let params = level3::Params {
+                mu: p.mu,
+                wrap_angle_rad: p.wrap_angle_rad,
+                radius_m: p.radius_m,
+                mass_per_m_kg: p.mass_per_m_kg,
+                ea_n: p.ea_n,
+                shear_stiffness_n_per_m2: lining.shear_stiffness_n_per_m2,
+                bending_stiffness_n_m2: design.rope.bending_stiffness_n_m2,
+                rope_inertia: lining.rope_inertia,
+                max_iter: level3::MAX_ITER,
+                solver: options.solver,
+            };
+            let err = |source| RunError::Level3 { scene: scene.name.clone(), source };
+            let initial = match initial {
+                Initial::Uniform(t) => level3::State::uniform(alpha, options.nodes, t),
+                Initial::Rolling { first, direction, .. } => {
+                    let run_in = steady_run(design, &first, direction);
+                    let entry = if run_in[0].speed_m_s >= 0.0 { first.t1_n } else { first.t2_n };
+                    let start = level3::State::uniform(alpha, options.nodes, entry);
+                    let mut sim = level3::Simulation::new(params, &run_in, start).map_err(err)?;
+                    sim.settle().map_err(err)?;
+                    sim.advance_to(run_in.last().map_or(0.0, |s| s.t_s)).map_err(err)?;
+                    sim.state
+                }
+            };
+            level3::run_history(params, samples, output, initial).map_err(err)
+        }
+        (3, None) => Err(PlanError::NoLining { scene: scene.name.clone() }.into()),
+        _ => {
+            let initial = match initial {
+                Initial::Uniform(t) => WrapState::uniform(alpha, options.nodes, t),
+                Initial::Rolling { level1, .. } => WrapState::from_field(alpha, options.nodes, &level1.field),
+            };
+            level2::run_history(params(design, options.solver), samples, output, initial, options.nodes)
+                .map_err(|source| RunError::Level2 { scene: scene.name.clone(), source })
+        }
+    }
 }
 
 /// Every reported number must be finite: a non-finite intermediate becomes an error.

@@ -326,3 +326,27 @@ fn fit_residual_shows_the_distance_from_creep_theory() {
     assert!(fs.rms_residual_rel < 1e-6, "steady rolling is creep theory: {}", fs.rms_residual_rel);
     assert!(fh.rms_residual_rel > 0.05, "two slip zones are not: {}", fh.rms_residual_rel);
 }
+
+/// A sheet with a `[lining]` runs the wrap of time scenes at level 3 — only when a scene asks
+/// for the wrap: the same history asking for its checks alone stays at level 0.
+#[test]
+fn lining_raises_only_the_wrap_outputs_to_level_3() {
+    let file = concat!(env!("CARGO_MANIFEST_DIR"), "/tables/guo2020-lining.toml");
+    let text = std::fs::read_to_string(file).expect("lining sheet");
+    let d = sheet::parse(file, &format!("{text}\n{PLANNED}")).expect("parses");
+    let auto = Request::Full { forced_level: None };
+    let level = |name: &str| planner::plan_with_lining(scene(&d, name), auto, d.lining.is_some()).unwrap().level;
+    assert_eq!(level("history-history"), 3);
+    assert_eq!(level("history-distribution"), 3);
+    assert_eq!(level("history-checks"), 0);
+    assert_eq!(level("duty-checks"), 0);
+    let duty = planner::plan_with_lining(scene(&d, "duty-history"), auto, true).unwrap();
+    assert_eq!(duty.level, 4);
+    assert!(duty.reason.contains("level 3"), "{}", duty.reason);
+    assert_eq!(planner::wrap_level(&duty, true), 3);
+    assert_eq!(level("loads-distribution"), 1, "constant loads stay with creep theory");
+    // Without a lining, --level 3 is an error naming the section.
+    let forced = Request::Full { forced_level: Some(3) };
+    let e = planner::plan_with_lining(scene(&d, "history-history"), forced, false).unwrap_err();
+    assert!(e.to_string().contains("[lining]"), "{e}");
+}

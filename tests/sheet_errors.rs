@@ -201,6 +201,57 @@ fn cases() -> Vec<Case> {
             expect: &["emergency_decel_m_s2", "missing"],
         },
         Case {
+            label: "lining: no stiffness",
+            input: Input::Text(format!("{VALID}\n[lining]\nrope_inertia = true\n")),
+            expect: &["lining.shear_stiffness_n_per_m2", "missing"],
+        },
+        Case {
+            label: "lining: stiffness and its derivation both given",
+            input: Input::Text(format!("{VALID}\n[lining]\nshear_stiffness_n_per_m2 = 1e7\nthickness_m = 0.03\n")),
+            expect: &["lining.shear_stiffness_n_per_m2", "not both"],
+        },
+        Case {
+            label: "lining: derivation incomplete",
+            input: Input::Text(format!("{VALID}\n[lining]\nthickness_m = 0.03\nshear_modulus_pa = 5e6\n")),
+            expect: &["lining.contact_width_m", "missing"],
+        },
+        Case {
+            label: "lining: negative stiffness",
+            input: Input::Text(format!("{VALID}\n[lining]\nshear_stiffness_n_per_m2 = -1e7\n")),
+            expect: &["lining.shear_stiffness_n_per_m2", "-1e7", "> 0"],
+        },
+        Case {
+            label: "lining: unknown key",
+            input: Input::Text(format!("{VALID}\n[lining]\nshear_stiffness = 1e7\n")),
+            expect: &["lining", "shear_stiffness"],
+        },
+        Case {
+            label: "lining: rope_inertia not a boolean",
+            input: Input::Text(format!("{VALID}\n[lining]\nshear_stiffness_n_per_m2 = 1e7\nrope_inertia = \"yes\"\n")),
+            expect: &["lining", "bool"],
+        },
+        Case {
+            label: "rope bending without a lining",
+            input: edit("ea_n = 1.0e8\n", "ea_n = 1.0e8\nbending_stiffness_n_m2 = 48.0\n"),
+            expect: &["rope.bending_stiffness_n_m2", "[lining]"],
+        },
+        Case {
+            label: "rope bending ratio out of range",
+            input: Input::Text(format!(
+                "{}\n[lining]\nshear_stiffness_n_per_m2 = 1e7\n",
+                VALID.replacen("ea_n = 1.0e8\n", "ea_n = 1.0e8\ndiameter_m = 0.054\nmodulus_pa = 1.15e11\nbending_ratio = 2.0\n", 1)
+            )),
+            expect: &["rope.bending_ratio", "0 < r ≤ 1"],
+        },
+        Case {
+            label: "rope bending: modulus missing",
+            input: Input::Text(format!(
+                "{}\n[lining]\nshear_stiffness_n_per_m2 = 1e7\n",
+                VALID.replacen("ea_n = 1.0e8\n", "ea_n = 1.0e8\ndiameter_m = 0.054\n", 1)
+            )),
+            expect: &["rope.modulus_pa", "missing"],
+        },
+        Case {
             label: "history: missing CSV",
             input: Input::Text(format!("{}\n[[scene]]\nname = \"h\"\nkind = \"history\"\ncsv = \"nope.csv\"\n", VALID)),
             expect: &["csv", "nope.csv"],

@@ -1,9 +1,11 @@
 //! Model levels. Each level answers a scene with more physics than the one before:
 //! level 0 the classical closed-form checks, level 1 the steady rolling distribution of
-//! creep theory. All levels share the wrap discretization ([`crate::wrap`]) and the contact
+//! creep theory, level 2 the discrete stick–slip model on a rigid lining, level 3 the wrap on an
+//! elastic lining with rope bending and inertia (clarabel), level 4 a hoisting cycle. All levels share the wrap discretization ([`crate::wrap`]) and the contact
 //! law ([`crate::contact`]).
 
 pub mod level0;
 pub mod level1;
 pub mod level2;
+pub mod level3;
 pub mod level4;

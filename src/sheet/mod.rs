@@ -1,13 +1,14 @@
 //! Design sheets: TOML in, a validated [`Design`] out, or every problem found.
 //!
 //! The document is parsed once with spans; each section (`[pulley]`, `[rope]`,
-//! `[requirements]`, `[hoist]`, every `[[scene]]`) is deserialized on its own so that an error in one does
+//! `[requirements]`, `[hoist]`, `[lining]`, every `[[scene]]`) is deserialized on its own so that an error in one does
 //! not hide errors in the others; then every value is checked (finite, in range, consistent).
 //! Each diagnostic names the file, line:column, scene, key path, the bad value and what is allowed.
 
 mod diag;
 mod history;
 mod hoist;
+mod lining;
 mod outputs;
 mod raw;
 mod validate;
@@ -23,7 +24,7 @@ use toml::Spanned;
 use toml::de::{DeTable, DeValue};
 
 /// Top-level keys a sheet may have.
-const TOP_LEVEL_KEYS: &[&str] = &["title", "g_m_s2", "pulley", "rope", "requirements", "hoist", "scene"];
+const TOP_LEVEL_KEYS: &[&str] = &["title", "g_m_s2", "pulley", "rope", "requirements", "hoist", "scene", "lining"];
 
 /// Reads and validates a sheet file.
 pub fn load(path: &Path) -> Result<Design, SheetError> {
@@ -82,6 +83,10 @@ pub fn parse(file: &str, text: &str) -> Result<Design, SheetError> {
                 sections.hoist = section(&mut c, value, "hoist");
             }
             "scene" => sections.scenes = Some(scene_tables(&mut c, value)),
+            "lining" => {
+                sections.present.push("lining");
+                sections.lining = section(&mut c, value, "lining");
+            }
             other => c.push(
                 Some(key_span),
                 None,

@@ -27,6 +27,10 @@ pub struct RawRope {
     pub count: Option<Spanned<i64>>,
     pub mass_per_m_kg: Option<Spanned<f64>>,
     pub ea_n: Option<Spanned<f64>>,
+    pub bending_stiffness_n_m2: Option<Spanned<f64>>,
+    pub diameter_m: Option<Spanned<f64>>,
+    pub modulus_pa: Option<Spanned<f64>>,
+    pub bending_ratio: Option<Spanned<f64>>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -86,4 +90,15 @@ pub struct RawStage {
     pub accel_m_s2: Option<Spanned<f64>>,
     pub step: Option<Spanned<bool>>,
     pub until_stop: Option<Spanned<bool>>,
+}
+
+/// The `[lining]` table (level 3).
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawLining {
+    pub shear_stiffness_n_per_m2: Option<Spanned<f64>>,
+    pub thickness_m: Option<Spanned<f64>>,
+    pub shear_modulus_pa: Option<Spanned<f64>>,
+    pub contact_width_m: Option<Spanned<f64>>,
+    pub rope_inertia: Option<Spanned<bool>>,
 }

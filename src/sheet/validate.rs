@@ -33,6 +33,7 @@ pub struct Sections {
     pub requirements: Option<Spanned<RawRequirements>>,
     pub hoist: Option<Spanned<RawHoist>>,
     pub scenes: Option<Vec<SceneSlot>>,
+    pub lining: Option<Spanned<super::raw::RawLining>>,
 }
 
 /// One `[[scene]]` table: its label (`scene[i]`) and contents when they deserialized.
@@ -167,6 +168,7 @@ pub fn design(c: &mut Collector, s: Sections) -> Option<Design> {
             None
         }
     };
+    let lining = super::lining::lining_section(c, &s.lining, &s.present, &s.rope, rope.as_ref());
     Some(Design {
         sheet: c.file.to_string(),
         title,
@@ -176,6 +178,7 @@ pub fn design(c: &mut Collector, s: Sections) -> Option<Design> {
         requirements: requirements?,
         hoist: hoist?,
         scenes: scenes?,
+        lining: lining?,
     })
 }
 
@@ -268,7 +271,13 @@ fn rope(c: &mut Collector, r: &Spanned<RawRope>) -> Option<Rope> {
     };
     let mass_per_m_kg = required(c, at, "mass_per_m_kg", &r.mass_per_m_kg, POSITIVE);
     let ea_n = required(c, at, "ea_n", &r.ea_n, POSITIVE);
-    Some(Rope { count: count?, mass_per_m_kg: mass_per_m_kg?, ea_n: ea_n? })
+    let bending_stiffness_n_m2 = super::lining::bending_stiffness(c, at, r);
+    Some(Rope {
+        count: count?,
+        mass_per_m_kg: mass_per_m_kg?,
+        ea_n: ea_n?,
+        bending_stiffness_n_m2: bending_stiffness_n_m2?,
+    })
 }
 
 fn requirements(c: &mut Collector, r: &Spanned<RawRequirements>) -> Option<Requirements> {

@@ -60,6 +60,11 @@ pub struct StepStats {
     /// Of the solved increments, those whose active-set polish was accepted.
     pub qp_polished: u64,
     pub qp_almost_solved: u64,
+    /// Level 3: extra clarabel solves of the fixed point on the contact forces.
+    pub normal_force_passes: u64,
+    /// Level 3 with the fast solver: increments whose unconstrained (elastic) minimiser met
+    /// every Coulomb bound strictly, so that it is the program's solution without clarabel.
+    pub elastic_increments: u64,
 }
 
 /// A running simulation.

@@ -1,0 +1,290 @@
+//! One level-3 increment as a convex QP in clarabel (the formulation is in the [module
+//! doc](super)).
+//!
+//! Cut tensions are scaled by `s = max(T1, T2)`: `x_k = T_k / s` for the interior cuts
+//! k = 1 … N − 1. With `D` the segment difference (`(Dx)_k = x_k − x_{k+1}`, end cuts and inertia
+//! as data in `d`), the friction of segment k is `F_k / s = (Dx)_k + d_k`. The complementary
+//! energy of the increment, times `EA/(R h s²)`, is
+//!
+//! ```text
+//! ½ Σ_k (x_k − x_k°)² + ½ ρ Σ_k ((Dx)_k + d_k − f_k°)²,      ρ = EA / (k_s R² h²) = (λ / Rh)²
+//! ```
+//!
+//! so `P = I + ρ DᵀD` (tridiagonal) and `A = [D; −D]` never change during a run: the clarabel
+//! solver is built once per run and each increment only updates `q` and `b` (its KKT structure,
+//! symbolic factorization and storage are reused; an interior-point method restarts its
+//! iterates). Coulomb's law `|F_k| ≤ μ N_k` is the nonnegative cone `b − A x ≥ 0`. clarabel's
+//! unknowns are the changes `y = x − x°` (an increment moves little, so its tolerances act on
+//! the change itself).
+//!
+//! clarabel's status is data: `Solved` is success, `AlmostSolved` a counted warning, primal
+//! infeasibility gross slip (no admissible field), anything else an error of the run.
+
+use super::state::State;
+use clarabel::algebra::CscMatrix;
+use clarabel::solver::{
+    DefaultSettings, DefaultSettingsBuilder, DefaultSolver, IPSolver, NonnegativeConeT, SolverStatus,
+};
+use serde::Serialize;
+
+/// clarabel's verdict on one solve of an increment.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Verdict {
+    Solved,
+    /// Reduced accuracy: used, and counted.
+    AlmostSolved,
+    /// No admissible field: gross slip.
+    Infeasible,
+}
+
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("clarabel failed on a level-3 increment: {status}")]
+pub struct SolveError {
+    pub status: String,
+}
+
+/// Data of one solve (per rope, SI).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Loads {
+    pub t1_n: f64,
+    pub t2_n: f64,
+    /// Inertia of the rope on each segment, `m' R h a` (N; 0 when switched off).
+    pub inertia_n: f64,
+    pub mu: f64,
+}
+
+/// The reusable clarabel problem of a run.
+pub struct Program {
+    segments: usize,
+    rho: f64,
+    ea_n: f64,
+    radius_m: f64,
+    solver: Option<DefaultSolver<f64>>,
+    settings: DefaultSettings<f64>,
+    q: Vec<f64>,
+    b: Vec<f64>,
+}
+
+impl std::fmt::Debug for Program {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Program").field("segments", &self.segments).field("rho", &self.rho).finish()
+    }
+}
+
+impl Program {
+    /// `shear_stiffness_n_per_m2`: k_s, friction force per metre of rope per metre of
+    /// rope–lining displacement; `max_iter`: clarabel's iteration cap.
+    pub fn new(
+        segments: usize,
+        pitch_rad: f64,
+        radius_m: f64,
+        ea_n: f64,
+        shear_stiffness_n_per_m2: f64,
+        max_iter: u32,
+    ) -> Result<Self, SolveError> {
+        let rh = radius_m * pitch_rad;
+        let rho = ea_n / (shear_stiffness_n_per_m2 * rh * rh);
+        let settings = DefaultSettingsBuilder::default()
+            .verbose(false)
+            .presolve_enable(false)
+            .tol_gap_abs(1e-11)
+            .tol_gap_rel(1e-11)
+            .tol_feas(1e-11)
+            .max_iter(max_iter)
+            // ρ = (λ/Rh)² reaches 1e5 and more on fine wraps: without tight static regularization
+            // and thorough iterative refinement the KKT solves stall (InsufficientProgress).
+            .static_regularization_constant(1e-14)
+            .iterative_refinement_reltol(1e-16)
+            .iterative_refinement_abstol(1e-16)
+            .iterative_refinement_max_iter(50)
+            .build()
+            .map_err(|e| SolveError { status: format!("settings: {e:?}") })?;
+        Ok(Self { segments, rho, ea_n, radius_m, solver: None, settings, q: Vec::new(), b: Vec::new() })
+    }
+
+    /// `(λ/Rh)²`: the lining's shear-lag length over the segment length, squared.
+    pub fn rho(&self) -> f64 {
+        self.rho
+    }
+
+    fn build(&self) -> Result<DefaultSolver<f64>, SolveError> {
+        let n = self.segments;
+        let m = n - 1;
+        let rho = self.rho;
+        // P upper triangle: column j holds (j−1, j) = −ρ and (j, j) = 1 + 2ρ.
+        let (mut colptr, mut rowval, mut nzval) = (vec![0usize], Vec::new(), Vec::new());
+        for j in 0..m {
+            if j > 0 {
+                rowval.push(j - 1);
+                nzval.push(-rho);
+            }
+            rowval.push(j);
+            nzval.push(1.0 + 2.0 * rho);
+            colptr.push(rowval.len());
+        }
+        let p = CscMatrix::new(m, m, colptr, rowval, nzval);
+        // A = [D; −D]: variable j (cut j + 1) enters segment j with +1 and segment j + 1 with −1.
+        let (mut rows, mut cols, mut vals) = (Vec::new(), Vec::new(), Vec::new());
+        for j in 0..m {
+            for (seg, coef) in [(j + 1, 1.0), (j, -1.0)] {
+                // (Dx)_seg has +x_seg − x_{seg+1}; var j is x_{j+1}: +1 in segment j+1, −1 in segment j.
+                rows.extend([seg, n + seg]);
+                cols.extend([j, j]);
+                vals.extend([coef, -coef]);
+            }
+        }
+        let a = CscMatrix::new_from_triplets(2 * n, m, rows, cols, vals);
+        let cones = [NonnegativeConeT(2 * n)];
+        DefaultSolver::new(&p, &self.q, &a, &self.b, &cones, self.settings.clone())
+            .map_err(|e| SolveError { status: format!("{e}") })
+    }
+
+    /// The linear term `q` of the objective for the increment from `state` (old tensions and
+    /// shear) to `loads`: `q = −x° + ρ Dᵀ(d − f°)`.
+    fn linear_term(&mut self, state: &State, loads: &Loads) {
+        let n = self.segments;
+        let s = loads.t1_n.max(loads.t2_n);
+        let rho = self.rho;
+        self.q.clear();
+        for j in 0..n - 1 {
+            // Variable j is cut j + 1: +1 in segment j + 1, −1 in segment j.
+            let y = |k: usize| end_term(loads, n, k) - state.friction_n[k] / s;
+            self.q.push(-state.tension_n[j + 1] / s + rho * (y(j + 1) - y(j)));
+        }
+    }
+
+    /// The increment when no segment reaches its Coulomb bound: the unconstrained minimiser
+    /// `(I + ρ DᵀD) x = −q` (tridiagonal, O(N) by the Thomas algorithm). It is the solution of
+    /// the program exactly when it satisfies every bound strictly (all multipliers zero), checked
+    /// here against the contact forces of its own tensions (written to `normal_n`), so no fixed
+    /// point is needed. Returns false, leaving the state unchanged, if a bound is not met.
+    pub fn solve_elastic(
+        &mut self,
+        state: &mut State,
+        loads: &Loads,
+        mu: f64,
+        normal_n: &mut Vec<f64>,
+        bending: &super::state::Bending,
+        centrifugal_n: f64,
+    ) -> bool {
+        let n = self.segments;
+        let m = n - 1;
+        let s = loads.t1_n.max(loads.t2_n);
+        let (diag, off) = (1.0 + 2.0 * self.rho, -self.rho);
+        self.linear_term(state, loads);
+        // Thomas: forward sweep on c' and d', back substitution into x (kept in self.b).
+        let (mut c, x) = (vec![0.0; m], &mut self.b);
+        x.clear();
+        x.resize(m, 0.0);
+        let mut denom = diag;
+        c[0] = off / denom;
+        x[0] = -self.q[0] / denom;
+        for j in 1..m {
+            denom = diag - off * c[j - 1];
+            c[j] = off / denom;
+            x[j] = (-self.q[j] - off * x[j - 1]) / denom;
+        }
+        for j in (0..m - 1).rev() {
+            x[j] -= c[j] * x[j + 1];
+        }
+        let mut tension = Vec::with_capacity(n + 1);
+        tension.push(loads.t1_n);
+        tension.extend(x.iter().map(|v| v * s));
+        tension.push(loads.t2_n);
+        super::state::normal_forces(&tension, centrifugal_n, state.pitch_rad, bending, normal_n);
+        let inside = (0..n).all(|k| {
+            let f = tension[k] - tension[k + 1] + loads.inertia_n;
+            f.is_finite() && f.abs() < mu * normal_n[k] * (1.0 - 1e-6)
+        });
+        if inside {
+            for k in 0..n {
+                state.friction_n[k] = tension[k] - tension[k + 1] + loads.inertia_n;
+                state.slip_m[k] = 0.0;
+            }
+            state.tension_n = tension;
+        }
+        inside
+    }
+
+    /// Solves the increment from `state` (its tensions and shear are the old values; its ends
+    /// are replaced by the loads) with the contact forces `normal_n` in Coulomb's bound.
+    /// On success the state holds the new tensions, friction and slip.
+    pub fn solve(&mut self, state: &mut State, loads: &Loads, normal_n: &[f64]) -> Result<Verdict, SolveError> {
+        let n = self.segments;
+        let s = loads.t1_n.max(loads.t2_n);
+        let d = |k: usize| end_term(loads, n, k);
+        self.linear_term(state, loads);
+        // The unknowns are the changes y = x − x° (an increment moves little, so the optimum's
+        // objective is small and clarabel's tolerances act on the change itself):
+        // q_y = q + P x°, and A y ≤ b − A x° with (A x°)_k = ±(D x°)_k.
+        let old = |j: usize| state.tension_n[j + 1] / s;
+        let rho = self.rho;
+        for (j, qj) in self.q.iter_mut().enumerate() {
+            let mut px = (1.0 + 2.0 * rho) * old(j);
+            if j > 0 {
+                px -= rho * old(j - 1);
+            }
+            if j + 2 < n {
+                px -= rho * old(j + 1);
+            }
+            *qj += px;
+        }
+        let dx_old = |k: usize| {
+            let here = if k >= 1 { state.tension_n[k] / s } else { 0.0 };
+            let next = if k + 1 < n { state.tension_n[k + 1] / s } else { 0.0 };
+            here - next
+        };
+        self.b.clear();
+        self.b.extend(normal_n.iter().enumerate().map(|(k, nk)| loads.mu * nk / s - d(k) - dx_old(k)));
+        self.b.extend(normal_n.iter().enumerate().map(|(k, nk)| loads.mu * nk / s + d(k) + dx_old(k)));
+        match &mut self.solver {
+            Some(solver) => {
+                solver.update_q(&self.q).map_err(|e| SolveError { status: format!("data update: {e:?}") })?;
+                solver.update_b(&self.b).map_err(|e| SolveError { status: format!("data update: {e:?}") })?;
+            }
+            None => self.solver = Some(self.build()?),
+        }
+        let solver = self.solver.as_mut().expect("built above");
+        solver.solve();
+        let verdict = match solver.solution.status {
+            SolverStatus::Solved => Verdict::Solved,
+            SolverStatus::AlmostSolved => Verdict::AlmostSolved,
+            SolverStatus::PrimalInfeasible | SolverStatus::AlmostPrimalInfeasible => return Ok(Verdict::Infeasible),
+            other => return Err(SolveError { status: format!("{other:?}") }),
+        };
+        let x = &solver.solution.x;
+        if let Some(bad) = x.iter().find(|v| !v.is_finite()) {
+            return Err(SolveError { status: format!("non-finite tension {bad} in the solution") });
+        }
+        state.tension_n[0] = loads.t1_n;
+        state.tension_n[n] = loads.t2_n;
+        for (t, yj) in state.tension_n[1..n].iter_mut().zip(x) {
+            *t += yj * s;
+        }
+        // Slip from the multipliers: the complementary energy is (Rh s²/EA) times the scaled
+        // objective, so the slip conjugate to F_k is z · R h s / EA; the bound F ≤ μN is active
+        // when the pulley drags the rope forward, i.e. the rope slips backward (−θ).
+        let z = &solver.solution.z;
+        let to_m = self.radius_m * state.pitch_rad * s / self.ea_n;
+        for k in 0..n {
+            state.friction_n[k] = state.tension_n[k] - state.tension_n[k + 1] + loads.inertia_n;
+            state.slip_m[k] = -(z[k] - z[n + k]) * to_m;
+        }
+        Ok(verdict)
+    }
+}
+
+/// `d_k`: what the end tensions and the inertia add to segment k's friction, scaled by
+/// `max(T1, T2)`.
+fn end_term(loads: &Loads, segments: usize, k: usize) -> f64 {
+    let s = loads.t1_n.max(loads.t2_n);
+    let mut v = loads.inertia_n / s;
+    if k == 0 {
+        v += loads.t1_n / s;
+    }
+    if k == segments - 1 {
+        v -= loads.t2_n / s;
+    }
+    v
+}
