@@ -58,6 +58,10 @@ pub const ROLL_SPEED_M_S: f64 = 80.0;
 const MASS_PER_M_KG: f64 = 10.81;
 const EA_N: f64 = 2.634e8;
 const DIAMETER_M: f64 = 5.0;
+/// Shear lag: the tension step ΔT (N) and the decay length λ = √(EA/k_s) as a fraction of the
+/// wrapped length L = Rα. The peak friction ΔT·R/λ·coth(L/λ) is 6 % of μn: full stick.
+pub const SHEAR_LAG_DT_N: f64 = 2.0e3;
+const SHEAR_LAG_LAMBDA_OF_L: f64 = 0.25;
 
 /// The reference hoist's duty cycle the bench runs.
 pub const DUTY_SCENE: &str = "duty-MID";
@@ -71,11 +75,19 @@ pub enum Case {
     DutyMid,
     /// A random-walk history rolling at 1 m/s (scaling with the number of steps; no reference).
     RollingWalk,
+    /// Level 3: T1 raised by ΔT at rest on an elastic lining, full stick (shear lag).
+    ShearLag,
 }
 
 impl Case {
-    pub const ALL: [Case; 5] =
-        [Case::StandstillStep, Case::NestedUnloading, Case::SteadyRolling, Case::DutyMid, Case::RollingWalk];
+    pub const ALL: [Case; 6] = [
+        Case::StandstillStep,
+        Case::NestedUnloading,
+        Case::SteadyRolling,
+        Case::DutyMid,
+        Case::RollingWalk,
+        Case::ShearLag,
+    ];
 
     pub fn name(self) -> &'static str {
         match self {
@@ -84,6 +96,7 @@ impl Case {
             Case::SteadyRolling => "steady-rolling",
             Case::DutyMid => "duty-MID",
             Case::RollingWalk => "rolling-walk",
+            Case::ShearLag => "shear-lag",
         }
     }
 }
@@ -96,6 +109,12 @@ pub const DUTY_METRIC: &str =
 
 fn alpha_rad() -> f64 {
     WRAP_ANGLE_DEG.to_radians()
+}
+
+/// Shear lag: the wrapped length L = Rα and the decay length λ (m).
+fn shear_lag_lengths_m() -> (f64, f64) {
+    let length_m = 0.5 * DIAMETER_M * alpha_rad();
+    (length_m, SHEAR_LAG_LAMBDA_OF_L * length_m)
 }
 
 /// The bench hoist with one scene.
@@ -146,6 +165,16 @@ pub fn design_of(case: Case) -> Option<Design> {
             speed_m_s: ROLL_SPEED_M_S,
             direction: Direction::Lift,
         }),
+        Case::ShearLag => {
+            let step = vec![sample(0.0, T0_N, T0_N, 0.0), sample(1.0, T0_N + SHEAR_LAG_DT_N, T0_N, 0.0)];
+            let (_, lambda_m) = shear_lag_lengths_m();
+            let mut design = bench_design(case.name(), history(step));
+            design.lining = Some(crate::design::Lining {
+                shear_stiffness_n_per_m2: EA_N / (lambda_m * lambda_m),
+                rope_inertia: false,
+            });
+            return Some(design);
+        }
         Case::DutyMid | Case::RollingWalk => return None,
     };
     Some(bench_design(case.name(), kind))
@@ -170,6 +199,13 @@ pub fn exact_tension_n(case: Case, theta_rad: f64) -> Option<f64> {
                 c + (ROLL_T1_N - c) * (-MU * (theta_rad - theta_a)).exp()
             })
         }
+        // A bar on a linear shear foundation, EA T'' = k_s (T − T0), T(0) = T0 + ΔT, T(L) = T0:
+        // T − T0 = ΔT sinh((L − x)/λ)/sinh(L/λ), x = Rθ (MODEL §5, level 3).
+        Case::ShearLag => {
+            let (length_m, lambda_m) = shear_lag_lengths_m();
+            let x = 0.5 * DIAMETER_M * theta_rad;
+            Some(T0_N + SHEAR_LAG_DT_N * ((length_m - x) / lambda_m).sinh() / (length_m / lambda_m).sinh())
+        }
         Case::DutyMid | Case::RollingWalk => None,
     }
 }
@@ -178,6 +214,7 @@ pub fn exact_tension_n(case: Case, theta_rad: f64) -> Option<f64> {
 fn reference_tension_n(case: Case) -> f64 {
     match case {
         Case::SteadyRolling => ROLL_T2_N,
+        Case::ShearLag => SHEAR_LAG_DT_N,
         _ => T0_N,
     }
 }
@@ -372,6 +409,14 @@ mod tests {
         }
         let checks = run_checks(Case::StandstillStep).expect("runs");
         assert!(checks.error.expect("hand arithmetic") < 1e-14);
+        // Level 3 is the central-difference form of EA T'' = k_s (T − T0): second order, an
+        // error of order (Rh/λ)² of ΔT. At N = 180, Rh = 2.5·α/180 = 0.0454 m and λ = 2.045 m:
+        // (Rh/λ)² = 4.9e-4, and 2(Rh/λ)² ≈ 1e-3 of ΔT bounds it; at N = 64, 2(Rh/λ)² = 7.8e-3.
+        for (nodes, bound) in [(180, 1e-3), (64, 7.8e-3)] {
+            let out = run_closed_form(Case::ShearLag, 3, Solver::Fast, nodes).expect("runs");
+            let error = out.error.expect("a closed form");
+            assert!(error < bound, "shear lag at N = {nodes}: {error}");
+        }
     }
 
     #[test]

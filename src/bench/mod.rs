@@ -121,6 +121,18 @@ pub const TABLE: &[Entry] = &[
         sweep: Sweep::TimeStep { nodes: 360, steps_s: DUTY_STEPS_S },
     },
     Entry {
+        case: Case::ShearLag,
+        level: 3,
+        solver: Solver::Fast,
+        sweep: Sweep::Nodes { nodes: &[16, 64, 180, 256, 1024, 4096], long: &[16384] },
+    },
+    Entry {
+        case: Case::ShearLag,
+        level: 3,
+        solver: Solver::Clarabel,
+        sweep: Sweep::Nodes { nodes: &[16, 64, 180, 256], long: &[] },
+    },
+    Entry {
         case: Case::RollingWalk,
         level: 2,
         solver: Solver::Fast,

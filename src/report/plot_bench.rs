@@ -20,6 +20,8 @@ fn color(level: u8, solver: Solver) -> RGBColor {
         (1, _) => RGBColor(20, 130, 60),
         (2, Solver::Fast) => RGBColor(20, 70, 160),
         (2, Solver::Clarabel) => RGBColor(230, 120, 20),
+        (3, Solver::Fast) => RGBColor(0, 150, 170),
+        (3, Solver::Clarabel) => RGBColor(200, 170, 0),
         _ => RGBColor(170, 30, 120),
     }
 }
@@ -80,7 +82,7 @@ fn draw(area: &DrawingArea<BitMapBackend, plotters::coord::Shift>, rows: &[Bench
     let (t0, t1) = if t0 < t1 { (t0 / 2.0, t1 * 2.0) } else { (1e-3, 1e3) };
     let (y0, y1) = (ERROR_FLOOR / 3.0, (e1 * 10.0).max(ERROR_FLOOR * 100.0));
     let note = format!(
-        "error: max |T − T_exact| / T_ref over the output grid (levels 1–2), hand-arithmetic check values (level 0), \
+        "error: max |T − T_exact| / T_ref over the output grid (levels 1–3; level 3: T_ref = ΔT), hand-arithmetic check values (level 0), \
          max |T − T_ref| / T_ref at the snapshots against N = {}, Δt = {} s (level 4); errors below {ERROR_FLOOR:e} drawn at {ERROR_FLOOR:e}",
         crate::bench::DUTY_REFERENCE_NODES,
         crate::bench::DUTY_REFERENCE_STEP_S
