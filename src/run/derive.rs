@@ -1,0 +1,87 @@
+//! The answers a scene asks for beyond its model level's own: margins and the creep-theory fit,
+//! and the final check that every reported number is finite.
+
+use super::{RunError, SceneResult};
+use crate::design::{Design, Direction, Output, Scene, SceneKind};
+use crate::fit;
+use crate::margins;
+use crate::model::level4;
+
+/// The answers derived from a scene's result that it asks for: margins from its state (a time
+/// scene's worst instant), the creep-theory fit of its reported distribution.
+pub(super) fn derive_answers(design: &Design, scene: &Scene, result: &mut SceneResult) -> Result<(), RunError> {
+    if scene.outputs.contains(Output::Margins) {
+        let (at_t_s, state) = match result.worst {
+            Some((t, s)) => (Some(t), s),
+            None => (None, result.classical.state),
+        };
+        let mut m = margins::of(design, &state, at_t_s);
+        // An emergency stop with the ropes' dynamics (level 4): each trial runs the ropes.
+        if let (SceneKind::DutyCycle(cycle), Some(hoist), 4) = (&scene.kind, &design.hoist, result.plan.level)
+            && let Some((slip, sf)) = level4::emergency_margins(design, hoist, cycle, &mut m.root_finding)
+        {
+            m.emergency_braking_to_slip_m_s2 = Some(slip);
+            m.emergency_braking_to_min_safety_factor_m_s2 = Some(sf);
+        }
+        result.margins = Some(m);
+    }
+    if scene.outputs.contains(Output::Fit)
+        && let Some(wrap) = &result.wrap
+    {
+        let state = &result.classical.state;
+        let entry_side1 = match &scene.kind {
+            _ if state.speed_m_s != 0.0 => Some(state.speed_m_s > 0.0),
+            SceneKind::Loads(l) => Some(l.direction == Direction::Lift),
+            _ => None,
+        };
+        let fitted = fit::creep_fit(&wrap.distribution, state.centrifugal_n, entry_side1)
+            .map_err(|source| RunError::Fit { scene: scene.name.clone(), source })?;
+        result.fit = Some(fitted);
+    }
+    Ok(())
+}
+
+/// Every reported number must be finite: a non-finite intermediate becomes an error.
+pub(super) fn ensure_finite(r: &SceneResult) -> Result<(), RunError> {
+    let c = &r.classical;
+    let mut fields: Vec<(&'static str, f64)> = vec![
+        ("t1_n", c.state.t1_n),
+        ("t2_n", c.state.t2_n),
+        ("euler_limit", c.euler_limit),
+        ("tension_ratio", c.tension_ratio),
+        ("dynamic_angle_deg", c.dynamic_angle_rad),
+        ("critical_mu", c.critical_mu),
+    ];
+    fields.extend(c.safety_factor.map(|v| ("safety_factor", v)));
+    fields.extend(c.static_safety_factor.map(|v| ("static_safety_factor", v)));
+    let distributions = r.wrap.iter().map(|w| &w.distribution).chain(&r.snapshots);
+    if let Some(m) = &r.margins {
+        let all = [
+            &m.critical_mu,
+            &m.payload_to_slip_kg,
+            &m.payload_to_min_safety_factor_kg,
+            &m.braking_to_slip_m_s2,
+            &m.braking_to_min_safety_factor_m_s2,
+        ];
+        fields.extend(all.iter().filter_map(|x| x.value).map(|v| ("margins", v)));
+    }
+    if let Some(f) = &r.fit {
+        fields.extend([("fit.active_arc_deg", f.active_arc_deg), ("fit.idle_tension_n", f.idle_tension_n)]);
+        fields.push(("fit.rms_residual_n", f.rms_residual_n));
+    }
+    if let Some(w) = &r.wrap {
+        fields.push(("max_utilization", w.summary.max_utilization));
+    }
+    for d in distributions {
+        for s in &d.samples {
+            fields.push(("distribution.tension_n", s.tension_n));
+            fields.push(("distribution.friction_n_per_rad", s.friction_n_per_rad));
+            fields.push(("distribution.normal_n_per_rad", s.normal_n_per_rad));
+            fields.extend(s.slip_velocity_m_s.map(|v| ("distribution.slip_velocity_m_s", v)));
+        }
+    }
+    match fields.into_iter().find(|(_, v)| !v.is_finite()) {
+        Some((field, _)) => Err(RunError::NonFinite { scene: r.name.clone(), field }),
+        None => Ok(()),
+    }
+}

@@ -1,0 +1,78 @@
+//! `loads` scenes: level 0, creep theory (level 1), or a steady run-through at level 2–3.
+
+use super::time::{Initial, wrap_history};
+use super::{Options, RunError, SceneResult, WrapResult, empty};
+use crate::derived;
+use crate::design::{Design, Direction, HistorySample, LoadsScene, Scene};
+use crate::model::level0::{self, EndState};
+use crate::model::level1;
+use crate::model::level2;
+use crate::planner::Plan;
+use crate::wrap::Distribution;
+
+pub(super) fn run_loads(
+    design: &Design,
+    scene: &Scene,
+    loads: &LoadsScene,
+    plan: Plan,
+    options: Options,
+) -> Result<SceneResult, RunError> {
+    let classical = level0::loads(design, loads);
+    let mut result = empty(scene, plan, classical);
+    match result.plan.level {
+        0 => {}
+        1 => {
+            let rolling = level1::steady_rolling(
+                design.pulley.mu,
+                design.pulley.wrap_angle_rad,
+                &result.classical.state,
+                loads.direction.sign(),
+                design.rope.ea_n,
+            );
+            let summary = derived::summarize(&rolling.field, &rolling.law)
+                .map_err(|source| RunError::Roots { scene: scene.name.clone(), source })?;
+            let distribution = derived::distribution(
+                0.0,
+                &rolling.field,
+                &rolling.law,
+                &summary,
+                options.nodes,
+                rolling.gross_slip,
+                |_, t| rolling.slip_velocity_m_s(t),
+            );
+            result.wrap = Some(WrapResult { summary, distribution });
+            result.nodes = Some(options.nodes);
+        }
+        _ => {
+            // The steady state as a history: the rope runs through the wrap one and a half times
+            // under these loads (at the scene's speed, or creeping in its direction at rest).
+            let state = result.classical.state;
+            let samples = steady_run(design, &state, loads.direction);
+            let entry = if samples[0].speed_m_s >= 0.0 { state.t1_n } else { state.t2_n };
+            let initial = Initial::Uniform(entry);
+            let run = wrap_history(design, scene, &result.plan, &samples, level2::Output::default(), initial, options)?;
+            let last = run.snapshots.into_iter().last();
+            result.wrap = last
+                .map(|s| WrapResult { summary: s.summary, distribution: Distribution { t_s: 0.0, ..s.distribution } });
+            result.nodes = Some(options.nodes);
+        }
+    }
+    Ok(result)
+}
+
+/// Creep speed used to reach the state "after the rope last ran" for a scene at rest (m/s).
+const CREEP_SPEED_M_S: f64 = 0.1;
+
+/// A history that runs the rope 1.5 wrap lengths through the wrap at constant loads, ending
+/// at the scene's own speed.
+pub(super) fn steady_run(design: &Design, state: &EndState, direction: Direction) -> Vec<HistorySample> {
+    let run_speed = if state.speed_m_s != 0.0 { state.speed_m_s } else { CREEP_SPEED_M_S * direction.sign() };
+    let length_m = 1.5 * design.pulley.wrap_angle_rad * 0.5 * design.pulley.diameter_m;
+    let t_run = length_m / run_speed.abs();
+    let at = |t_s: f64, speed_m_s: f64| HistorySample { t_s, t1_n: state.t1_n, t2_n: state.t2_n, speed_m_s };
+    let mut samples = vec![at(0.0, run_speed), at(t_run, run_speed)];
+    if state.speed_m_s == 0.0 {
+        samples.push(at(t_run * 1.001, 0.0));
+    }
+    samples
+}

@@ -1,0 +1,205 @@
+//! Scenes given as end tensions over time: `history` scenes and `duty-cycle` scenes (whose end
+//! tensions come from the suspended ropes of level 4), level 0 over every sample, then the wrap
+//! through them at level 2 or 3.
+
+use super::loads::steady_run;
+use super::{HistoryOutput, Options, RunError, SceneResult, WrapResult, empty, params};
+use crate::design::{Design, Direction, DutyCycleScene, HistorySample, HistoryScene, Scene};
+use crate::model::level0::{self, EndState};
+use crate::model::level1;
+use crate::model::level2::{self, WrapState};
+use crate::model::level3;
+use crate::model::level4::{self, Level4Error};
+use crate::planner::{self, Plan, PlanError};
+
+pub(super) fn run_history(
+    design: &Design,
+    scene: &Scene,
+    history: &HistoryScene,
+    plan: Plan,
+    options: Options,
+) -> Result<SceneResult, RunError> {
+    let output = level2::Output { snapshots_s: &history.snapshots_s, step_s: history.output_step_s, sample_rows: true };
+    let input = Samples { samples: &history.samples, accel_m_s2: None, direction_before: history.direction, output };
+    run_samples(design, scene, input, plan, options)
+}
+
+/// A duty cycle: the suspended ropes give the end tensions, which then run as a history. The
+/// wrap starts in the state the previous trip (the other way) left it in.
+pub(super) fn run_duty_cycle(
+    design: &Design,
+    scene: &Scene,
+    cycle: &DutyCycleScene,
+    plan: Plan,
+    options: Options,
+) -> Result<SceneResult, RunError> {
+    let err = |source| RunError::Level4 { scene: scene.name.clone(), source };
+    let Some(hoist) = &design.hoist else {
+        return Err(err(Level4Error::NoHoist));
+    };
+    let before = match cycle.direction {
+        Direction::Lift => Direction::Lower,
+        Direction::Lower => Direction::Lift,
+    };
+    let output =
+        level2::Output { snapshots_s: &cycle.snapshots_s, step_s: Some(cycle.output_step_s), sample_rows: false };
+    if plan.level == 0 {
+        // The classical check: rigid ropes along the motion profile; no dynamics, no wrap.
+        let (samples, accel) = level4::rigid_ropes(design, hoist, cycle).map_err(err)?;
+        let input = Samples { samples: &samples, accel_m_s2: Some(&accel), direction_before: before, output };
+        return run_samples(design, scene, input, plan, options);
+    }
+    let dynamics = level4::suspended_ropes(design, hoist, cycle).map_err(err)?;
+    let samples = level4::end_history(&dynamics);
+    let accel: Vec<f64> = dynamics.iter().map(|s| s.accel_m_s2).collect();
+    let input = Samples { samples: &samples, accel_m_s2: Some(&accel), direction_before: before, output };
+    let mut result = run_samples(design, scene, input, plan, options)?;
+    if let Some(history) = &mut result.history {
+        history.anchors_n = history.rows.iter().map(|r| level4::anchors_at(&dynamics, r.t_s)).collect();
+    }
+    Ok(result)
+}
+
+/// The end tensions of a time scene and what the wrap needs to run through them.
+struct Samples<'a> {
+    samples: &'a [HistorySample],
+    /// The acceleration at each sample when known (else the slope of the speed).
+    accel_m_s2: Option<&'a [f64]>,
+    /// Which way the rope ran before the first sample.
+    direction_before: Direction,
+    /// When the wrap reports (rows and snapshots).
+    output: level2::Output<'a>,
+}
+
+/// A scene given as end tensions and speed over time (history and duty-cycle scenes): level 0
+/// over every sample, then (level ≥ 2) the discrete model through them.
+fn run_samples(
+    design: &Design,
+    scene: &Scene,
+    input: Samples,
+    plan: Plan,
+    options: Options,
+) -> Result<SceneResult, RunError> {
+    let Samples { samples, accel_m_s2, direction_before: direction, output } = input;
+    let c_of = |v: f64| design.rope.mass_per_m_kg * v * v;
+    let states: Vec<(f64, EndState)> = samples
+        .iter()
+        .enumerate()
+        .map(|(i, s)| {
+            let slope = |a: &HistorySample, b: &HistorySample| (b.speed_m_s - a.speed_m_s) / (b.t_s - a.t_s);
+            let accel = match (accel_m_s2, samples.get(i + 1), i.checked_sub(1).and_then(|j| samples.get(j))) {
+                (Some(a), _, _) => a[i],
+                (None, Some(next), _) => slope(s, next),
+                (None, None, Some(prev)) => slope(prev, s),
+                _ => 0.0,
+            };
+            (
+                s.t_s,
+                EndState {
+                    t1_n: s.t1_n,
+                    t2_n: s.t2_n,
+                    speed_m_s: s.speed_m_s,
+                    accel_m_s2: accel,
+                    centrifugal_n: c_of(s.speed_m_s),
+                },
+            )
+        })
+        .collect();
+    let classical = level0::over_history(design, &states);
+    let mut result = empty(scene, plan, classical);
+    result.t_s = samples.last().map(|s| s.t_s);
+    result.worst = level0::worst_instant(design, &states);
+    if result.plan.level < 2 {
+        return Ok(result);
+    }
+    let first = states[0].1;
+    let alpha = design.pulley.wrap_angle_rad;
+    // Uniform rope when the history starts balanced, else the steady rolling state of its first loads.
+    let rolling = (first.t1_n != first.t2_n)
+        .then(|| level1::steady_rolling(design.pulley.mu, alpha, &first, direction.sign(), design.rope.ea_n));
+    let initial = match &rolling {
+        None => Initial::Uniform(first.t1_n),
+        Some(r) => Initial::Rolling { level1: r, first, direction },
+    };
+    let run = wrap_history(design, scene, &result.plan, samples, output, initial, options)?;
+    let mut snapshots: Vec<level2::Snapshot> = run.snapshots;
+    let last = snapshots.pop();
+    result.snapshots = snapshots.into_iter().map(|s| s.distribution).collect();
+    if let Some(last) = last {
+        result.classical.gross_slip |= last.distribution.gross_slip;
+        result.wrap = Some(WrapResult { summary: last.summary, distribution: last.distribution });
+    }
+    if run.rows.iter().any(|r| r.gross_slip) {
+        result.classical.gross_slip = true;
+        if let Some(check) = result.classical.checks.first_mut() {
+            check.pass = false;
+        }
+    }
+    result.history = Some(HistoryOutput { rows: run.rows, map: run.map, stats: run.stats, anchors_n: Vec::new() });
+    result.nodes = Some(options.nodes);
+    Ok(result)
+}
+
+/// The wrap's state when a history starts.
+#[derive(Clone, Copy)]
+pub(super) enum Initial<'a> {
+    /// Uniform tension (N).
+    Uniform(f64),
+    /// The state after the rope last ran in `direction` under the loads `first`: creep
+    /// theory's steady rolling on a rigid lining (level 2); on an elastic lining (level 3) the
+    /// state those loads reach when the rope runs 1.5 wrap lengths through the wrap.
+    Rolling { level1: &'a level1::SteadyRolling, first: EndState, direction: Direction },
+}
+
+/// Runs the wrap through a history at the plan's wrap level (2, or 3 on an elastic lining).
+pub(super) fn wrap_history(
+    design: &Design,
+    scene: &Scene,
+    plan: &Plan,
+    samples: &[HistorySample],
+    output: level2::Output,
+    initial: Initial,
+    options: Options,
+) -> Result<level2::HistoryRun, RunError> {
+    let alpha = design.pulley.wrap_angle_rad;
+    match (planner::wrap_level(plan, design.lining.is_some()), design.lining) {
+        (3, Some(lining)) => {
+            let p = params(design, options.solver);
+            let params = level3::Params {
+                mu: p.mu,
+                wrap_angle_rad: p.wrap_angle_rad,
+                radius_m: p.radius_m,
+                mass_per_m_kg: p.mass_per_m_kg,
+                ea_n: p.ea_n,
+                shear_stiffness_n_per_m2: lining.shear_stiffness_n_per_m2,
+                bending_stiffness_n_m2: design.rope.bending_stiffness_n_m2,
+                rope_inertia: lining.rope_inertia,
+                max_iter: level3::MAX_ITER,
+                solver: options.solver,
+            };
+            let err = |source| RunError::Level3 { scene: scene.name.clone(), source };
+            let initial = match initial {
+                Initial::Uniform(t) => level3::State::uniform(alpha, options.nodes, t),
+                Initial::Rolling { first, direction, .. } => {
+                    let run_in = steady_run(design, &first, direction);
+                    let entry = if run_in[0].speed_m_s >= 0.0 { first.t1_n } else { first.t2_n };
+                    let start = level3::State::uniform(alpha, options.nodes, entry);
+                    let mut sim = level3::Simulation::new(params, &run_in, start).map_err(err)?;
+                    sim.settle().map_err(err)?;
+                    sim.advance_to(run_in.last().map_or(0.0, |s| s.t_s)).map_err(err)?;
+                    sim.state
+                }
+            };
+            level3::run_history(params, samples, output, initial).map_err(err)
+        }
+        (3, None) => Err(PlanError::NoLining { scene: scene.name.clone() }.into()),
+        _ => {
+            let initial = match initial {
+                Initial::Uniform(t) => WrapState::uniform(alpha, options.nodes, t),
+                Initial::Rolling { level1, .. } => WrapState::from_field(alpha, options.nodes, &level1.field),
+            };
+            level2::run_history(params(design, options.solver), samples, output, initial, options.nodes)
+                .map_err(|source| RunError::Level2 { scene: scene.name.clone(), source })
+        }
+    }
+}
