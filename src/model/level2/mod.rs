@@ -60,8 +60,39 @@ pub struct HistoryRun {
 }
 
 impl HistoryRun {
+    /// An empty run with room for `rows` rows.
+    pub fn with_capacity(rows: usize) -> Self {
+        Self {
+            rows: Vec::with_capacity(rows),
+            snapshots: Vec::new(),
+            stats: StepStats::default(),
+            roots: RootStats::default(),
+            map: Vec::with_capacity(rows),
+        }
+    }
+
     pub fn last(&self) -> &Snapshot {
         self.snapshots.last().expect("a history run reports its last state")
+    }
+
+    /// Adds the row of the wrap at `t_s`: the end state `end` (per rope), the wrap's summary,
+    /// the safety factor of `end` against the Euler limit `e^{μα}`, and the gross-slip flag.
+    pub fn push_row(&mut self, t_s: f64, end: &EndState, summary: &WrapSummary, euler_limit: f64, gross_slip: bool) {
+        self.roots.calls += summary.roots.calls;
+        self.roots.iterations += summary.roots.iterations;
+        self.rows.push(HistoryRow {
+            t_s,
+            t1_n: end.t1_n,
+            t2_n: end.t2_n,
+            speed_m_s: end.speed_m_s,
+            accel_m_s2: end.accel_m_s2,
+            jdp_deg: summary.jdp_rad.map(f64::to_degrees),
+            positive_arc_deg: summary.positive_arc_rad.to_degrees(),
+            reverse_arc_deg: summary.reverse_arc_rad.to_degrees(),
+            max_utilization: summary.max_utilization,
+            safety_factor: safety_factor(end, euler_limit),
+            gross_slip,
+        });
     }
 }
 
@@ -85,6 +116,27 @@ pub struct Output<'a> {
     pub sample_rows: bool,
 }
 
+impl Output<'_> {
+    /// The times a run through `samples` reports at: the first and last sample, every snapshot,
+    /// every `step_s` from the start, and (when `sample_rows`) every sample; sorted, no repeats.
+    pub fn times(&self, samples: &[HistorySample]) -> Vec<f64> {
+        let (t0, t_end) = (samples.first().map_or(0.0, |s| s.t_s), samples.last().map_or(0.0, |s| s.t_s));
+        let steps = self.step_s.filter(|s| *s > 0.0).map_or(0, |s| ((t_end - t0) / s).floor() as usize);
+        let regular = (1..=steps).map(|k| t0 + k as f64 * self.step_s.unwrap_or(0.0)).filter(|t| *t < t_end);
+        let at_samples = samples.iter().map(|s| s.t_s).filter(|_| self.sample_rows);
+        let mut times: Vec<f64> =
+            at_samples.chain(self.snapshots_s.iter().copied()).chain(regular).chain([t0, t_end]).collect();
+        times.sort_by(f64::total_cmp);
+        times.dedup();
+        times
+    }
+
+    /// Whether the run reports a distribution at `t_s`: a requested snapshot, or the last sample.
+    pub fn is_snapshot(&self, t_s: f64, samples: &[HistorySample]) -> bool {
+        self.snapshots_s.contains(&t_s) || samples.last().is_some_and(|s| s.t_s == t_s)
+    }
+}
+
 impl Default for Output<'_> {
     /// A row at every sample, no snapshots.
     fn default() -> Self {
@@ -101,25 +153,12 @@ pub fn run_history(
     initial: WrapState,
     output_nodes: usize,
 ) -> Result<HistoryRun, Level2Error> {
-    let snapshots_s = output.snapshots_s;
-    let (t0, t_end) = (samples.first().map_or(0.0, |s| s.t_s), samples.last().map_or(0.0, |s| s.t_s));
-    let steps = output.step_s.filter(|s| *s > 0.0).map_or(0, |s| ((t_end - t0) / s).floor() as usize);
-    let regular = (1..=steps).map(|k| t0 + k as f64 * output.step_s.unwrap_or(0.0)).filter(|t| *t < t_end);
-    let at_samples = samples.iter().map(|s| s.t_s).filter(|_| output.sample_rows);
-    let mut times: Vec<f64> = at_samples.chain(snapshots_s.iter().copied()).chain(regular).chain([t0, t_end]).collect();
-    times.sort_by(f64::total_cmp);
-    times.dedup();
+    let times = output.times(samples);
     let mut sim = Simulation::new(params, samples, initial);
     sim.settle()?;
     let limit = euler_limit(params.mu, params.wrap_angle_rad);
-    let mut run = HistoryRun {
-        rows: Vec::with_capacity(times.len()),
-        snapshots: Vec::new(),
-        stats: StepStats::default(),
-        roots: RootStats::default(),
-        map: Vec::with_capacity(times.len()),
-    };
-    let is_snapshot = |t: f64| snapshots_s.contains(&t) || t == t_end;
+    let mut run = HistoryRun::with_capacity(times.len());
+    let is_snapshot = |t: f64| output.is_snapshot(t, samples);
     for (i, &t) in times.iter().enumerate() {
         // Slip velocity is reported with distributions only: the increments keep the knots
         // they need while the run approaches a snapshot.
@@ -134,8 +173,6 @@ pub fn run_history(
         } else {
             row_summary(&sim.state, &law)
         };
-        run.roots.calls += summary.roots.calls;
-        run.roots.iterations += summary.roots.iterations;
         let end = EndState {
             t1_n: s.t1_n,
             t2_n: s.t2_n,
@@ -143,19 +180,7 @@ pub fn run_history(
             accel_m_s2: sim.accel_m_s2(t),
             centrifugal_n: c,
         };
-        run.rows.push(HistoryRow {
-            t_s: t,
-            t1_n: s.t1_n,
-            t2_n: s.t2_n,
-            speed_m_s: s.speed_m_s,
-            accel_m_s2: end.accel_m_s2,
-            jdp_deg: summary.jdp_rad.map(f64::to_degrees),
-            positive_arc_deg: summary.positive_arc_rad.to_degrees(),
-            reverse_arc_deg: summary.reverse_arc_rad.to_degrees(),
-            max_utilization: summary.max_utilization,
-            safety_factor: safety_factor(&end, limit),
-            gross_slip: sim.gross_slip,
-        });
+        run.push_row(t, &end, &summary, limit, sim.gross_slip);
         run.map.push(utilization_map(&sim.state, &law));
         if snapshot {
             let field = sim.state.field(c);

@@ -61,8 +61,8 @@ pub mod state;
 
 use crate::contact::{ARC_THRESHOLD, ContactLaw, SLIP_UTILIZATION};
 use crate::derived::{ArcTally, WrapSummary};
-use crate::model::level0::{EndState, euler_limit, safety_factor};
-use crate::model::level2::{HistoryRow, HistoryRun, MAP_COLUMNS, Output, Snapshot, Solver, StepStats};
+use crate::model::level0::{EndState, euler_limit};
+use crate::model::level2::{HistoryRun, MAP_COLUMNS, Output, Snapshot, Solver, StepStats};
 use crate::roots::{RootError, RootStats, brent};
 use crate::wrap::{Distribution, Sample, Zone};
 pub use increment::{Loads, Program, SolveError, Verdict};
@@ -335,32 +335,17 @@ pub fn run_history(
     output: Output,
     initial: State,
 ) -> Result<HistoryRun, Level3Error> {
-    let snapshots_s = output.snapshots_s;
-    let (t0, t_end) = (samples.first().map_or(0.0, |s| s.t_s), samples.last().map_or(0.0, |s| s.t_s));
-    let steps = output.step_s.filter(|s| *s > 0.0).map_or(0, |s| ((t_end - t0) / s).floor() as usize);
-    let regular = (1..=steps).map(|k| t0 + k as f64 * output.step_s.unwrap_or(0.0)).filter(|t| *t < t_end);
-    let at_samples = samples.iter().map(|s| s.t_s).filter(|_| output.sample_rows);
-    let mut times: Vec<f64> = at_samples.chain(snapshots_s.iter().copied()).chain(regular).chain([t0, t_end]).collect();
-    times.sort_by(f64::total_cmp);
-    times.dedup();
+    let times = output.times(samples);
     let mut sim = Simulation::new(params, samples, initial)?;
     sim.settle()?;
     let limit = euler_limit(params.mu, params.wrap_angle_rad);
-    let mut run = HistoryRun {
-        rows: Vec::with_capacity(times.len()),
-        snapshots: Vec::new(),
-        stats: StepStats::default(),
-        roots: RootStats::default(),
-        map: Vec::with_capacity(times.len()),
-    };
+    let mut run = HistoryRun::with_capacity(times.len());
     for &t in &times {
         sim.advance_to(t)?;
         let s = sim.at(t);
         let c = params.mass_per_m_kg * s.speed_m_s * s.speed_m_s;
-        let snapshot = snapshots_s.contains(&t) || t == t_end;
+        let snapshot = output.is_snapshot(t, samples);
         let summary = summarize(&sim.state, params.mu, snapshot)?;
-        run.roots.calls += summary.roots.calls;
-        run.roots.iterations += summary.roots.iterations;
         let end = EndState {
             t1_n: s.t1_n,
             t2_n: s.t2_n,
@@ -368,19 +353,7 @@ pub fn run_history(
             accel_m_s2: sim.accel_m_s2(t),
             centrifugal_n: c,
         };
-        run.rows.push(HistoryRow {
-            t_s: t,
-            t1_n: s.t1_n,
-            t2_n: s.t2_n,
-            speed_m_s: s.speed_m_s,
-            accel_m_s2: end.accel_m_s2,
-            jdp_deg: summary.jdp_rad.map(f64::to_degrees),
-            positive_arc_deg: summary.positive_arc_rad.to_degrees(),
-            reverse_arc_deg: summary.reverse_arc_rad.to_degrees(),
-            max_utilization: summary.max_utilization,
-            safety_factor: safety_factor(&end, limit),
-            gross_slip: sim.gross_slip,
-        });
+        run.push_row(t, &end, &summary, limit, sim.gross_slip);
         run.map.push(utilization_map(&sim.state, params.mu));
         if snapshot {
             let distribution = distribution(t, &sim.state, params.mu, c, &summary, sim.gross_slip, sim.last_dt_s);
