@@ -98,7 +98,7 @@ impl Template {
                     ),
                 });
             }
-            for section in ["hoist", "pulley.guide"] {
+            for section in ["hoist", "pulley.guide", "lining"] {
                 if v.key.strip_prefix(section).is_some_and(|rest| rest.starts_with('.'))
                     && table_at(&self.doc, section).is_none()
                 {
