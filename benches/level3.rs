@@ -14,16 +14,18 @@ use wrapcalc::sheet;
 
 fn params() -> Params {
     Params {
-        mu: 0.25,
-        wrap_angle_rad: 187.42_f64.to_radians(),
-        radius_m: 2.5,
-        mass_per_m_kg: 10.81,
-        ea_n: 2.634e8,
+        wrap: wrapcalc::model::level2::Params {
+            mu: 0.25,
+            wrap_angle_rad: 187.42_f64.to_radians(),
+            radius_m: 2.5,
+            mass_per_m_kg: 10.81,
+            ea_n: 2.634e8,
+            solver: Solver::Clarabel,
+        },
         shear_stiffness_n_per_m2: 7.5e6,
         bending_stiffness_n_m2: 48.0,
         rope_inertia: true,
         max_iter: level3::MAX_ITER,
-        solver: Solver::Clarabel,
     }
 }
 
@@ -33,7 +35,8 @@ fn bench(c: &mut Criterion) {
     let samples = [HistorySample { t_s: 0.0, t1_n: 2.0e5, t2_n: 2.0e5, speed_m_s: 1.0 }];
     for nodes in [90, 360] {
         let p = params();
-        let mut sim = Simulation::new(p, &samples, State::uniform(p.wrap_angle_rad, nodes, 2.0e5)).expect("builds");
+        let mut sim =
+            Simulation::new(p, &samples, State::uniform(p.wrap.wrap_angle_rad, nodes, 2.0e5)).expect("builds");
         sim.settle().expect("settles");
         // Rolling at 1 m/s with the ends swinging ±10 kN: every increment moves the rope and
         // changes the friction over the whole wrap.

@@ -13,16 +13,18 @@ const T0_N: f64 = 2.0e5;
 
 fn params(mu: f64, alpha_rad: f64, shear_stiffness_n_per_m2: f64) -> Params {
     Params {
-        mu,
-        wrap_angle_rad: alpha_rad,
-        radius_m: R_M,
-        mass_per_m_kg: 10.81,
-        ea_n: EA_N,
+        wrap: level2::Params {
+            mu,
+            wrap_angle_rad: alpha_rad,
+            radius_m: R_M,
+            mass_per_m_kg: 10.81,
+            ea_n: EA_N,
+            solver: Solver::Clarabel,
+        },
         shear_stiffness_n_per_m2,
         bending_stiffness_n_m2: 0.0,
         rope_inertia: false,
         max_iter: level3::MAX_ITER,
-        solver: Solver::Clarabel,
     }
 }
 
@@ -33,7 +35,7 @@ fn at_rest(t_s: f64, t1_n: f64, t2_n: f64) -> HistorySample {
 /// Runs a standstill history from a uniform rope and returns the final state.
 fn standstill(p: Params, segments: usize, samples: &[HistorySample]) -> State {
     let mut sim =
-        level3::Simulation::new(p, samples, State::uniform(p.wrap_angle_rad, segments, T0_N)).expect("builds");
+        level3::Simulation::new(p, samples, State::uniform(p.wrap.wrap_angle_rad, segments, T0_N)).expect("builds");
     sim.settle().expect("settles");
     sim.advance_to(samples.last().unwrap().t_s).expect("runs");
     assert!(!sim.gross_slip);
@@ -62,7 +64,7 @@ fn shear_lag_matches_the_closed_form() {
     let n = 360;
     let state = standstill(p, n, &[at_rest(0.0, T0_N, T0_N), at_rest(1.0, T0_N + dt_n, T0_N)]);
     // Full stick: no segment at the Coulomb bound.
-    let peak_u = (0..n).map(|k| state.utilization(k, p.mu)).fold(0.0, f64::max);
+    let peak_u = (0..n).map(|k| state.utilization(k, p.wrap.mu)).fold(0.0, f64::max);
     assert!(peak_u < 0.2, "not full stick: peak utilization {peak_u}");
     let t_exact = |x: f64| T0_N + dt_n * ((length_m - x) / lambda_m).sinh() / (length_m / lambda_m).sinh();
     let q_exact = |x: f64| dt_n * R_M / lambda_m * ((length_m - x) / lambda_m).cosh() / (length_m / lambda_m).sinh();
@@ -94,7 +96,7 @@ fn jdp_is_the_sign_change_of_friction() {
     let p = params(0.25, alpha, EA_N / (lambda_m * lambda_m));
     let (d1, d2) = (3.0e3, 1.5e3);
     let state = standstill(p, 360, &[at_rest(0.0, T0_N, T0_N), at_rest(1.0, T0_N + d1, T0_N + d2)]);
-    let summary = summarize(&state, p.mu, true).expect("summarizes");
+    let summary = summarize(&state, p.wrap.mu, true).expect("summarizes");
     let jdp = summary.jdp_rad.expect("a sign change");
     // Independent root by bisection of the closed form.
     let g = |x: f64| d1 * ((length_m - x) / lambda_m).cosh() - d2 * (x / lambda_m).cosh();
@@ -204,7 +206,7 @@ fn bending_concentrates_contact_at_the_tangent_points_and_balances() {
     let ei = (phi * R_M).powi(2) * T0_N; // ℓ = √(EI/n)  →  EI = ℓ² n
     let mut p = params(0.25, alpha, 1e8);
     p.bending_stiffness_n_m2 = ei;
-    p.mass_per_m_kg = 0.0;
+    p.wrap.mass_per_m_kg = 0.0;
     let n = 720;
     let state = standstill(p, n, &[at_rest(0.0, T0_N, T0_N), at_rest(1.0, T0_N, T0_N)]);
     let h = state.pitch_rad;
@@ -254,7 +256,7 @@ fn rolling_keeps_coulomb_and_reports_solver_tallies() {
     assert!(run.stats.qp_solved >= run.stats.increments);
     let last = run.last();
     for s in &last.distribution.samples {
-        assert!(s.friction_n_per_rad.abs() <= p.mu * s.normal_n_per_rad * (1.0 + 1e-8), "{s:?}");
+        assert!(s.friction_n_per_rad.abs() <= p.wrap.mu * s.normal_n_per_rad * (1.0 + 1e-8), "{s:?}");
     }
     assert!(run.rows.iter().all(|r| r.max_utilization <= 1.0));
 }
@@ -276,7 +278,7 @@ fn fast_and_clarabel_agree() {
     let out = Output { snapshots_s: &[1.0], step_s: Some(0.25), sample_rows: true };
     let run = |solver: Solver| {
         let mut p = params(0.25, alpha, EA_N / (lambda_m * lambda_m));
-        p.solver = solver;
+        p.wrap.solver = solver;
         level3::run_history(p, &samples, out, State::uniform(alpha, 180, 2.0e5)).expect("runs")
     };
     let (fast, qp) = (run(Solver::Fast), run(Solver::Clarabel));
@@ -419,6 +421,6 @@ fn gross_slip_is_reported_not_an_error() {
     assert!(d.gross_slip);
     for s in &d.samples {
         assert!(s.tension_n.is_finite() && s.friction_n_per_rad.is_finite());
-        assert!(s.friction_n_per_rad.abs() <= p.mu * s.normal_n_per_rad * (1.0 + 1e-8), "{s:?}");
+        assert!(s.friction_n_per_rad.abs() <= p.wrap.mu * s.normal_n_per_rad * (1.0 + 1e-8), "{s:?}");
     }
 }

@@ -164,18 +164,12 @@ pub(super) fn wrap_history(
     let alpha = design.pulley.wrap_angle_rad;
     match (planner::wrap_level(plan, design.lining.is_some()), design.lining) {
         (3, Some(lining)) => {
-            let p = params(design, options.solver);
             let params = level3::Params {
-                mu: p.mu,
-                wrap_angle_rad: p.wrap_angle_rad,
-                radius_m: p.radius_m,
-                mass_per_m_kg: p.mass_per_m_kg,
-                ea_n: p.ea_n,
+                wrap: params(design, options.solver),
                 shear_stiffness_n_per_m2: lining.shear_stiffness_n_per_m2,
                 bending_stiffness_n_m2: design.rope.bending_stiffness_n_m2,
                 rope_inertia: lining.rope_inertia,
                 max_iter: level3::MAX_ITER,
-                solver: options.solver,
             };
             let err = |source| RunError::Level3 { scene: scene.name.clone(), source };
             let initial = match initial {

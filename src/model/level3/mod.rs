@@ -80,14 +80,14 @@ pub const LOAD_STEP: f64 = 0.01;
 /// clarabel's iteration cap per solve.
 pub const MAX_ITER: u32 = 100;
 
-/// What level 3 needs of the hoist (per rope, SI).
+/// What level 3 needs of the hoist (per rope, SI): the wrap of level 2 and the lining, bending
+/// and inertia.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Params {
-    pub mu: f64,
-    pub wrap_angle_rad: f64,
-    pub radius_m: f64,
-    pub mass_per_m_kg: f64,
-    pub ea_n: f64,
+    /// μ, α, R, m', EA and the solver choice, as at level 2. `Fast`: try the elastic minimiser
+    /// first ([`Program::solve_elastic`]) and call clarabel only when a segment reaches its bound;
+    /// `Clarabel`: clarabel on every increment.
+    pub wrap: crate::model::level2::Params,
     /// k_s: lining friction force per metre of rope per metre of rope–lining displacement (N/m²).
     pub shear_stiffness_n_per_m2: f64,
     /// EI of one rope (N·m²); 0 for a perfectly flexible rope.
@@ -96,9 +96,6 @@ pub struct Params {
     pub rope_inertia: bool,
     /// clarabel's iteration cap per solve.
     pub max_iter: u32,
-    /// `Fast`: try the elastic minimiser first ([`Program::solve_elastic`]) and call clarabel
-    /// only when a segment reaches its bound; `Clarabel`: clarabel on every increment.
-    pub solver: Solver,
 }
 
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -141,8 +138,8 @@ impl<'a> Simulation<'a> {
         let program = Program::new(
             n,
             state.pitch_rad,
-            params.radius_m,
-            params.ea_n,
+            params.wrap.radius_m,
+            params.wrap.ea_n,
             params.shear_stiffness_n_per_m2,
             params.max_iter,
         )
@@ -189,8 +186,8 @@ impl<'a> Simulation<'a> {
             let seg_end = self.samples.get(k).map_or(t_end, |s| s.t_s).min(t_end);
             let (s0, s1) = (self.at(self.t_s), self.at(seg_end));
             let span = seg_end - self.t_s;
-            let travel = 0.5 * (s0.speed_m_s + s1.speed_m_s) * span / self.params.radius_m;
-            let c0 = self.params.mass_per_m_kg * s0.speed_m_s.powi(2);
+            let travel = 0.5 * (s0.speed_m_s + s1.speed_m_s) * span / self.params.wrap.radius_m;
+            let c0 = self.params.wrap.mass_per_m_kg * s0.speed_m_s.powi(2);
             let n_lo = (s0.t1_n.min(s0.t2_n) - c0).max(f64::MIN_POSITIVE);
             let load = (s1.t1_n - s0.t1_n).abs().max((s1.t2_n - s0.t2_n).abs()) / (LOAD_STEP * n_lo);
             let steps = (travel.abs() / self.state.pitch_rad).max(load).ceil().clamp(1.0, 1e6) as usize;
@@ -200,7 +197,7 @@ impl<'a> Simulation<'a> {
                 let t = if i == steps { seg_end } else { self.t_s + span * i as f64 / steps as f64 };
                 let s = self.at(t);
                 let v_prev = self.at(t_prev).speed_m_s;
-                let delta = 0.5 * (v_prev + s.speed_m_s) * (t - t_prev) / self.params.radius_m;
+                let delta = 0.5 * (v_prev + s.speed_m_s) * (t - t_prev) / self.params.wrap.radius_m;
                 self.increment(&s, delta, accel, t - t_prev)?;
                 t_prev = t;
             }
@@ -219,7 +216,7 @@ impl<'a> Simulation<'a> {
         dt_s: f64,
     ) -> Result<(), Level3Error> {
         let p = self.params;
-        let c = p.mass_per_m_kg * s.speed_m_s * s.speed_m_s;
+        let c = p.wrap.mass_per_m_kg * s.speed_m_s * s.speed_m_s;
         let lo = s.t1_n.min(s.t2_n);
         if lo <= c {
             return Err(Level3Error::ContactLoss { t_s: s.t_s, centrifugal_n: c, tension_n: lo });
@@ -229,21 +226,25 @@ impl<'a> Simulation<'a> {
         let n = self.state.segments();
         self.state.tension_n[0] = s.t1_n;
         self.state.tension_n[n] = s.t2_n;
-        let bending = Bending::new(p.bending_stiffness_n_m2, p.radius_m, s.t1_n - c, s.t2_n - c, p.wrap_angle_rad);
-        let inertia =
-            if p.rope_inertia { p.mass_per_m_kg * p.radius_m * self.state.pitch_rad * accel_m_s2 } else { 0.0 };
-        let loads = Loads { t1_n: s.t1_n, t2_n: s.t2_n, inertia_n: inertia, mu: p.mu };
+        let bending =
+            Bending::new(p.bending_stiffness_n_m2, p.wrap.radius_m, s.t1_n - c, s.t2_n - c, p.wrap.wrap_angle_rad);
+        let inertia = if p.rope_inertia {
+            p.wrap.mass_per_m_kg * p.wrap.radius_m * self.state.pitch_rad * accel_m_s2
+        } else {
+            0.0
+        };
+        let loads = Loads { t1_n: s.t1_n, t2_n: s.t2_n, inertia_n: inertia, mu: p.wrap.mu };
         self.old_tension.clone_from(&self.state.tension_n);
         self.old_friction.clone_from(&self.state.friction_n);
         let mut normal = std::mem::take(&mut self.state.normal_n);
         let mut next = std::mem::take(&mut self.scratch);
         state::normal_forces(&self.state.tension_n, c, self.state.pitch_rad, &bending, &mut normal);
         self.gross_slip = false;
-        let elastic = p.solver == Solver::Fast
-            && self.program.solve_elastic(&mut self.state, &loads, p.mu, &mut normal, &bending, c);
+        let elastic = p.wrap.solver == Solver::Fast
+            && self.program.solve_elastic(&mut self.state, &loads, p.wrap.mu, &mut normal, &bending, c);
         if elastic {
             self.stats.elastic_increments += 1;
-        } else if p.solver == Solver::Fast {
+        } else if p.wrap.solver == Solver::Fast {
             // The rejected elastic trial left its own contact forces: start from the old ones.
             state::normal_forces(&self.state.tension_n, c, self.state.pitch_rad, &bending, &mut normal);
         }
@@ -267,13 +268,13 @@ impl<'a> Simulation<'a> {
                     state::normal_forces(&self.state.tension_n, c, self.state.pitch_rad, &bending, &mut normal);
                     let sign = if loads.t1_n >= loads.t2_n { 1.0 } else { -1.0 };
                     for (f, nk) in self.state.friction_n.iter_mut().zip(&normal) {
-                        *f = sign * p.mu * nk;
+                        *f = sign * p.wrap.mu * nk;
                     }
                     break;
                 }
             }
             state::normal_forces(&self.state.tension_n, c, self.state.pitch_rad, &bending, &mut next);
-            let settled = settled(&self.state.friction_n, &normal, &next, p.mu);
+            let settled = settled(&self.state.friction_n, &normal, &next, p.wrap.mu);
             std::mem::swap(&mut normal, &mut next);
             if settled {
                 break;
@@ -338,14 +339,14 @@ pub fn run_history(
     let times = output.times(samples);
     let mut sim = Simulation::new(params, samples, initial)?;
     sim.settle()?;
-    let limit = euler_limit(params.mu, params.wrap_angle_rad);
+    let limit = euler_limit(params.wrap.mu, params.wrap.wrap_angle_rad);
     let mut run = HistoryRun::with_capacity(times.len());
     for &t in &times {
         sim.advance_to(t)?;
         let s = sim.at(t);
-        let c = params.mass_per_m_kg * s.speed_m_s * s.speed_m_s;
+        let c = params.wrap.mass_per_m_kg * s.speed_m_s * s.speed_m_s;
         let snapshot = output.is_snapshot(t, samples);
-        let summary = summarize(&sim.state, params.mu, snapshot)?;
+        let summary = summarize(&sim.state, params.wrap.mu, snapshot)?;
         let end = EndState {
             t1_n: s.t1_n,
             t2_n: s.t2_n,
@@ -354,9 +355,9 @@ pub fn run_history(
             centrifugal_n: c,
         };
         run.push_row(t, &end, &summary, limit, sim.gross_slip);
-        run.map.push(utilization_map(&sim.state, params.mu));
+        run.map.push(utilization_map(&sim.state, params.wrap.mu));
         if snapshot {
-            let distribution = distribution(t, &sim.state, params.mu, c, &summary, sim.gross_slip, sim.last_dt_s);
+            let distribution = distribution(t, &sim.state, params.wrap.mu, c, &summary, sim.gross_slip, sim.last_dt_s);
             run.snapshots.push(Snapshot { summary, distribution });
         }
     }
