@@ -415,3 +415,33 @@ fn inconsistent_shards_are_refused() {
     assert!(error(&[only_header]).contains("no rows"));
     assert!(error(&[]).contains("no shard files"));
 }
+
+/// The lining's keys can be swept: the history then runs at level 3 at every point, each row
+/// equals a plain run with the value typed in, and a stiffer lining (k_s = G·b/t) carries the
+/// same step with friction closer to the ends (λ = √(EA/k_s) shorter): a higher peak
+/// utilization. A sheet without `[lining]` is refused by name.
+#[test]
+fn lining_keys_sweep_at_level_3_and_need_a_lining() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let lining = "\n[lining]\nthickness_m = 0.03\nshear_modulus_pa = 5.0e6\ncontact_width_m = 0.045\n";
+    let text = format!("{SHEET}{lining}");
+    let path = sheet_in(dir.path(), &text);
+    let mut s = spec(&["lining.shear_modulus_pa=2e6:8e6:2"]);
+    s.scenes = vec!["steps".into()];
+    let file = run_sweep(&path, &s).expect("sweep");
+    for g in [2e6, 8e6] {
+        let r = row(&file, "steps", g);
+        assert_eq!(r.level, 3, "level 3 on a lining");
+        let typed = text.replace("shear_modulus_pa = 5.0e6", &format!("shear_modulus_pa = {g:e}"));
+        let design = wrapcalc::sheet::parse("hoist.toml", &typed).expect("sheet");
+        let scenes: Vec<_> = design.scenes.iter().filter(|s| s.name == "steps").collect();
+        let result = run::run(&design, &scenes, Options { nodes: 48, ..Options::default() }).expect("run");
+        let expected = SweepRow::of(0, 0, &[g], &SceneSummary::of(&result.scenes[0]), &design.requirements);
+        assert_eq!(r.cells, expected.cells, "G = {g}");
+    }
+    let (soft, stiff) = (row(&file, "steps", 2e6), row(&file, "steps", 8e6));
+    assert!(stiff.num("max_utilization") > soft.num("max_utilization"));
+    let plain = sheet_in(dir.path(), SHEET);
+    let e = run_sweep(&plain, &s).expect_err("no lining to vary").to_string();
+    assert!(e.contains("lining.shear_modulus_pa") && e.contains("[lining]"), "{e}");
+}
