@@ -67,13 +67,29 @@ impl SmallSplit {
 }
 
 /// Appends `(start, end, value)` to `runs`, merging with the last run of the same value.
-fn push_run<T: PartialEq + Copy>(runs: &mut Vec<(f64, f64, T)>, start: f64, end: f64, value: T) {
-    if end <= start {
-        return;
+/// Contact zones, accumulated stretch by stretch in θ order: adjacent stretches in the same
+/// state merge into one zone.
+#[derive(Debug, Default, Clone)]
+pub struct ZoneRuns(Vec<(f64, f64, NodeState)>);
+
+impl ZoneRuns {
+    /// Adds the stretch [start, end] (rad) in `state`.
+    pub fn push(&mut self, start: f64, end: f64, state: NodeState) {
+        if end <= start {
+            return;
+        }
+        match self.0.last_mut() {
+            Some(last) if last.2 == state && (last.1 - start).abs() < 1e-12 => last.1 = end,
+            _ => self.0.push((start, end, state)),
+        }
     }
-    match runs.last_mut() {
-        Some(last) if last.2 == value && (last.1 - start).abs() < 1e-12 => last.1 = end,
-        _ => runs.push((start, end, value)),
+
+    /// The zones, in degrees.
+    pub fn into_zones(self) -> Vec<Zone> {
+        self.0
+            .into_iter()
+            .map(|(s, e, state)| Zone { start_deg: s.to_degrees(), end_deg: e.to_degrees(), state })
+            .collect()
     }
 }
 
@@ -90,7 +106,7 @@ pub fn summarize_pieces(
     zones: bool,
 ) -> Result<WrapSummary, RootError> {
     let mut roots = RootStats::default();
-    let mut states: Vec<(f64, f64, NodeState)> = Vec::new();
+    let mut states = ZoneRuns::default();
     let mut arcs = ArcTally::default();
     let mut max_utilization: f64 = 0.0;
     let inv_mu = 1.0 / law.mu;
@@ -109,7 +125,7 @@ pub fn summarize_pieces(
             arcs.add(piece.theta0_rad, piece.theta1_rad, u >= ARC_THRESHOLD, positive);
             if zones {
                 let state = state_of(u >= SLIP_UTILIZATION, positive);
-                push_run(&mut states, piece.theta0_rad, piece.theta1_rad, state);
+                states.push(piece.theta0_rad, piece.theta1_rad, state);
             }
             continue;
         }
@@ -120,22 +136,11 @@ pub fn summarize_pieces(
         }
         if zones {
             for &(s, e, above) in split(&piece, law, ends, SLIP_UTILIZATION, &mut roots)?.parts() {
-                push_run(&mut states, s, e, state_of(above, positive));
+                states.push(s, e, state_of(above, positive));
             }
         }
     }
-    Ok(WrapSummary {
-        positive_arc_rad: arcs.positive_rad(),
-        reverse_arc_rad: arcs.reverse_rad(),
-        idle_arc_rad: arcs.idle_rad(),
-        jdp_rad: arcs.jdp_rad(),
-        max_utilization: max_utilization.min(1.0),
-        zones: states
-            .into_iter()
-            .map(|(s, e, state)| Zone { start_deg: s.to_degrees(), end_deg: e.to_degrees(), state })
-            .collect(),
-        roots,
-    })
+    Ok(arcs.summary(max_utilization, states, roots))
 }
 
 /// Arc measures and the JDP, accumulated stretch by stretch in θ order (shared by every
@@ -184,6 +189,20 @@ impl ArcTally {
 
     pub fn jdp_rad(&self) -> Option<f64> {
         self.jdp_rad
+    }
+
+    /// The summary of the tallied wrap: its arcs and JDP, the peak utilization (at most 1), the
+    /// zones and the root finder's tally.
+    pub fn summary(&self, max_utilization: f64, zones: ZoneRuns, roots: RootStats) -> WrapSummary {
+        WrapSummary {
+            positive_arc_rad: self.positive_rad(),
+            reverse_arc_rad: self.reverse_rad(),
+            idle_arc_rad: self.idle_rad(),
+            jdp_rad: self.jdp_rad(),
+            max_utilization: max_utilization.min(1.0),
+            zones: zones.into_zones(),
+            roots,
+        }
     }
 }
 

@@ -216,15 +216,7 @@ fn row_summary(state: &WrapState, law: &ContactLaw) -> WrapSummary {
         }
         arcs.add(a.theta_rad, b.theta_rad, rise.abs() >= threshold * span, rise < 0.0);
     }
-    WrapSummary {
-        positive_arc_rad: arcs.positive_rad(),
-        reverse_arc_rad: arcs.reverse_rad(),
-        idle_arc_rad: arcs.idle_rad(),
-        jdp_rad: arcs.jdp_rad(),
-        max_utilization: (max_slope / law.mu).min(1.0),
-        zones: Vec::new(),
-        roots: Default::default(),
-    }
+    arcs.summary(max_slope / law.mu, derived::ZoneRuns::default(), RootStats::default())
 }
 
 /// Signed utilization at `MAP_COLUMNS` equally spaced angles (one sweep over the knots; only

@@ -60,11 +60,11 @@ pub mod increment;
 pub mod state;
 
 use crate::contact::{ARC_THRESHOLD, ContactLaw, SLIP_UTILIZATION};
-use crate::derived::{ArcTally, WrapSummary};
+use crate::derived::{ArcTally, WrapSummary, ZoneRuns};
 use crate::model::level0::{EndState, euler_limit};
 use crate::model::level2::{HistoryRun, MAP_COLUMNS, Output, Snapshot, Solver, StepStats};
 use crate::roots::{RootError, RootStats, brent};
-use crate::wrap::{Distribution, Sample, Zone};
+use crate::wrap::{Distribution, Sample};
 pub use increment::{Loads, Program, SolveError, Verdict};
 pub use state::{Bending, State};
 
@@ -376,7 +376,7 @@ pub fn summarize(state: &State, mu: f64, zones: bool) -> Result<WrapSummary, Roo
     let mut arcs = ArcTally::default();
     let mut max_u: f64 = 0.0;
     let mut roots = RootStats::default();
-    let mut runs: Vec<(f64, f64, crate::contact::NodeState)> = Vec::new();
+    let mut runs = ZoneRuns::default();
     let law = ContactLaw::new(mu, 0.0);
     let mut last_positive: Option<usize> = None;
     let mut jdp = None;
@@ -398,25 +398,11 @@ pub fn summarize(state: &State, mu: f64, zones: bool) -> Result<WrapSummary, Roo
             jdp = Some(sign_change(state, p, k, &mut roots)?);
         }
         if zones {
-            let st = law.state(if u >= SLIP_UTILIZATION { 1.0 } else { 0.0 }, q);
-            match runs.last_mut() {
-                Some(last) if last.2 == st => last.1 = b,
-                _ => runs.push((a, b, st)),
-            }
+            runs.push(a, b, law.state(if u >= SLIP_UTILIZATION { 1.0 } else { 0.0 }, q));
         }
     }
-    Ok(WrapSummary {
-        positive_arc_rad: arcs.positive_rad(),
-        reverse_arc_rad: arcs.reverse_rad(),
-        idle_arc_rad: arcs.idle_rad(),
-        jdp_rad: jdp,
-        max_utilization: max_u.min(1.0),
-        zones: runs
-            .into_iter()
-            .map(|(s, e, state)| Zone { start_deg: s.to_degrees(), end_deg: e.to_degrees(), state })
-            .collect(),
-        roots,
-    })
+    // The JDP is the sign change found above, not the end of the positive arc.
+    Ok(WrapSummary { jdp_rad: jdp, ..arcs.summary(max_u, runs, roots) })
 }
 
 /// The first zero of the piecewise linear q(θ) through the midpoints of segments `p` (q > 0)
