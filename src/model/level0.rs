@@ -9,7 +9,7 @@
 //! Assumptions: quasi-static rope on a rigid groove, one friction coefficient, all ropes share
 //! the load equally.
 
-use crate::design::{Design, EndLoads, LoadsScene, Rope};
+use crate::design::{Design, EndLoads, HistorySample, LoadsScene, Rope};
 use serde::Serialize;
 
 /// Tensions at the two tangent points (per rope) and the state that produced them.
@@ -24,6 +24,18 @@ pub struct EndState {
 }
 
 impl EndState {
+    /// The state of a history sample (per-rope end tensions and speed) at acceleration
+    /// `accel_m_s2`, with the centrifugal tension `m'v²` of a rope of `mass_per_m_kg`.
+    pub fn of_sample(s: &HistorySample, accel_m_s2: f64, mass_per_m_kg: f64) -> Self {
+        Self {
+            t1_n: s.t1_n,
+            t2_n: s.t2_n,
+            speed_m_s: s.speed_m_s,
+            accel_m_s2,
+            centrifugal_n: mass_per_m_kg * s.speed_m_s * s.speed_m_s,
+        }
+    }
+
     /// The state of a `loads` scene: `T1 = m1(g + a)/n`, `T2 = m2(g − a)/n`, or the given tensions.
     pub fn of(scene: &LoadsScene, g_m_s2: f64, rope: &Rope) -> Self {
         let (t1_n, t2_n) = match scene.ends {

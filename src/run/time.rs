@@ -81,7 +81,6 @@ fn run_samples(
     options: Options,
 ) -> Result<SceneResult, RunError> {
     let Samples { samples, accel_m_s2, direction_before: direction, output } = input;
-    let c_of = |v: f64| design.rope.mass_per_m_kg * v * v;
     let states: Vec<(f64, EndState)> = samples
         .iter()
         .enumerate()
@@ -93,16 +92,7 @@ fn run_samples(
                 (None, None, Some(prev)) => slope(prev, s),
                 _ => 0.0,
             };
-            (
-                s.t_s,
-                EndState {
-                    t1_n: s.t1_n,
-                    t2_n: s.t2_n,
-                    speed_m_s: s.speed_m_s,
-                    accel_m_s2: accel,
-                    centrifugal_n: c_of(s.speed_m_s),
-                },
-            )
+            (s.t_s, EndState::of_sample(s, accel, design.rope.mass_per_m_kg))
         })
         .collect();
     let classical = level0::over_history(design, &states);

@@ -173,13 +173,7 @@ pub fn run_history(
         } else {
             row_summary(&sim.state, &law)
         };
-        let end = EndState {
-            t1_n: s.t1_n,
-            t2_n: s.t2_n,
-            speed_m_s: s.speed_m_s,
-            accel_m_s2: sim.accel_m_s2(t),
-            centrifugal_n: c,
-        };
+        let end = EndState::of_sample(&s, sim.accel_m_s2(t), params.mass_per_m_kg);
         run.push_row(t, &end, &summary, limit, sim.gross_slip);
         run.map.push(utilization_map(&sim.state, &law));
         if snapshot {

@@ -344,16 +344,10 @@ pub fn run_history(
     for &t in &times {
         sim.advance_to(t)?;
         let s = sim.at(t);
-        let c = params.wrap.mass_per_m_kg * s.speed_m_s * s.speed_m_s;
+        let end = EndState::of_sample(&s, sim.accel_m_s2(t), params.wrap.mass_per_m_kg);
+        let c = end.centrifugal_n;
         let snapshot = output.is_snapshot(t, samples);
         let summary = summarize(&sim.state, params.wrap.mu, snapshot)?;
-        let end = EndState {
-            t1_n: s.t1_n,
-            t2_n: s.t2_n,
-            speed_m_s: s.speed_m_s,
-            accel_m_s2: sim.accel_m_s2(t),
-            centrifugal_n: c,
-        };
         run.push_row(t, &end, &summary, limit, sim.gross_slip);
         run.map.push(utilization_map(&sim.state, params.wrap.mu));
         if snapshot {
