@@ -38,7 +38,8 @@ pub struct PlotError {
     pub message: String,
 }
 
-type Area<'b> = DrawingArea<BitMapBackend<'b>, Shift>;
+/// The drawing area of a PNG plot.
+pub(super) type Area<'b> = DrawingArea<BitMapBackend<'b>, Shift>;
 type Chart<'a, 'b> = ChartContext<'a, BitMapBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
 
 /// A legend entry: a line (colour, width, dashed) or a filled box, and its label.
@@ -55,6 +56,58 @@ pub(super) fn font_ready() -> bool {
 
 pub(super) fn font(size: u32) -> FontDesc<'static> {
     (FAMILY, size).into_font()
+}
+
+fn fail_at(path: &Path) -> impl Fn(String) -> PlotError + '_ {
+    move |message| PlotError { path: path.display().to_string(), message }
+}
+
+/// Draws a `size` PNG at `path` with `draw` under a centred caption.
+pub(super) fn render(
+    path: &Path,
+    size: (u32, u32),
+    title: &str,
+    draw: impl FnOnce(&Area) -> Result<(), String>,
+) -> Result<(), PlotError> {
+    if !font_ready() {
+        return Err(fail_at(path)("the embedded font cannot be loaded".into()));
+    }
+    let root = BitMapBackend::new(path, size).into_drawing_area();
+    let drawn = (|| {
+        root.fill(&WHITE).map_err(e)?;
+        let (caption, body) = root.split_vertically(56);
+        let style = font(24).color(&BLACK).pos(Pos::new(HPos::Center, VPos::Center));
+        caption.draw_text(title, &style, (size.0 as i32 / 2, 28)).map_err(e)?;
+        draw(&body)
+    })();
+    drawn.map_err(fail_at(path))?;
+    root.present().map_err(|x| fail_at(path)(x.to_string()))
+}
+
+/// A drawing error as the message of a [`PlotError`].
+pub(super) fn e<E: std::fmt::Display>(err: E) -> String {
+    err.to_string()
+}
+
+/// The legend of a chart at `position`, in the embedded font of `font_px` pixels, on a
+/// translucent white box with a grey border (the style of every wrapcalc plot).
+pub(super) fn draw_legend<'a, DB, CT>(
+    chart: &mut ChartContext<'a, DB, CT>,
+    position: SeriesLabelPosition,
+    font_px: u32,
+) -> Result<(), String>
+where
+    DB: DrawingBackend + 'a,
+    CT: CoordTranslate,
+{
+    chart
+        .configure_series_labels()
+        .position(position)
+        .background_style(WHITE.mix(0.85))
+        .border_style(RGBColor(180, 180, 180))
+        .label_font(font(font_px))
+        .draw()
+        .map_err(e)
 }
 
 /// Draws T(θ) and q(θ) with ±μn bounds, stick/slip shading and the JDP to a PNG file.

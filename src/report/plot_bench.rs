@@ -1,8 +1,7 @@
 //! `bench.png`: error against run time, log–log, one curve per level and solver (colour) and
 //! case (marker), the end points of each curve labelled with their node count or time step.
 
-use super::plot::{PlotError, font};
-use super::plot_history::render;
+use super::plot::{PlotError, draw_legend, font, render};
 use crate::bench::BenchRow;
 use crate::model::level2::Solver;
 use plotters::prelude::*;
@@ -133,14 +132,7 @@ fn draw(area: &DrawingArea<BitMapBackend, plotters::coord::Shift>, rows: &[Bench
                 .map_err(e)?;
         }
     }
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::MiddleRight)
-        .label_font(font(15))
-        .background_style(WHITE.mix(0.85))
-        .border_style(RGBColor(180, 180, 180))
-        .draw()
-        .map_err(e)
+    draw_legend(&mut chart, SeriesLabelPosition::MiddleRight, 15)
 }
 
 /// A filled marker of one of five shapes (circle, triangle, square, diamond, cross), in pixels

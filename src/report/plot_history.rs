@@ -2,15 +2,12 @@
 //! safety factor against its minimum over time) and `wrap_map.png` (θ–t map of friction
 //! utilization, positive and reverse friction in two colours, stick in grey, the JDP over time).
 
-use super::plot::{PlotError, font, font_ready, padded_range, tick_format};
+use super::plot::{Area, PlotError, draw_legend, e, font, padded_range, render, tick_format};
 use crate::model::level2::HistoryRow;
-use plotters::coord::Shift;
 use plotters::element::DashedPathElement;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 use std::path::Path;
-
-type Area<'b> = DrawingArea<BitMapBackend<'b>, Shift>;
 
 const T1: RGBColor = RGBColor(20, 70, 160);
 const T2: RGBColor = RGBColor(200, 90, 20);
@@ -24,36 +21,6 @@ const REV: RGBColor = RGBColor(30, 80, 190);
 const SLIP_BG: RGBColor = RGBColor(255, 205, 205);
 /// Most time columns drawn in the wrap map (one per pixel is all a reader can see).
 const MAP_MAX_COLUMNS: usize = 900;
-
-fn fail(path: &Path) -> impl Fn(String) -> PlotError + '_ {
-    move |message| PlotError { path: path.display().to_string(), message }
-}
-
-fn e<E: std::fmt::Display>(err: E) -> String {
-    err.to_string()
-}
-
-/// Draws a `size` PNG at `path` with `draw` under a centred caption.
-pub(super) fn render(
-    path: &Path,
-    size: (u32, u32),
-    title: &str,
-    draw: impl FnOnce(&Area) -> Result<(), String>,
-) -> Result<(), PlotError> {
-    if !font_ready() {
-        return Err(fail(path)("the embedded font cannot be loaded".into()));
-    }
-    let root = BitMapBackend::new(path, size).into_drawing_area();
-    let drawn = (|| {
-        root.fill(&WHITE).map_err(e)?;
-        let (caption, body) = root.split_vertically(56);
-        let style = font(24).color(&BLACK).pos(Pos::new(HPos::Center, VPos::Center));
-        caption.draw_text(title, &style, (size.0 as i32 / 2, 28)).map_err(e)?;
-        draw(&body)
-    })();
-    drawn.map_err(fail(path))?;
-    root.present().map_err(|x| fail(path)(x.to_string()))
-}
 
 /// history.png: end tensions, speed and acceleration, JDP and arcs, safety factor over time.
 /// `anchors_n`: tension per rope at the conveyance anchors per row (duty cycles; else empty),
@@ -203,14 +170,7 @@ fn draw_history(body: &Area, rows: &[HistoryRow], anchors_n: &[[f64; 2]], sf_min
                 .label("gross slip")
                 .legend(|(px, py)| Rectangle::new([(px, py - 8), (px + 24, py + 8)], SLIP_BG.filled()));
         }
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::UpperRight)
-            .background_style(WHITE.mix(0.85))
-            .border_style(RGBColor(180, 180, 180))
-            .label_font(font(15))
-            .draw()
-            .map_err(e)?;
+        draw_legend(&mut chart, SeriesLabelPosition::UpperRight, 15)?;
     }
     Ok(())
 }

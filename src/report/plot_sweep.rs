@@ -6,15 +6,12 @@
 //!
 //! The safety factor plotted is the lowest one of a time scene, else the reported state's.
 
-use super::plot::{PlotError, font, font_ready, tick_format};
+use super::plot::{Area, PlotError, draw_legend, e, font, render, tick_format};
 use crate::sweep::csv::SweepRow;
-use plotters::coord::Shift;
 use plotters::element::DashedPathElement;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 use std::path::Path;
-
-type Area<'b> = DrawingArea<BitMapBackend<'b>, Shift>;
 
 const PALETTE: [RGBColor; 10] = [
     RGBColor(31, 119, 180),
@@ -35,10 +32,6 @@ const BELOW_MIN: RGBColor = RGBColor(255, 222, 140);
 const OK_LO: (u8, u8, u8) = (205, 235, 200);
 const OK_HI: (u8, u8, u8) = (30, 90, 150);
 
-fn e<E: std::fmt::Display>(err: E) -> String {
-    err.to_string()
-}
-
 /// The axis label of a key: its path and the unit its name ends in.
 pub fn key_label(key: &str) -> String {
     let units =
@@ -57,9 +50,6 @@ fn factor(row: &SweepRow) -> (Option<f64>, Option<f64>) {
 /// Draws sweep.png for the rows of a sweep over `keys` (one or two).
 pub fn plot_sweep(path: &Path, keys: &[String], rows: &[SweepRow]) -> Result<(), PlotError> {
     let fail = |message: String| PlotError { path: path.display().to_string(), message };
-    if !font_ready() {
-        return Err(fail("the embedded font cannot be loaded".into()));
-    }
     let scenes = scene_order(rows);
     let title = match keys {
         [k] => format!("sweep of {k}: safety factor, arcs and JDP"),
@@ -70,20 +60,11 @@ pub fn plot_sweep(path: &Path, keys: &[String], rows: &[SweepRow]) -> Result<(),
         _ => return Err(fail(format!("a sweep plot needs one or two keys, got {}", keys.len()))),
     };
     let size = if keys.len() == 1 { (1200, 1300) } else { (1200, 1000) };
-    let root = BitMapBackend::new(path, size).into_drawing_area();
-    let drawn = (|| {
-        root.fill(&WHITE).map_err(e)?;
-        let (caption, body) = root.split_vertically(56);
-        let style = font(24).color(&BLACK).pos(Pos::new(HPos::Center, VPos::Center));
-        caption.draw_text(&title, &style, (size.0 as i32 / 2, 28)).map_err(e)?;
-        match keys {
-            [k] => draw_lines(&body, k, rows, &scenes),
-            [k1, k2] => draw_map(&body, (k1, k2), rows, scenes.first().map_or("", String::as_str)),
-            _ => Ok(()),
-        }
-    })();
-    drawn.map_err(fail)?;
-    root.present().map_err(|x| fail(x.to_string()))
+    render(path, size, &title, |body| match keys {
+        [k] => draw_lines(body, k, rows, &scenes),
+        [k1, k2] => draw_map(body, (k1, k2), rows, scenes.first().map_or("", String::as_str)),
+        _ => Ok(()),
+    })
 }
 
 /// Scene names in the order they first appear.
@@ -226,14 +207,7 @@ fn draw_lines(body: &Area, key: &str, rows: &[SweepRow], scenes: &[String]) -> R
                 .legend(move |(px, py)| Rectangle::new([(px, py - 2), (px + 24, py + 2)], color.filled()));
         }
         if !lines.is_empty() || i == 0 {
-            chart
-                .configure_series_labels()
-                .position(SeriesLabelPosition::UpperRight)
-                .background_style(WHITE.mix(0.85))
-                .border_style(RGBColor(180, 180, 180))
-                .label_font(font(14))
-                .draw()
-                .map_err(e)?;
+            draw_legend(&mut chart, SeriesLabelPosition::UpperRight, 14)?;
         }
     }
     Ok(())
