@@ -135,11 +135,7 @@ impl<'a> Simulation<'a> {
 
     /// Speed slope (m/s²) on the segment starting at or before `t`.
     pub fn accel_m_s2(&self, t: f64) -> f64 {
-        let k = segment(self.samples, t);
-        match (self.samples.get(k), self.samples.get(k + 1)) {
-            (Some(a), Some(b)) if b.t_s > a.t_s => (b.speed_m_s - a.speed_m_s) / (b.t_s - a.t_s),
-            _ => 0.0,
-        }
+        speed_slope(self.samples, t)
     }
 
     fn ends(&self, s: &HistorySample) -> Result<Ends, SimError> {
@@ -245,6 +241,15 @@ fn segment(samples: &[HistorySample], t: f64) -> usize {
     match samples.partition_point(|s| s.t_s <= t) {
         0 => 0,
         p => (p - 1).min(samples.len().saturating_sub(1)),
+    }
+}
+
+/// Speed slope (m/s²) on the sample segment starting at or before `t`; 0 after the last sample.
+pub fn speed_slope(samples: &[HistorySample], t: f64) -> f64 {
+    let k = segment(samples, t);
+    match (samples.get(k), samples.get(k + 1)) {
+        (Some(a), Some(b)) if b.t_s > a.t_s => (b.speed_m_s - a.speed_m_s) / (b.t_s - a.t_s),
+        _ => 0.0,
     }
 }
 

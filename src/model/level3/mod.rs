@@ -69,7 +69,7 @@ pub use increment::{Loads, Program, SolveError, Verdict};
 pub use state::{Bending, State};
 
 pub use crate::model::level2::HistorySample;
-use crate::model::level2::simulate::interpolate;
+use crate::model::level2::simulate::{interpolate, speed_slope};
 
 /// Relative change of the contact forces below which the fixed point on N has converged.
 pub const NORMAL_TOLERANCE: f64 = 1e-9;
@@ -166,11 +166,7 @@ impl<'a> Simulation<'a> {
 
     /// Speed slope on the sample segment holding `t` (m/s²).
     pub fn accel_m_s2(&self, t: f64) -> f64 {
-        let k = self.samples.partition_point(|s| s.t_s <= t).saturating_sub(1);
-        match (self.samples.get(k), self.samples.get(k + 1)) {
-            (Some(a), Some(b)) if b.t_s > a.t_s => (b.speed_m_s - a.speed_m_s) / (b.t_s - a.t_s),
-            _ => 0.0,
-        }
+        speed_slope(self.samples, t)
     }
 
     /// Applies the first sample's ends without motion.
