@@ -13,23 +13,10 @@ fn alpha() -> f64 {
     187.42_f64.to_radians()
 }
 
-/// 10 000 samples 10 ms apart, rolling at 1 m/s, end tensions a bounded random walk.
+/// 10 000 samples 10 ms apart, rolling at 1 m/s, end tensions a bounded random walk (the
+/// bench report's `rolling-walk` history).
 fn history() -> Vec<HistorySample> {
-    let mut seed: u64 = 0x9E37_79B9_7F4A_7C15;
-    let mut rnd = move || {
-        seed ^= seed << 13;
-        seed ^= seed >> 7;
-        seed ^= seed << 17;
-        (seed >> 11) as f64 / (1u64 << 53) as f64
-    };
-    let (mut t1, mut t2) = (2.0e5, 2.0e5);
-    (0..10_000)
-        .map(|i| {
-            t1 = (t1 * (1.0 + 0.01 * (rnd() - 0.5))).clamp(1.6e5, 2.6e5);
-            t2 = (t2 * (1.0 + 0.01 * (rnd() - 0.5))).clamp(1.6e5, 2.6e5);
-            HistorySample { t_s: i as f64 * 0.01, t1_n: t1, t2_n: t2, speed_m_s: 1.0 }
-        })
-        .collect()
+    wrapcalc::bench::cases::rolling_walk(10_000)
 }
 
 fn params(solver: Solver) -> Params {

@@ -298,24 +298,10 @@ fn hundred_thousand_nodes() {
     assert_sound(&result, 0.25, (2.1e5, 2.05e5));
 }
 
-/// A random walk of end tensions rolling at 1 m/s and reversing every 1000 samples.
+/// A random walk of end tensions (±1 % per sample) rolling at 1 m/s and reversing every 1000
+/// samples.
 fn walk(samples: usize) -> Vec<HistorySample> {
-    let mut seed: u64 = 0x2545_F491_4F6C_DD1D;
-    let mut rnd = move || {
-        seed ^= seed << 13;
-        seed ^= seed >> 7;
-        seed ^= seed << 17;
-        (seed >> 11) as f64 / (1u64 << 53) as f64
-    };
-    let (mut t1, mut t2) = (2.0e5, 2.0e5);
-    (0..samples)
-        .map(|i| {
-            t1 = (t1 * (1.0 + 0.02 * (rnd() - 0.5))).clamp(1.6e5, 2.6e5);
-            t2 = (t2 * (1.0 + 0.02 * (rnd() - 0.5))).clamp(1.6e5, 2.6e5);
-            let v = if (i / 1000) % 2 == 0 { 1.0 } else { -1.0 };
-            HistorySample { t_s: i as f64 * 0.01, t1_n: t1, t2_n: t2, speed_m_s: v }
-        })
-        .collect()
+    wrapcalc::bench::cases::random_walk(samples, 0x2545_F491_4F6C_DD1D, 0.02, Some(1000))
 }
 
 /// Runs a walk and checks the final state: admissible, ends right, every row finite, and the

@@ -340,7 +340,20 @@ pub fn arc_rms_deg(rows: &[HistoryRow], reference: &[HistoryRow]) -> Option<f64>
 /// `samples` history samples 10 ms apart, rolling at 1 m/s, both end tensions a bounded random
 /// walk (±0.5 % per sample within 160–260 kN) from a fixed seed.
 pub fn rolling_walk(samples: usize) -> Vec<level2::HistorySample> {
-    let mut seed: u64 = 0x9E37_79B9_7F4A_7C15;
+    random_walk(samples, 0x9E37_79B9_7F4A_7C15, 0.01, None)
+}
+
+/// `samples` history samples 10 ms apart: both end tensions a random walk from 200 kN, each
+/// sample multiplying them by 1 + `rel_step`·(u − ½) with u uniform in [0, 1) (xorshift64 from
+/// `seed`), kept within 160–260 kN; the rope runs at 1 m/s, reversing every `reverse_every`
+/// samples when given.
+pub fn random_walk(
+    samples: usize,
+    seed: u64,
+    rel_step: f64,
+    reverse_every: Option<usize>,
+) -> Vec<level2::HistorySample> {
+    let mut seed = seed;
     let mut rnd = move || {
         seed ^= seed << 13;
         seed ^= seed >> 7;
@@ -350,9 +363,10 @@ pub fn rolling_walk(samples: usize) -> Vec<level2::HistorySample> {
     let (mut t1, mut t2) = (2.0e5, 2.0e5);
     (0..samples)
         .map(|i| {
-            t1 = (t1 * (1.0 + 0.01 * (rnd() - 0.5))).clamp(1.6e5, 2.6e5);
-            t2 = (t2 * (1.0 + 0.01 * (rnd() - 0.5))).clamp(1.6e5, 2.6e5);
-            sample(i as f64 * 0.01, t1, t2, 1.0)
+            t1 = (t1 * (1.0 + rel_step * (rnd() - 0.5))).clamp(1.6e5, 2.6e5);
+            t2 = (t2 * (1.0 + rel_step * (rnd() - 0.5))).clamp(1.6e5, 2.6e5);
+            let reversed = reverse_every.is_some_and(|n| (i / n) % 2 == 1);
+            sample(i as f64 * 0.01, t1, t2, if reversed { -1.0 } else { 1.0 })
         })
         .collect()
 }
