@@ -165,6 +165,22 @@ enum LevelArg {
     Level(u8),
 }
 
+impl LevelArg {
+    /// The level `--level` forces (`None`: the planner chooses).
+    fn forced(self) -> Option<u8> {
+        match self {
+            LevelArg::Auto => None,
+            LevelArg::Level(l) => Some(l),
+        }
+    }
+}
+
+/// Whether output on a stream may be styled (colour, progress bars): only on a terminal, and
+/// not when `NO_COLOR` is set to a non-empty value.
+fn styled(stream_is_terminal: bool) -> bool {
+    stream_is_terminal && std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty())
+}
+
 fn parse_level(s: &str) -> Result<LevelArg, String> {
     match s {
         "auto" => Ok(LevelArg::Auto),
@@ -192,26 +208,7 @@ fn main() -> ExitCode {
 fn execute(cli: Cli) -> anyhow::Result<bool> {
     match cli.command {
         Command::Run(args) => run_command(args),
-        Command::Bench(args) => {
-            let probe_exe = std::env::current_exe().ok();
-            let options = wrapcalc::bench::BenchOptions { long: args.long, sheet: args.sheet, probe_exe };
-            if let Some(spec) = &args.probe {
-                println!("{}", wrapcalc::bench::probe(&options, spec)?.map_or_else(|| "-".into(), |kb| kb.to_string()));
-                return Ok(true);
-            }
-            let rows = wrapcalc::bench::run(&options, &mut |r| {
-                if !args.quiet {
-                    eprintln!("{}", wrapcalc::bench::output::progress_line(r));
-                }
-            })?;
-            let scaling = wrapcalc::bench::scaling(&rows);
-            wrapcalc::bench::output::write(&args.out, &rows, &scaling)?;
-            if !args.quiet {
-                print!("{}", wrapcalc::bench::output::scaling_table(&scaling));
-                println!("bench report written to {}", args.out.display());
-            }
-            Ok(true)
-        }
+        Command::Bench(args) => bench_command(args).map(|()| true),
         Command::Check(args) => {
             let design = sheet::load(&args.sheet)?;
             let scenes: Vec<&Scene> = design.scenes.iter().collect();
@@ -224,13 +221,33 @@ fn execute(cli: Cli) -> anyhow::Result<bool> {
     }
 }
 
+/// `wrapcalc bench`: the run-time-against-error report (or, with the hidden `--probe`, one
+/// point's peak memory for the report itself).
+fn bench_command(args: BenchArgs) -> anyhow::Result<()> {
+    let probe_exe = std::env::current_exe().ok();
+    let options = wrapcalc::bench::BenchOptions { long: args.long, sheet: args.sheet, probe_exe };
+    if let Some(spec) = &args.probe {
+        println!("{}", wrapcalc::bench::probe(&options, spec)?.map_or_else(|| "-".into(), |kb| kb.to_string()));
+        return Ok(());
+    }
+    let rows = wrapcalc::bench::run(&options, &mut |r| {
+        if !args.quiet {
+            eprintln!("{}", wrapcalc::bench::output::progress_line(r));
+        }
+    })?;
+    let scaling = wrapcalc::bench::scaling(&rows);
+    wrapcalc::bench::output::write(&args.out, &rows, &scaling)?;
+    if !args.quiet {
+        print!("{}", wrapcalc::bench::output::scaling_table(&scaling));
+        println!("bench report written to {}", args.out.display());
+    }
+    Ok(())
+}
+
 /// A sweep exits 0 once it ran, whatever the checks at its points say (they are in sweep.csv).
 fn sweep_command(args: SweepArgs) -> anyhow::Result<()> {
     let shard = args.shard.as_deref().map(sweep::grid::Shard::parse).transpose()?;
-    let forced_level = match args.level {
-        LevelArg::Auto => None,
-        LevelArg::Level(l) => Some(l),
-    };
+    let forced_level = args.level.forced();
     let spec = sweep::Spec {
         vary: args.vary.clone(),
         scenes: args.scenes.clone(),
@@ -281,9 +298,7 @@ fn merge_command(args: MergeArgs) -> anyhow::Result<()> {
 /// A progress bar on stderr when it is a terminal and neither --quiet nor NO_COLOR asks for
 /// plain output; hidden otherwise.
 fn progress_bar(len: u64, quiet: bool) -> indicatif::ProgressBar {
-    let plain =
-        quiet || !std::io::stderr().is_terminal() || std::env::var_os("NO_COLOR").is_some_and(|v| !v.is_empty());
-    if plain {
+    if quiet || !styled(std::io::stderr().is_terminal()) {
         return indicatif::ProgressBar::hidden();
     }
     let bar = indicatif::ProgressBar::new(len);
@@ -296,10 +311,7 @@ fn progress_bar(len: u64, quiet: bool) -> indicatif::ProgressBar {
 fn run_command(args: RunArgs) -> anyhow::Result<bool> {
     let design = sheet::load(&args.sheet)?;
     let scenes = select_scenes(&design, &args.scenes)?;
-    let forced_level = match args.level {
-        LevelArg::Auto => None,
-        LevelArg::Level(l) => Some(l),
-    };
+    let forced_level = args.level.forced();
     let options = Options { request: Request::Full { forced_level }, nodes: args.nodes, solver: args.solver.into() };
     let result = run::run(&design, &scenes, options)?;
     let out_dir = args.out.clone().unwrap_or_else(|| default_out_dir(&args.sheet));
@@ -333,8 +345,7 @@ fn print_result(design: &Design, result: &RunResult, format: Format, quiet: bool
     match format {
         Format::Json => println!("{}", Summary::of(design, result).to_json()),
         Format::Table if !quiet => {
-            let stdout = std::io::stdout();
-            let color = stdout.is_terminal() && std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty());
+            let color = styled(std::io::stdout().is_terminal());
             print!("{}", table::render(&design.title, &design.sheet, result, table::Style { color }));
         }
         Format::Table => {}
