@@ -280,31 +280,29 @@ fn run_table(
     // Finest runs of the duty cycle, by (N, Δt): each is run once, as a "reference" row.
     let mut references: Vec<((usize, f64), cases::DutyRun)> = Vec::new();
     for entry in TABLE {
-        for point in points(&entry.sweep, options.long) {
-            let error_of = |m: &measure::Measured<Outcome>, refs: &[((usize, f64), cases::DutyRun)]| {
-                let reference = duty_reference(entry).and_then(|key| refs.iter().find(|r| r.0 == key));
-                match (reference, &m.value.duty) {
-                    (Some(r), Some(run)) => cases::duty_error(run, &r.1),
-                    _ => (m.value.error, None),
-                }
+        let reference_key = duty_reference(entry);
+        if let Some(key) = reference_key.filter(|k| !references.iter().any(|r| r.0 == *k)) {
+            let spec = Spec {
+                case: Case::DutyMid,
+                level: entry.level,
+                solver: entry.solver,
+                point: Point { nodes: Some(key.0), time_step_s: Some(key.1), samples: None },
             };
-            if let Some(key) = duty_reference(entry).filter(|k| !references.iter().any(|r| r.0 == *k)) {
-                let spec = Spec {
-                    case: Case::DutyMid,
-                    level: entry.level,
-                    solver: entry.solver,
-                    point: Point { nodes: Some(key.0), time_step_s: Some(key.1), samples: None },
-                };
-                let m = run_point(options, spec)?;
-                let row =
-                    BenchRow { sweep: "reference", ..row_of(options, spec, entry.sweep.name(), &m, (None, None)) };
-                progress(&row);
-                rows.push(row);
-                references.push((key, m.value.duty.unwrap_or_default()));
-            }
+            let m = run_point(options, spec)?;
+            let row = BenchRow { sweep: "reference", ..row_of(options, spec, entry.sweep.name(), &m, (None, None)) };
+            progress(&row);
+            rows.push(row);
+            references.push((key, m.value.duty.unwrap_or_default()));
+        }
+        let reference = reference_key.and_then(|key| references.iter().find(|r| r.0 == key)).map(|r| &r.1);
+        for point in points(&entry.sweep, options.long) {
             let spec = Spec { case: entry.case, level: entry.level, solver: entry.solver, point };
             let m = run_point(options, spec)?;
-            let row = row_of(options, spec, entry.sweep.name(), &m, error_of(&m, &references));
+            let error = match (reference, &m.value.duty) {
+                (Some(r), Some(run)) => cases::duty_error(run, r),
+                _ => (m.value.error, None),
+            };
+            let row = row_of(options, spec, entry.sweep.name(), &m, error);
             progress(&row);
             rows.push(row);
         }
