@@ -82,6 +82,9 @@ impl EndState {
     }
 }
 
+/// Name of the dynamic safety-factor check (present where the scene has a state in motion).
+pub const DYNAMIC_CHECK: &str = "dynamic safety factor";
+
 /// Euler/capstan limit `e^{μα}`.
 pub fn euler_limit(mu: f64, wrap_angle_rad: f64) -> f64 {
     (mu * wrap_angle_rad).exp()
@@ -189,7 +192,7 @@ pub fn classical(design: &Design, state: EndState, static_state: EndState) -> Cl
     ));
     if state.accel_m_s2 != 0.0 {
         checks.push(safety_check(
-            "dynamic safety factor",
+            DYNAMIC_CHECK,
             "σ_d = (T_lo − m'v²)(e^{μα} − 1) / (T_hi − T_lo), this state",
             &state,
             limit,
@@ -292,7 +295,7 @@ pub fn over_history(design: &Design, states: &[(f64, EndState)]) -> Classical {
         c.dynamic_safety_factor = safety_factor(&s, limit);
         c.checks.push(with_time(
             safety_check(
-                "dynamic safety factor",
+                DYNAMIC_CHECK,
                 "σ_d = (T_lo − m'v²)(e^{μα} − 1) / (T_hi − T_lo), worst instant in motion",
                 &s,
                 limit,

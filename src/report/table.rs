@@ -2,7 +2,7 @@
 //! inputs and intermediate values so that it can be redone by hand.
 
 use crate::margins::{Margin, Margins};
-use crate::model::level0::{Check, EndState, Relation};
+use crate::model::level0::{Check, DYNAMIC_CHECK, EndState, Relation};
 use crate::run::RunResult;
 use std::fmt::Write;
 
@@ -82,7 +82,7 @@ pub fn render(title: &str, sheet: &str, run: &RunResult, style: Style) -> String
             factor(c.static_safety_factor),
             // Where there is a dynamic check: a loads scene at its own acceleration, a time scene
             // at its worst instant in motion.
-            if c.checks.iter().any(|k| k.name == "dynamic safety factor") {
+            if c.checks.iter().any(|k| k.name == DYNAMIC_CHECK) {
                 factor(c.dynamic_safety_factor)
             } else {
                 "—".into()
