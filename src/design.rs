@@ -21,6 +21,26 @@ pub struct Design {
     pub lining: Option<Lining>,
 }
 
+/// A `--scene` name the sheet does not have.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("--scene {name:?}: no such scene; the sheet has: {known}")]
+pub struct UnknownScene {
+    pub name: String,
+    /// The sheet's scene names, comma-separated.
+    pub known: String,
+}
+
+impl Design {
+    /// The scenes named in `names` (all when empty), in sheet order.
+    pub fn select_scenes(&self, names: &[String]) -> Result<Vec<&Scene>, UnknownScene> {
+        if let Some(missing) = names.iter().find(|n| !self.scenes.iter().any(|s| &s.name == *n)) {
+            let known: Vec<&str> = self.scenes.iter().map(|s| s.name.as_str()).collect();
+            return Err(UnknownScene { name: missing.clone(), known: known.join(", ") });
+        }
+        Ok(self.scenes.iter().filter(|s| names.is_empty() || names.contains(&s.name)).collect())
+    }
+}
+
 /// The pulley's friction lining as an elastic shear foundation (level 3).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Lining {

@@ -310,7 +310,7 @@ fn progress_bar(len: u64, quiet: bool) -> indicatif::ProgressBar {
 
 fn run_command(args: RunArgs) -> anyhow::Result<bool> {
     let design = sheet::load(&args.sheet)?;
-    let scenes = select_scenes(&design, &args.scenes)?;
+    let scenes = design.select_scenes(&args.scenes).map_err(|e| anyhow::anyhow!("{}: {e}", design.sheet))?;
     let forced_level = args.level.forced();
     let options = Options { request: Request::Full { forced_level }, nodes: args.nodes, solver: args.solver.into() };
     let result = run::run(&design, &scenes, options)?;
@@ -322,18 +322,6 @@ fn run_command(args: RunArgs) -> anyhow::Result<bool> {
         println!("report written to {}", out_dir.display());
     }
     Ok(result.all_checks_pass())
-}
-
-/// The scenes named by `--scene` (all when none), in sheet order.
-fn select_scenes<'a>(design: &'a Design, names: &[String]) -> anyhow::Result<Vec<&'a Scene>> {
-    if names.is_empty() {
-        return Ok(design.scenes.iter().collect());
-    }
-    if let Some(missing) = names.iter().find(|n| !design.scenes.iter().any(|s| &s.name == *n)) {
-        let known: Vec<&str> = design.scenes.iter().map(|s| s.name.as_str()).collect();
-        anyhow::bail!("{}: --scene {missing:?}: no such scene; the sheet has: {}", design.sheet, known.join(", "));
-    }
-    Ok(design.scenes.iter().filter(|s| names.contains(&s.name)).collect())
 }
 
 fn default_out_dir(sheet: &Path) -> PathBuf {

@@ -29,13 +29,9 @@ impl Template {
     /// duty-cycle scene runs it or a `hoist.*` key is varied. Checks the keys of `varies`.
     pub fn new(file: &str, text: &str, scenes: &[String], varies: &[Vary]) -> Result<Self, SweepError> {
         let design = sheet::parse(file, text)?;
-        if let Some(missing) = scenes.iter().find(|n| !design.scenes.iter().any(|s| &s.name == *n)) {
-            let known: Vec<&str> = design.scenes.iter().map(|s| s.name.as_str()).collect();
-            return Err(SweepError::Input {
-                sheet: file.to_string(),
-                message: format!("--scene {missing:?}: no such scene; the sheet has: {}", known.join(", ")),
-            });
-        }
+        let selected = design
+            .select_scenes(scenes)
+            .map_err(|e| SweepError::Input { sheet: file.to_string(), message: e.to_string() })?;
         // The text parsed as a sheet, so it parses as a TOML table.
         let mut doc: Table = text.parse().map_err(|e: toml::de::Error| SweepError::Input {
             sheet: file.to_string(),
@@ -55,7 +51,6 @@ impl Template {
                 keep
             });
         }
-        let selected: Vec<_> = design.scenes.iter().filter(|s| is_selected(&s.name)).collect();
         let mut template = Self {
             file: file.to_string(),
             doc,
