@@ -40,7 +40,7 @@ pub struct PlotError {
 
 /// The drawing area of a PNG plot.
 pub(super) type Area<'b> = DrawingArea<BitMapBackend<'b>, Shift>;
-type Chart<'a, 'b> = ChartContext<'a, BitMapBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+pub(super) type Chart<'a, 'b> = ChartContext<'a, BitMapBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
 
 /// A legend entry: a line (colour, width, dashed) or a filled box, and its label.
 enum Swatch {
@@ -82,6 +82,46 @@ pub(super) fn render(
     })();
     drawn.map_err(fail_at(path))?;
     root.present().map_err(|x| fail_at(path)(x.to_string()))
+}
+
+/// One panel of a figure of stacked panels over a common x (history, sweep): `x` × `y`, room
+/// for the x labels on the `bottom` panel only.
+pub(super) fn stacked_panel<'a, 'b>(
+    area: &'a Area<'b>,
+    x: (f64, f64),
+    y: (f64, f64),
+    bottom: bool,
+) -> Result<Chart<'a, 'b>, String> {
+    ChartBuilder::on(area)
+        .margin(14)
+        .x_label_area_size(if bottom { 52 } else { 30 })
+        .y_label_area_size(96)
+        .build_cartesian_2d(x.0..x.1, y.0..y.1)
+        .map_err(e)
+}
+
+/// The axes and grid of a stacked panel over `x` × `y`, with the x description only where
+/// `x_desc` is given (the bottom panel).
+pub(super) fn stacked_mesh(
+    chart: &mut Chart,
+    x: (f64, f64),
+    y: (f64, f64),
+    x_desc: Option<&str>,
+    y_desc: &str,
+) -> Result<(), String> {
+    let (xf, yf) = (tick_format(x.0, x.1), tick_format(y.0, y.1));
+    chart
+        .configure_mesh()
+        .x_desc(x_desc.unwrap_or(""))
+        .y_desc(y_desc)
+        .x_label_formatter(&xf)
+        .y_label_formatter(&yf)
+        .label_style(font(15))
+        .axis_desc_style(font(17))
+        .light_line_style(TRANSPARENT)
+        .bold_line_style(RGBColor(215, 215, 215))
+        .draw()
+        .map_err(e)
 }
 
 /// A drawing error as the message of a [`PlotError`].

@@ -2,7 +2,7 @@
 //! safety factor against its minimum over time) and `wrap_map.png` (θ–t map of friction
 //! utilization, positive and reverse friction in two colours, stick in grey, the JDP over time).
 
-use super::plot::{Area, PlotError, draw_legend, e, font, padded_range, render, tick_format};
+use super::plot::{Area, PlotError, draw_legend, e, font, padded_range, render, stacked_mesh, stacked_panel};
 use crate::model::level2::HistoryRow;
 use plotters::element::DashedPathElement;
 use plotters::prelude::*;
@@ -119,28 +119,12 @@ fn draw_history(body: &Area, rows: &[HistoryRow], anchors_n: &[[f64; 2]], sf_min
     ];
     for (i, (area, (y_desc, lines, fixed))) in panels.iter().zip(panels_spec).enumerate() {
         let y = fixed.unwrap_or_else(|| padded_range(lines.iter().flat_map(|l| l.2.iter().map(|p| p.1)), 0.01));
-        let mut chart = ChartBuilder::on(area)
-            .margin(14)
-            .x_label_area_size(if i == 3 { 52 } else { 30 })
-            .y_label_area_size(96)
-            .build_cartesian_2d(x.0..x.1, y.0..y.1)
-            .map_err(e)?;
+        let bottom = i == 3;
+        let mut chart = stacked_panel(area, x, y, bottom)?;
         for &(a, b) in &slips {
             chart.plotting_area().draw(&Rectangle::new([(a, y.0), (b, y.1)], SLIP_BG.filled())).map_err(e)?;
         }
-        let (xf, yf) = (tick_format(x.0, x.1), tick_format(y.0, y.1));
-        chart
-            .configure_mesh()
-            .x_desc(if i == 3 { "time t (s)" } else { "" })
-            .y_desc(y_desc)
-            .x_label_formatter(&xf)
-            .y_label_formatter(&yf)
-            .label_style(font(15))
-            .axis_desc_style(font(17))
-            .light_line_style(TRANSPARENT)
-            .bold_line_style(RGBColor(215, 215, 215))
-            .draw()
-            .map_err(e)?;
+        stacked_mesh(&mut chart, x, y, bottom.then_some("time t (s)"), y_desc)?;
         for (label, color, points, as_points) in lines {
             let drawn = if as_points {
                 chart.draw_series(points.iter().map(|&p| Circle::new(p, 3, color.filled()))).map_err(e)?

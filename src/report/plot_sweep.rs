@@ -6,7 +6,7 @@
 //!
 //! The safety factor plotted is the lowest one of a time scene, else the reported state's.
 
-use super::plot::{Area, PlotError, draw_legend, e, font, render, tick_format};
+use super::plot::{Area, PlotError, draw_legend, e, font, render, stacked_mesh, stacked_panel, tick_format};
 use crate::sweep::csv::SweepRow;
 use plotters::element::DashedPathElement;
 use plotters::prelude::*;
@@ -142,26 +142,9 @@ fn draw_lines(body: &Area, key: &str, rows: &[SweepRow], scenes: &[String]) -> R
     ];
     for (i, (area, (y_desc, lines, y, empty_note))) in panels.iter().zip(specs).enumerate() {
         let last = i == 2;
-        let mut chart = ChartBuilder::on(area)
-            .margin(14)
-            .x_label_area_size(if last { 52 } else { 30 })
-            .y_label_area_size(96)
-            .build_cartesian_2d(x0..x1, y.0..y.1)
-            .map_err(e)?;
-        let (xf, yf) = (tick_format(x0, x1), tick_format(y.0, y.1));
+        let mut chart = stacked_panel(area, (x0, x1), y, last)?;
         let x_desc = key_label(key);
-        chart
-            .configure_mesh()
-            .x_desc(if last { x_desc.as_str() } else { "" })
-            .y_desc(y_desc)
-            .x_label_formatter(&xf)
-            .y_label_formatter(&yf)
-            .label_style(font(15))
-            .axis_desc_style(font(17))
-            .light_line_style(TRANSPARENT)
-            .bold_line_style(RGBColor(215, 215, 215))
-            .draw()
-            .map_err(e)?;
+        stacked_mesh(&mut chart, (x0, x1), y, last.then_some(x_desc.as_str()), y_desc)?;
         if i == 0 {
             chart
                 .draw_series(std::iter::once(PathElement::new(vec![(x0, 1.0), (x1, 1.0)], BLACK.stroke_width(2))))
