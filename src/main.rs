@@ -65,12 +65,8 @@ struct RunArgs {
     /// Run only this scene (repeatable).
     #[arg(long = "scene", value_name = "NAME")]
     scenes: Vec<String>,
-    /// Model level for every scene: auto (the planner chooses) or 0–4.
-    #[arg(long, default_value = "auto", value_parser = parse_level)]
-    level: LevelArg,
-    /// Number of wrap nodes of the output grid / discrete levels.
-    #[arg(long, default_value_t = run::DEFAULT_NODES)]
-    nodes: usize,
+    #[command(flatten)]
+    model: ModelArgs,
     #[arg(long, value_enum, default_value_t = Format::Table)]
     format: Format,
     /// Solver of the discrete level's increments: the exact O(N) clamp, or clarabel's convex program.
@@ -82,6 +78,17 @@ struct RunArgs {
     /// Print nothing but errors (and the JSON with --format json).
     #[arg(long)]
     quiet: bool,
+}
+
+/// The model options `run` and `sweep` share.
+#[derive(clap::Args)]
+struct ModelArgs {
+    /// Model level for every scene: auto (the planner chooses) or 0–4.
+    #[arg(long, default_value = "auto", value_parser = parse_level)]
+    level: LevelArg,
+    /// Number of wrap nodes of the output grid / discrete levels.
+    #[arg(long, default_value_t = run::DEFAULT_NODES)]
+    nodes: usize,
 }
 
 #[derive(clap::Args)]
@@ -102,12 +109,8 @@ struct SweepArgs {
     /// Run only this scene (repeatable); `scene.KEY` is set in these scenes.
     #[arg(long = "scene", value_name = "NAME")]
     scenes: Vec<String>,
-    /// Model level for every scene: auto (the planner chooses) or 0–4.
-    #[arg(long, default_value = "auto", value_parser = parse_level)]
-    level: LevelArg,
-    /// Number of wrap nodes of the output grid / discrete levels.
-    #[arg(long, default_value_t = run::DEFAULT_NODES)]
-    nodes: usize,
+    #[command(flatten)]
+    model: ModelArgs,
     /// Output directory [default: reports/<sheet file stem>-sweep/].
     #[arg(long)]
     out: Option<PathBuf>,
@@ -247,11 +250,11 @@ fn bench_command(args: BenchArgs) -> anyhow::Result<()> {
 /// A sweep exits 0 once it ran, whatever the checks at its points say (they are in sweep.csv).
 fn sweep_command(args: SweepArgs) -> anyhow::Result<()> {
     let shard = args.shard.as_deref().map(sweep::grid::Shard::parse).transpose()?;
-    let forced_level = args.level.forced();
+    let forced_level = args.model.level.forced();
     let spec = sweep::Spec {
         vary: args.vary.clone(),
         scenes: args.scenes.clone(),
-        options: Options { request: Request::Full { forced_level }, nodes: args.nodes, ..Options::default() },
+        options: Options { request: Request::Full { forced_level }, nodes: args.model.nodes, ..Options::default() },
         shard,
     };
     let grid = sweep::grid::Grid::parse(&spec.vary)?;
@@ -311,8 +314,9 @@ fn progress_bar(len: u64, quiet: bool) -> indicatif::ProgressBar {
 fn run_command(args: RunArgs) -> anyhow::Result<bool> {
     let design = sheet::load(&args.sheet)?;
     let scenes = design.select_scenes(&args.scenes).map_err(|e| anyhow::anyhow!("{}: {e}", design.sheet))?;
-    let forced_level = args.level.forced();
-    let options = Options { request: Request::Full { forced_level }, nodes: args.nodes, solver: args.solver.into() };
+    let forced_level = args.model.level.forced();
+    let options =
+        Options { request: Request::Full { forced_level }, nodes: args.model.nodes, solver: args.solver.into() };
     let result = run::run(&design, &scenes, options)?;
     let out_dir = args.out.clone().unwrap_or_else(|| default_out_dir(&args.sheet));
     let summary = Summary::of(&design, &result);
