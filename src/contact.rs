@@ -13,6 +13,13 @@ pub const SLIP_UTILIZATION: f64 = 0.999;
 /// Friction below this fraction of μn counts as zero for the positive/reverse arcs (MODEL §2).
 pub const ARC_THRESHOLD: f64 = 0.001;
 
+/// Gross slip: no admissible tension field joins the contact forces `n1`, `n2` at the two ends
+/// of a wrap of `wrap_angle_rad`, i.e. `n_hi / n_lo > e^{μα}` (MODEL §3). Every level decides
+/// gross slip with this one test, so a state within an ulp of the limit gets one verdict.
+pub fn slips_grossly(n1: f64, n2: f64, mu: f64, wrap_angle_rad: f64) -> bool {
+    n1.max(n2) / n1.min(n2) > (mu * wrap_angle_rad).exp()
+}
+
 /// Contact state of a node.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum NodeState {
@@ -65,11 +72,19 @@ impl ContactLaw {
     }
 
     pub fn utilization(&self, piece: &Piece, theta_rad: f64) -> f64 {
-        if piece.base_n == self.centrifugal_n && piece.amp_n > 0.0 {
+        if let Some((_, rate)) = piece.contact_exponential(self.centrifugal_n) {
             // Exponential of the contact force itself: u = |k|/μ everywhere on the piece.
-            return (piece.rate_per_rad.abs() / self.mu).min(1.0);
+            return (rate.abs() / self.mu).min(1.0);
         }
-        self.utilization_of(piece.tension_n(theta_rad), piece.friction_n_per_rad(theta_rad))
+        let (tension_n, friction_n_per_rad) = piece.tension_friction(theta_rad);
+        self.utilization_of(tension_n, friction_n_per_rad)
+    }
+
+    /// `|q| / (μ n)` of a piece at θ without the clamp to 1 (to find rope beyond the limit).
+    pub fn utilization_unclamped(&self, piece: &Piece, theta_rad: f64) -> f64 {
+        let (tension_n, friction_n_per_rad) = piece.tension_friction(theta_rad);
+        let capacity = self.mu * self.normal_n_per_rad(tension_n);
+        if capacity <= 0.0 { f64::INFINITY } else { friction_n_per_rad.abs() / capacity }
     }
 
     /// Contact state from utilization and the sign of friction.

@@ -1,13 +1,14 @@
 //! Quantities derived from a tension field: positive / reverse / idle arcs, the JDP, contact
 //! zones, peak utilization, and the sampled distribution for reports.
 //!
-//! Everything is computed on the exact pieces. Within one piece,
-//! `u(θ) = |k| / μ · 1 / (1 + d e^{−kθ'} / A)` with `d = T_base − m'v²` is monotone in θ, so a
-//! threshold (slip at u = 0.999, friction counted from u = 0.001) is crossed at most once per
-//! piece; the crossing is found by Brent root finding ([`crate::roots`]), far below one node pitch.
+//! Everything is computed on the exact pieces. Within an exponential piece,
+//! `u(θ) = |k| / μ · 1 / (1 + d e^{−kθ'} / A)` with `d = T_base − m'v²` is monotone in θ; on an
+//! entry ramp `u = |Ṫ| / (μ Φ'(τ) n(τ))` with a quadratic denominator in τ, which is cut at its
+//! extremum. So a threshold (slip at u = 0.999, friction counted from u = 0.001) is crossed at
+//! most once per part; the crossing is found by Brent root finding ([`crate::roots`]).
 
 use crate::contact::{ARC_THRESHOLD, ContactLaw, NodeState, SLIP_UTILIZATION};
-use crate::roots::{RootError, RootStats, brent};
+use crate::roots::{RootError, RootStats, bracketed};
 use crate::wrap::{Distribution, Piece, Sample, TensionField, Zone, output_grid_rad};
 
 /// Sign class of friction on a stretch of wrap.
@@ -47,7 +48,7 @@ fn split(
         return Ok(SmallSplit::One((a, b, above_a)));
     }
     let tol = 1e-12;
-    let x = brent(|t| law.utilization(piece, t) - threshold, a, b, tol, stats)?;
+    let x = bracketed(|t| law.utilization(piece, t) - threshold, a, b, tol, stats)?;
     Ok(SmallSplit::Two([(a, x, above_a), (x, b, above_b)]))
 }
 
@@ -115,12 +116,12 @@ pub fn summarize_pieces(
         (true, true) => NodeState::SlipPositive,
         (true, false) => NodeState::SlipNegative,
     };
-    for piece in pieces {
-        // q = −A k e^{k(θ−θ0)}: its sign is that of −A k on the whole piece.
-        let positive = -piece.amp_n * piece.rate_per_rad > 0.0;
-        if piece.base_n == law.centrifugal_n && piece.amp_n > 0.0 {
+    for piece in pieces.into_iter().flat_map(|p| monotone_parts(p, law.centrifugal_n)) {
+        // Friction keeps its sign over a piece.
+        let positive = piece.friction_positive();
+        if let Some((_, rate)) = piece.contact_exponential(law.centrifugal_n) {
             // An exponential of the contact force itself: u = |k|/μ on the whole piece.
-            let u = (piece.rate_per_rad.abs() * inv_mu).min(1.0);
+            let u = (rate.abs() * inv_mu).min(1.0);
             max_utilization = max_utilization.max(u);
             arcs.add(piece.theta0_rad, piece.theta1_rad, u >= ARC_THRESHOLD, positive);
             if zones {
@@ -141,6 +142,15 @@ pub fn summarize_pieces(
         }
     }
     Ok(arcs.summary(max_utilization, states, roots))
+}
+
+/// A piece cut where its utilization turns, so that each part has a monotone utilization.
+fn monotone_parts(piece: Piece, centrifugal_n: f64) -> impl Iterator<Item = Piece> {
+    let (first, second) = match piece.utilization_turn_rad(centrifugal_n) {
+        Some(t) => (piece.restricted(piece.theta0_rad, t), Some(piece.restricted(t, piece.theta1_rad))),
+        None => (piece, None),
+    };
+    std::iter::once(first).chain(second)
 }
 
 /// Arc measures and the JDP, accumulated stretch by stretch in θ order (shared by every

@@ -90,8 +90,12 @@ pub struct MotionStage {
 pub struct DutyCycleScene {
     /// Payload on the side-1 conveyance (kg).
     pub payload_kg: f64,
-    /// Lift (side 1 up, the profile as given) or lower (the profile mirrored).
+    /// Lift (side 1 up, the profile as given, from the bottom) or lower (the profile mirrored,
+    /// from where the lift ends: side 1 at the top).
     pub direction: Direction,
+    /// A round trip: after the trip the hoist rests this long (s) and runs the trip back the
+    /// other way, so the return starts from the state the first trip left in the wrap.
+    pub return_after_s: Option<f64>,
     /// Emergency braking: at `at_s` the drive decelerates at `decel_m_s2` until the hoist stops.
     pub emergency: Option<EmergencyStop>,
     pub snapshots_s: Vec<f64>,

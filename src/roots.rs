@@ -1,7 +1,11 @@
-//! Root finding with argmin's Brent method, with the solver's verdict kept as data.
+//! Root finding with the solver's verdict kept as data.
 //!
-//! `MaxItersReached` (which argmin returns as `Ok`) and every other reason but
-//! `SolverConverged` are failures; a missing sign change is reported as such.
+//! [`brent`] runs argmin's Brent method: `MaxItersReached` (which argmin returns as `Ok`) and
+//! every other reason but `SolverConverged` are failures; a missing sign change is reported as
+//! such. [`bracketed`] is the same method (Brent–Dekker: inverse quadratic interpolation,
+//! secant and bisection steps on a bracket) without argmin's executor, for the crossings the
+//! wrap model finds on every increment, where the executor's set-up would cost more than the
+//! search; its verdict is a [`Termination`].
 
 use argmin::core::{CostFunction, Error as ArgminError, Executor, State, TerminationReason};
 use argmin::solver::brent::BrentRoot;
@@ -25,6 +29,82 @@ pub enum RootError {
 pub struct RootStats {
     pub calls: u64,
     pub iterations: u64,
+}
+
+/// Why [`bracketed`] stopped.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Termination {
+    /// The bracket shrank below the tolerance (or the function vanished).
+    Converged,
+    /// [`MAX_ITERS`] steps without convergence: a failure.
+    MaxItersReached,
+}
+
+/// A root of `f` on `[lo, hi]`, where `f(lo)` and `f(hi)` differ in sign, to `tol` in x:
+/// Brent–Dekker's method. An end where f is exactly 0 is returned as is.
+pub fn bracketed(f: impl Fn(f64) -> f64, lo: f64, hi: f64, tol: f64, stats: &mut RootStats) -> Result<f64, RootError> {
+    let (mut a, mut b) = (lo, hi);
+    let (mut fa, mut fb) = (f(a), f(b));
+    if fa == 0.0 {
+        return Ok(a);
+    }
+    if fb == 0.0 {
+        return Ok(b);
+    }
+    if !(fa.is_finite() && fb.is_finite()) || fa.signum() == fb.signum() {
+        return Err(RootError::NoBracket { lo, hi });
+    }
+    stats.calls += 1;
+    let (mut c, mut fc) = (a, fa);
+    let (mut d, mut e) = (b - a, b - a);
+    for _ in 0..MAX_ITERS {
+        stats.iterations += 1;
+        if fb.signum() == fc.signum() {
+            (c, fc) = (a, fa);
+            d = b - a;
+            e = d;
+        }
+        if fc.abs() < fb.abs() {
+            (a, fa, b, fb, c, fc) = (b, fb, c, fc, b, fb);
+        }
+        let tol1 = 2.0 * f64::EPSILON * b.abs() + 0.5 * tol;
+        let xm = 0.5 * (c - b);
+        if xm.abs() <= tol1 || fb == 0.0 {
+            return Ok(b);
+        }
+        if e.abs() >= tol1 && fa.abs() > fb.abs() {
+            // Inverse quadratic interpolation (secant when only two points differ).
+            let s = fb / fa;
+            let (mut p, mut q) = if a == c {
+                (2.0 * xm * s, 1.0 - s)
+            } else {
+                let (qa, r) = (fa / fc, fb / fc);
+                (s * (2.0 * xm * qa * (qa - r) - (b - a) * (r - 1.0)), (qa - 1.0) * (r - 1.0) * (s - 1.0))
+            };
+            if p > 0.0 {
+                q = -q;
+            }
+            p = p.abs();
+            if 2.0 * p < (3.0 * xm * q - (tol1 * q).abs()).min((e * q).abs()) {
+                e = d;
+                d = p / q;
+            } else {
+                d = xm;
+                e = d;
+            }
+        } else {
+            d = xm;
+            e = d;
+        }
+        (a, fa) = (b, fb);
+        b += if d.abs() > tol1 { d } else { tol1.copysign(xm) };
+        fb = f(b);
+        if !fb.is_finite() {
+            return Err(RootError::NotConverged { reason: "the function is not finite inside the bracket".into() });
+        }
+    }
+    Err(RootError::NotConverged { reason: format!("{:?}", Termination::MaxItersReached) })
 }
 
 struct Fun<F>(F);
@@ -66,5 +146,26 @@ pub fn brent(f: impl Fn(f64) -> f64, lo: f64, hi: f64, tol: f64, stats: &mut Roo
             .ok_or(RootError::NotConverged { reason: "converged without a finite root".into() }),
         Some(reason) => Err(RootError::NotConverged { reason: reason.text().to_string() }),
         None => Err(RootError::NotConverged { reason: "no termination reason".into() }),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn bracketed_finds_the_roots_argmin_finds() {
+        let mut stats = RootStats::default();
+        for (f, lo, hi, root) in [
+            (Box::new(|x: f64| x * x - 2.0) as Box<dyn Fn(f64) -> f64>, 0.0, 2.0, 2.0_f64.sqrt()),
+            (Box::new(|x: f64| (x - 0.3).exp() - 1.0), -5.0, 5.0, 0.3),
+            (Box::new(|x: f64| x.powi(3)), -1.0, 0.5, 0.0),
+        ] {
+            let a = bracketed(&f, lo, hi, 1e-14, &mut stats).expect("a root");
+            let b = brent(&f, lo, hi, 1e-14, &mut stats).expect("a root");
+            assert!((a - root).abs() < 1e-7 && (a - b).abs() < 1e-7, "{a} {b} {root}");
+            assert!(f(a).abs() < 1e-13, "f({a}) = {}", f(a));
+        }
+        assert!(matches!(bracketed(|x| x * x + 1.0, -1.0, 1.0, 1e-12, &mut stats), Err(RootError::NoBracket { .. })));
     }
 }

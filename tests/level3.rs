@@ -142,10 +142,10 @@ fn converges_to_level_2_as_the_lining_stiffens() {
         ea_n: EA_N,
         solver: Solver::Fast,
     };
-    let mut sim2 = level2::Simulation::new(l2, &samples, level2::WrapState::uniform(alpha, n, T0_N));
+    let mut sim2 = level2::Simulation::new(l2, &samples, level2::Profile::uniform(alpha, T0_N, mu));
     sim2.settle().expect("settles");
     sim2.advance_to(1.0).expect("runs");
-    let field = sim2.state.field(0.0);
+    let field = sim2.profile.field();
     let law = ContactLaw::new(mu, 0.0);
     let level2_at = |theta: f64| field.piece_at(theta, &law).tension_n(theta);
     let h = alpha / n as f64;

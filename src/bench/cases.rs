@@ -37,7 +37,7 @@ use crate::design::{
     SceneKind, WrapSource,
 };
 pub use crate::model::level2::HistoryRow;
-use crate::model::level2::{self, Level2Error, Params, Solver, WrapState};
+use crate::model::level2::{self, Level2Error, Params, Profile, Solver};
 use crate::planner::Request;
 use crate::run::{self, Options, RunError, RunResult};
 use crate::wrap::Distribution;
@@ -382,7 +382,7 @@ pub fn run_walk(samples: &[level2::HistorySample], nodes: usize) -> Result<Outco
         solver: Solver::Fast,
     };
     let output = level2::Output { snapshots_s: &[], step_s: Some(1.0), sample_rows: false };
-    let initial = WrapState::uniform(alpha_rad(), nodes, samples[0].t1_n);
+    let initial = Profile::uniform(alpha_rad(), samples[0].t1_n, MU);
     let run = level2::run_history(params, samples, output, initial, nodes)?;
     Ok(Outcome { error: None, steps: Some(run.stats.increments), duty: None })
 }

@@ -38,8 +38,14 @@ pub enum Level4Error {
 /// (each with a new m'v² as the speed changes) at a few hundred per second.
 pub const WRAP_SAMPLE_S: f64 = 0.005;
 
-/// What the suspended-rope model needs of a design and a duty-cycle scene.
+/// What the suspended-rope model needs of a design and a duty-cycle scene. A lowering trip
+/// starts where the lift ends: side 1 at the top, every hanging length moved by the lift's
+/// travel D (`L1 = L1₀ − D`, `L2 = L2₀ + D`, tails the other way).
 pub fn hoist_params(design: &Design, hoist: &Hoist, scene: &DutyCycleScene) -> HoistParams {
+    let d = match scene.direction {
+        Direction::Lift => 0.0,
+        Direction::Lower => lift_travel_m(hoist),
+    };
     HoistParams {
         ropes: design.rope.count as usize,
         rope_mass_per_m_kg: design.rope.mass_per_m_kg,
@@ -49,12 +55,22 @@ pub fn hoist_params(design: &Design, hoist: &Hoist, scene: &DutyCycleScene) -> H
         tail_mass_per_m_kg: hoist.tail_mass_per_m_kg,
         side1_mass_kg: hoist.conveyance1_kg + scene.payload_kg,
         side2_mass_kg: hoist.conveyance2_kg,
-        side1_length0_m: hoist.side1_length_m,
-        side2_length0_m: hoist.side2_length_m,
-        tail1_length0_m: hoist.tail1_length_m,
-        tail2_length0_m: hoist.tail2_length_m,
+        side1_length0_m: hoist.side1_length_m - d,
+        side2_length0_m: hoist.side2_length_m + d,
+        tail1_length0_m: hoist.tail1_length_m + d,
+        tail2_length0_m: hoist.tail2_length_m - d,
         g_m_s2: design.g_m_s2,
     }
+}
+
+/// Travel of the pulley surface over the `[hoist]` profile as given (a lift), m.
+fn lift_travel_m(hoist: &Hoist) -> f64 {
+    let stages: Vec<Stage> = hoist
+        .stages
+        .iter()
+        .map(|s| Stage { duration_s: s.duration_s, accel_end_m_s2: s.accel_m_s2, step: s.step })
+        .collect();
+    MotionProfile::new(&stages).map_or(0.0, |p| p.at(p.duration_s()).x_m)
 }
 
 /// The scene's motion profile: the hoist's stages (mirrored when lowering side 1), cut at the
@@ -64,11 +80,21 @@ pub fn motion_profile(hoist: &Hoist, scene: &DutyCycleScene) -> Result<MotionPro
         Direction::Lift => 1.0,
         Direction::Lower => -1.0,
     };
-    let stages: Vec<Stage> = hoist
-        .stages
-        .iter()
-        .map(|s| Stage { duration_s: s.duration_s, accel_end_m_s2: sign * s.accel_m_s2, step: s.step })
-        .collect();
+    let trip = |sign: f64| {
+        hoist.stages.iter().map(move |s| Stage {
+            duration_s: s.duration_s,
+            accel_end_m_s2: sign * s.accel_m_s2,
+            step: s.step,
+        })
+    };
+    let mut stages: Vec<Stage> = trip(sign).collect();
+    if let Some(rest_s) = scene.return_after_s {
+        // A round trip: rest, then the same trip back the other way.
+        if rest_s > 0.0 {
+            stages.push(Stage { duration_s: Some(rest_s), accel_end_m_s2: 0.0, step: true });
+        }
+        stages.extend(trip(-sign));
+    }
     let Some(stop) = scene.emergency else {
         return Ok(MotionProfile::new(&stages)?);
     };

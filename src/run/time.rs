@@ -7,7 +7,7 @@ use super::{HistoryOutput, Options, RunError, SceneResult, WrapResult, empty, pa
 use crate::design::{Design, Direction, DutyCycleScene, HistorySample, HistoryScene, Scene};
 use crate::model::level0::{self, EndState};
 use crate::model::level1;
-use crate::model::level2::{self, WrapState};
+use crate::model::level2::{self, Profile};
 use crate::model::level3;
 use crate::model::level4::{self, Level4Error};
 use crate::planner::{self, Plan, PlanError};
@@ -179,8 +179,8 @@ pub(super) fn wrap_history(
         (3, None) => Err(PlanError::NoLining { scene: scene.name.clone() }.into()),
         _ => {
             let initial = match initial {
-                Initial::Uniform(t) => WrapState::uniform(alpha, options.nodes, t),
-                Initial::Rolling { level1, .. } => WrapState::from_field(alpha, options.nodes, &level1.field),
+                Initial::Uniform(t) => Profile::uniform(alpha, t, design.pulley.mu),
+                Initial::Rolling { level1, .. } => Profile::from_field(&level1.field, design.pulley.mu),
             };
             level2::run_history(params(design, options.solver), samples, output, initial, options.nodes)
                 .map_err(|source| RunError::Level2 { scene: scene.name.clone(), source })

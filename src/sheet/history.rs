@@ -33,6 +33,7 @@ pub(super) fn history(
             ("emergency_stop_s", raw.emergency_stop_s.as_ref().map(|v| v.span())),
             ("emergency_decel_m_s2", raw.emergency_decel_m_s2.as_ref().map(|v| v.span())),
             ("time_step_s", raw.time_step_s.as_ref().map(|v| v.span())),
+            ("return_after_s", raw.return_after_s.as_ref().map(|v| v.span())),
         ],
     );
     let inline = raw.t_s.is_some() || raw.t1_n.is_some() || raw.t2_n.is_some() || raw.speed_m_s.is_some();

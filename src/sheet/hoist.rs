@@ -181,6 +181,10 @@ pub(super) fn duty_cycle(c: &mut Collector, at: At, raw: &RawScene, hoist: Optio
             None
         }
     };
+    let return_after_s = match &raw.return_after_s {
+        None => Some(None),
+        Some(v) => checked(c, at, "return_after_s", v, NON_NEGATIVE).map(Some),
+    };
     let output_step_s = optional(c, at, "output_step_s", &raw.output_step_s, POSITIVE, DEFAULT_OUTPUT_STEP_S);
     let time_step_s = match &raw.time_step_s {
         None => Some(DEFAULT_TIME_STEP_S),
@@ -206,6 +210,7 @@ pub(super) fn duty_cycle(c: &mut Collector, at: At, raw: &RawScene, hoist: Optio
     Some(DutyCycleScene {
         payload_kg: payload_kg?,
         direction: direction?,
+        return_after_s: return_after_s?,
         emergency: emergency?,
         snapshots_s: snapshots_s?,
         output_step_s: output_step_s?,

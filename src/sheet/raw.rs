@@ -63,6 +63,7 @@ pub struct RawScene {
     pub emergency_stop_s: Option<Spanned<f64>>,
     pub emergency_decel_m_s2: Option<Spanned<f64>>,
     pub time_step_s: Option<Spanned<f64>>,
+    pub return_after_s: Option<Spanned<f64>>,
     pub outputs: Option<Spanned<Vec<Spanned<String>>>>,
 }
 

@@ -460,6 +460,7 @@ fn loads(c: &mut Collector, at: At, raw: &RawScene, g_m_s2: Option<f64>, rope: O
             ("emergency_stop_s", raw.emergency_stop_s.as_ref().map(|v| v.span())),
             ("emergency_decel_m_s2", raw.emergency_decel_m_s2.as_ref().map(|v| v.span())),
             ("time_step_s", raw.time_step_s.as_ref().map(|v| v.span())),
+            ("return_after_s", raw.return_after_s.as_ref().map(|v| v.span())),
         ],
     );
     let (t1_raw, t2_raw, speed_raw) = (

@@ -1,27 +1,30 @@
-//! Level 2: the discrete stick–slip model of the rope on a rigid lining under a load history
-//! (MODEL §5).
+//! Level 2: the rope on a rigid lining under a load history, exact between breakpoints
+//! (docs/physics.md, level 2).
 //!
-//! Stages of one run: [`state`] holds the tension the rope keeps over the wrap (knots carried
-//! by the pulley); [`simulate`] steps it through the history — [`update::advect`] moves it with
-//! the pulley, then [`update::update`] (exact clamp, in time proportional to the slip runs) or [`qp::update`] (the same increment
-//! as a convex program in clarabel) applies the new end tensions; [`slip`] gives the rope's slip
-//! velocity; this module samples the state into history rows and distributions.
+//! Stages of one run: [`profile`] holds the tension the rope keeps over the wrap (exact pieces
+//! carried by the pulley); [`simulate`] steps it through the history, cut where
+//! [`schedule`] requires, moving it with the pulley and applying the new end tensions by the
+//! exact clamp between the slip [`envelope`]s ([`clamp`]; [`qp`] is the same increment as a
+//! convex program in clarabel, its independent twin); a rise of m'v² is [`repair`]ed; this
+//! module samples the state into history rows and distributions. The node count sets only the
+//! output grid of the distributions: the state itself has no grid.
 
-pub mod knots;
+pub mod clamp;
+pub mod envelope;
+pub mod profile;
 pub mod qp;
+pub mod repair;
+pub mod schedule;
 pub mod simulate;
-pub mod slip;
-pub mod state;
-pub mod update;
 
-use crate::contact::{ARC_THRESHOLD, ContactLaw};
+use crate::contact::ContactLaw;
 use crate::derived::{self, WrapSummary};
 use crate::model::level0::{EndState, euler_limit, safety_factor};
 use crate::roots::{RootError, RootStats};
 use crate::wrap::Distribution;
+pub use profile::Profile;
 use serde::Serialize;
 pub use simulate::{HistorySample, Params, SimError, Simulation, Solver, StepStats};
-pub use state::WrapState;
 
 /// One row of history.csv.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -145,12 +148,12 @@ impl Default for Output<'_> {
 }
 
 /// Runs a history from `initial`, reporting at every sample and snapshot time (and every
-/// output step).
+/// output step); distributions on `output_nodes` pitches (plus every breakpoint).
 pub fn run_history(
     params: Params,
     samples: &[HistorySample],
     output: Output,
-    initial: WrapState,
+    initial: Profile,
     output_nodes: usize,
 ) -> Result<HistoryRun, Level2Error> {
     let times = output.times(samples);
@@ -158,102 +161,45 @@ pub fn run_history(
     sim.settle()?;
     let limit = euler_limit(params.mu, params.wrap_angle_rad);
     let mut run = HistoryRun::with_capacity(times.len());
-    let is_snapshot = |t: f64| output.is_snapshot(t, samples);
-    for (i, &t) in times.iter().enumerate() {
-        // Slip velocity is reported with distributions only: the increments keep the knots
-        // they need while the run approaches a snapshot.
-        sim.track_motion = is_snapshot(t) || times.get(i + 1).is_some_and(|&next| is_snapshot(next));
+    for &t in &times {
         sim.advance_to(t)?;
         let s = sim.at(t);
-        let c = params.mass_per_m_kg * s.speed_m_s * s.speed_m_s;
-        let law = ContactLaw::new(params.mu, c);
-        let snapshot = is_snapshot(t);
-        let summary = if snapshot || c != sim.state.centrifugal_n {
-            derived::summarize_pieces(sim.state.pieces(c), &law, snapshot)?
-        } else {
-            row_summary(&sim.state, &law)
-        };
+        let law = ContactLaw::new(params.mu, sim.centrifugal_n);
+        let snapshot = output.is_snapshot(t, samples);
+        let summary = derived::summarize_pieces(sim.profile.pieces(), &law, snapshot)?;
         let end = EndState::of_sample(&s, sim.accel_m_s2(t), params.mass_per_m_kg);
         run.push_row(t, &end, &summary, limit, sim.gross_slip);
-        run.map.push(utilization_map(&sim.state, &law));
+        run.map.push(utilization_map(&sim.profile, &law));
         if snapshot {
-            let field = sim.state.field(c);
-            let (knots, w) = sim.slip_velocities();
+            let field = sim.profile.field();
             let gross = sim.gross_slip;
             let distribution = derived::distribution(t, &field, &law, &summary, output_nodes, gross, |theta, _| {
-                (!gross).then(|| interpolate_knots(&knots, &w, theta))
+                sim.slip_velocity_m_s(theta)
             });
             run.snapshots.push(Snapshot { summary, distribution });
         }
     }
     run.stats = sim.stats;
+    run.roots.calls += sim.roots.calls;
+    run.roots.iterations += sim.roots.iterations;
     Ok(run)
 }
 
-/// Arcs, JDP and peak utilization of a state whose `ln n` is current (as
-/// [`derived::summarize_pieces`] without zones), straight from the knots: on every piece
-/// `ln n` is linear, so the utilization is constant, `|Δ ln n| / (μ Δθ)`, and friction is
-/// positive where the tension falls.
-fn row_summary(state: &WrapState, law: &ContactLaw) -> WrapSummary {
-    let mut arcs = derived::ArcTally::default();
-    let mut max_slope: f64 = 0.0;
-    let threshold = ARC_THRESHOLD * law.mu;
-    for w in state.knots.windows(2) {
-        let (a, b) = (&w[0], &w[1]);
-        let span = b.theta_rad - a.theta_rad;
-        let rise = b.log_n - a.log_n;
-        if span <= 0.0 {
-            continue;
-        }
-        if rise.abs() > max_slope * span {
-            max_slope = rise.abs() / span;
-        }
-        arcs.add(a.theta_rad, b.theta_rad, rise.abs() >= threshold * span, rise < 0.0);
-    }
-    arcs.summary(max_slope / law.mu, derived::ZoneRuns::default(), RootStats::default())
-}
-
-/// Signed utilization at `MAP_COLUMNS` equally spaced angles (one sweep over the knots; only
-/// the pieces under a column are built).
-fn utilization_map(state: &WrapState, law: &ContactLaw) -> Vec<f64> {
-    let knots = &state.knots;
+/// Signed utilization at `MAP_COLUMNS` equally spaced angles (one sweep over the pieces).
+fn utilization_map(profile: &Profile, law: &ContactLaw) -> Vec<f64> {
+    let alpha = profile.wrap_angle_rad();
+    let m = profile.len();
     let mut j = 0;
+    let mut piece = profile.piece(0);
     (0..MAP_COLUMNS)
         .map(|i| {
-            let theta = state.wrap_angle_rad * i as f64 / (MAP_COLUMNS - 1) as f64;
-            // The interval [θ_j, θ_{j+1}] of positive length holding θ.
-            while j + 2 < knots.len()
-                && (knots[j + 1].theta_rad < theta || knots[j + 1].theta_rad <= knots[j].theta_rad)
-            {
+            let theta = alpha * i as f64 / (MAP_COLUMNS - 1) as f64;
+            while j + 1 < m && piece.theta1_rad < theta {
                 j += 1;
+                piece = profile.piece(j);
             }
-            let (a, b) = (&knots[j], &knots[j + 1]);
-            if b.theta_rad <= a.theta_rad {
-                return 0.0;
-            }
-            let p = state.piece(a, b, law.centrifugal_n);
-            // Sign of q = −A k e^{k(θ−θ0)} is that of −A k.
-            let sign = -p.amp_n * p.rate_per_rad;
-            if sign == 0.0 { 0.0 } else { law.utilization(&p, theta) * sign.signum() }
+            let q = piece.friction_n_per_rad(theta);
+            if q == 0.0 { 0.0 } else { law.utilization(&piece, theta) * q.signum() }
         })
         .collect()
-}
-
-/// Linear interpolation of per-knot values at θ.
-fn interpolate_knots(knots: &[state::Knot], values: &[f64], theta: f64) -> f64 {
-    if values.len() != knots.len() || knots.is_empty() {
-        return 0.0;
-    }
-    let j = knots.partition_point(|k| k.theta_rad <= theta);
-    if j == 0 {
-        return values[0];
-    }
-    if j >= knots.len() {
-        return values[knots.len() - 1];
-    }
-    let (a, b) = (knots[j - 1].theta_rad, knots[j].theta_rad);
-    if b <= a {
-        return values[j];
-    }
-    values[j - 1] + (values[j] - values[j - 1]) * (theta - a) / (b - a)
 }

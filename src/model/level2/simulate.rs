@@ -1,30 +1,42 @@
-//! Time stepping of the discrete model through a load history (MODEL §5).
+//! Time stepping of the rigid-lining model through a load history (docs/physics.md, level 2).
 //!
-//! End tensions and speed are piecewise linear between the history samples. The pulley's
-//! travel over a step is `∫v dt / R` (quadratic in time on a segment). Steps end at the next
-//! sample time or at the next node event — the instant the node lattice has moved by exactly
-//! one pitch — whichever comes first, so rope enters the wrap node by node at the tension of
-//! its free span at that instant and the memory of the stuck rope is never interpolated.
-//! Within a step the end tensions change monotonically, for which the update is exact.
+//! End tensions and speed are piecewise linear between the history samples. Each sample
+//! interval is cut where the speed passes through zero, where m'v² reaches the next step of its
+//! lattice, and where [`super::schedule`] says a single clamp would no longer be exact (turning
+//! points of the envelope lines, crossings of the Euler limit). On each piece the rope is moved
+//! with the pulley — the rope that entered carries the end tension of the instant it entered, an
+//! [`EntryRamp`] — and the profile is clamped between the envelopes of the piece's end. Nothing
+//! depends on how the history is sampled or reported: cutting an interval more finely changes
+//! the answer by round-off only, and no node count enters.
+//!
+//! m'v² enters through the contact force `n = T − m'v²`. It is held constant between the points
+//! of a lattice (spacing [`CENTRIFUGAL_STEP_REL`]) that the speed's own course defines, and
+//! equals m'v² exactly wherever the speed is constant; at each lattice point the stuck rope that the new m'v² puts beyond the Coulomb
+//! limit is repaired ([`super::repair`]) before the clamp.
 
+use super::clamp::{self, Touched};
+use super::envelope::{Envelopes, Line};
+use super::profile::Profile;
 use super::qp::{self, QpError, QpVerdict};
-use super::state::WrapState;
-use super::update::{self, Ends, Outcome, advect};
+use super::repair;
+use super::schedule::{self, Linear};
+use crate::roots::RootStats;
+use crate::wrap::{EntryRamp, Piece};
 use serde::Serialize;
 
 /// Which solver performs each increment.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Solver {
-    /// The exact O(N) clamp.
+    /// The exact clamp between the envelopes.
     Fast,
-    /// The convex program in clarabel.
+    /// The same increment as a convex program in clarabel.
     Clarabel,
 }
 
 pub use crate::design::HistorySample;
 
-/// What the discrete model needs of the hoist.
+/// What the rigid-lining model needs of the hoist.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Params {
     pub mu: f64,
@@ -35,17 +47,18 @@ pub struct Params {
     pub solver: Solver,
 }
 
-/// Safety limit on increments of one run (a history that needs more is an error, not a hang).
-pub const MAX_STEPS: u64 = 200_000_000;
+/// Spacing of the m'v² lattice: the larger of this fraction of the history's largest end
+/// tension and [`CENTRIFUGAL_STEP_OF_RANGE`] of its largest m'v². While the speed changes, the
+/// contact force is exact to that spacing (on the reference hoist 1.07 N, 7e-6 of the tension);
+/// at constant speed it is exact.
+pub const CENTRIFUGAL_STEP_REL: f64 = 1e-6;
+/// See [`CENTRIFUGAL_STEP_REL`]: at most a thousand steps from rest to the top speed.
+pub const CENTRIFUGAL_STEP_OF_RANGE: f64 = 1e-3;
 
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum SimError {
     #[error(transparent)]
     Qp(#[from] QpError),
-    #[error(
-        "the history needs more than {MAX_STEPS} increments at this node count; use fewer nodes or a shorter history"
-    )]
-    TooManySteps,
     #[error("the rope loses contact at t = {t_s} s: m'v² = {centrifugal_n:.1} N reaches the tension {tension_n:.1} N")]
     ContactLoss { t_s: f64, centrifugal_n: f64, tension_n: f64 },
 }
@@ -53,18 +66,35 @@ pub enum SimError {
 /// Solver tallies, reported in summary.json.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Serialize)]
 pub struct StepStats {
+    /// Clamps of the profile (one per cut piece of a sample interval).
     pub increments: u64,
+    /// Level 3: lattice moves of the segments with the pulley.
     pub node_events: u64,
     pub gross_slip_increments: u64,
+    /// Steps of m'v² on its lattice.
+    pub centrifugal_steps: u64,
+    /// Stretches of stuck rope repaired after m'v² rose.
+    pub repairs: u64,
     pub qp_solved: u64,
     /// Of the solved increments, those whose active-set polish was accepted.
     pub qp_polished: u64,
     pub qp_almost_solved: u64,
+    /// Largest relative difference between clarabel's optimum and the exact clamp at a knot.
+    pub qp_max_deviation_rel: f64,
     /// Level 3: extra clarabel solves of the fixed point on the contact forces.
     pub normal_force_passes: u64,
     /// Level 3 with the fast solver: increments whose unconstrained (elastic) minimiser met
     /// every Coulomb bound strictly, so that it is the program's solution without clarabel.
     pub elastic_increments: u64,
+}
+
+/// What the last increment did, for the slip velocity.
+#[derive(Debug, Clone, Copy, Default)]
+struct LastStep {
+    env: Option<Envelopes>,
+    touched: Touched,
+    /// Rates of the lines l1, u1, l2, u2 at its end (1/s).
+    rates: [f64; 4],
 }
 
 /// A running simulation.
@@ -73,62 +103,43 @@ pub struct Simulation<'a> {
     pub params: Params,
     samples: &'a [HistorySample],
     pub t_s: f64,
-    pub state: WrapState,
-    /// Whether the last increment found gross slip.
+    pub profile: Profile,
+    /// Whether the state is in gross slip.
     pub gross_slip: bool,
-    /// Whether increments keep the knots before and after them for [`Self::slip_velocities`]
-    /// (on by default; a driver that reports slip velocity only at some times turns it on
-    /// shortly before those).
-    pub track_motion: bool,
+    /// m'v² the state holds (N).
+    pub centrifugal_n: f64,
+    centrifugal_step_n: f64,
     pub stats: StepStats,
-    /// Knots before and after the last increment long enough to resolve slip velocity, with
-    /// its m'v² and duration (velocities are computed from them only when reported).
-    motion: Motion,
-}
-
-#[derive(Debug, Clone, Default)]
-struct Motion {
-    before: Vec<super::state::Knot>,
-    after: Vec<super::state::Knot>,
-    centrifugal_n: f64,
-    dt_s: f64,
+    pub roots: RootStats,
+    last: LastStep,
+    scratch: clamp::Scratch,
 }
 
 impl<'a> Simulation<'a> {
-    /// Starts at the first sample with the given state (ends are set by the first update).
-    pub fn new(params: Params, samples: &'a [HistorySample], state: WrapState) -> Self {
+    /// Starts at the first sample with the given state (its ends are set by [`Self::settle`]).
+    pub fn new(params: Params, samples: &'a [HistorySample], profile: Profile) -> Self {
         let t_s = samples.first().map_or(0.0, |s| s.t_s);
+        let t_max = samples.iter().map(|s| s.t1_n.max(s.t2_n)).fold(0.0, f64::max);
+        // |v| is largest at a sample (it is linear between them), so both maxima are the same
+        // however the history is sampled.
+        let c_max = samples.iter().map(|s| params.mass_per_m_kg * s.speed_m_s * s.speed_m_s).fold(0.0, f64::max);
+        let centrifugal_n = samples.first().map_or(0.0, |s| params.mass_per_m_kg * s.speed_m_s * s.speed_m_s);
         Self {
             params,
             samples,
             t_s,
-            state,
+            profile,
             gross_slip: false,
-            track_motion: true,
+            centrifugal_n,
+            centrifugal_step_n: (CENTRIFUGAL_STEP_REL * t_max).max(CENTRIFUGAL_STEP_OF_RANGE * c_max),
             stats: StepStats::default(),
-            motion: Motion::default(),
+            roots: RootStats::default(),
+            last: LastStep::default(),
+            scratch: clamp::Scratch::default(),
         }
     }
 
-    /// Slip velocity (m/s, +θ) at the knots of the last increment that resolved it, with those
-    /// knots; zero everywhere before any motion.
-    pub fn slip_velocities(&self) -> (Vec<super::state::Knot>, Vec<f64>) {
-        let m = &self.motion;
-        if m.dt_s <= 0.0 || m.after.is_empty() {
-            return (self.state.knots.to_vec(), vec![0.0; self.state.knots.len()]);
-        }
-        let w = super::slip::velocities(
-            &m.before,
-            &m.after,
-            m.centrifugal_n,
-            m.dt_s,
-            self.params.radius_m,
-            self.params.ea_n,
-        );
-        (m.after.clone(), w)
-    }
-
-    /// The sample segment containing `t` and the interpolated (T1, T2, v).
+    /// The interpolated sample at `t`.
     pub fn at(&self, t: f64) -> HistorySample {
         interpolate(self.samples, t)
     }
@@ -138,102 +149,282 @@ impl<'a> Simulation<'a> {
         speed_slope(self.samples, t)
     }
 
-    fn ends(&self, s: &HistorySample) -> Result<Ends, SimError> {
-        let c = self.params.mass_per_m_kg * s.speed_m_s * s.speed_m_s;
-        let lo = s.t1_n.min(s.t2_n);
-        if lo <= c {
-            return Err(SimError::ContactLoss { t_s: s.t_s, centrifugal_n: c, tension_n: lo });
-        }
-        Ok(Ends { t1_n: s.t1_n, t2_n: s.t2_n, centrifugal_n: c, mu: self.params.mu })
+    /// Applies the first sample's ends without motion.
+    pub fn settle(&mut self) -> Result<(), SimError> {
+        let k = segment(self.samples, self.t_s);
+        let input = self.linear(k).0;
+        self.centrifugal_n = self.params.mass_per_m_kg * (input.omega_per_s * self.params.radius_m).powi(2);
+        self.centrifugal_step(self.centrifugal_n, &input, self.t_s - self.samples[k].t_s)
     }
 
-    /// Applies the ends at the current time without motion (used to start a run).
-    pub fn settle(&mut self) -> Result<(), SimError> {
-        let s = self.at(self.t_s);
-        self.increment(&s, 0.0, 0.0, 0.0)
+    /// The inputs of sample interval `k` in its local time, its start and its end (s).
+    fn linear(&self, k: usize) -> (Linear, f64, f64) {
+        let r = self.params.radius_m;
+        let a = self.samples[k];
+        let (b, end) = match self.samples.get(k + 1) {
+            Some(b) if b.t_s > a.t_s => (*b, b.t_s),
+            _ => (a, f64::INFINITY),
+        };
+        let span = if end.is_finite() { end - a.t_s } else { 1.0 };
+        let input = Linear {
+            t1_n: a.t1_n,
+            t1_slope_n_per_s: (b.t1_n - a.t1_n) / span,
+            t2_n: a.t2_n,
+            t2_slope_n_per_s: (b.t2_n - a.t2_n) / span,
+            // + 0.0: a speed of −0.0 is the same rest as 0.0.
+            omega_per_s: (a.speed_m_s + 0.0) / r,
+            omega_slope_per_s2: (b.speed_m_s - a.speed_m_s) / span / r,
+        };
+        (input, a.t_s, end)
     }
 
     /// Steps to `t_end` (≥ the current time).
     pub fn advance_to(&mut self, t_end: f64) -> Result<(), SimError> {
-        let h = self.state.pitch_rad;
         while self.t_s < t_end {
-            if self.stats.increments >= MAX_STEPS {
-                return Err(SimError::TooManySteps);
-            }
             let k = segment(self.samples, self.t_s);
-            let seg_end = self.samples.get(k + 1).map_or(t_end, |s| s.t_s).min(t_end);
-            let s0 = self.at(self.t_s);
-            let (v, a) = (s0.speed_m_s, self.accel_m_s2(self.t_s));
-            let r = self.params.radius_m;
-            let span = seg_end - self.t_s;
-            // Travel angle after τ: (v τ + a τ²/2)/R. Distances to the next node event:
-            let up = h - self.state.phase_rad;
-            let down = -self.state.phase_rad;
-            let hit = [up, down]
-                .into_iter()
-                .filter_map(|d| first_time(v / r, a / r, d, span).map(|tau| (tau, d)))
-                .min_by(|x, y| x.0.total_cmp(&y.0));
-            let (tau, delta, event) = match hit {
-                Some((tau, d)) => (tau, d, true),
-                None => (span, (v * span + 0.5 * a * span * span) / r, false),
-            };
-            let t_new = if event { self.t_s + tau } else { seg_end };
-            let s1 = self.at(t_new);
-            let direction = if delta != 0.0 { delta.signum() } else { v.signum() };
-            self.increment(&s1, delta, direction, tau)?;
-            if event {
-                self.stats.node_events += 1;
+            let (input, t0, seg_end) = self.linear(k);
+            let stop = seg_end.min(t_end);
+            let from = self.t_s - t0;
+            if from == 0.0 && input.omega_slope_per_s2 == 0.0 {
+                // Constant speed: m'v² is exact on this interval.
+                let c = self.params.mass_per_m_kg * (input.omega_per_s * self.params.radius_m).powi(2);
+                if c != self.centrifugal_n {
+                    self.centrifugal_step(c, &input, 0.0)?;
+                }
             }
-            self.t_s = t_new;
+            self.run_interval(&input, t0, from, stop - t0)?;
+            self.t_s = stop;
         }
         Ok(())
     }
 
-    /// One increment: advect by `delta_rad`, then update to the ends of sample `s`.
-    fn increment(&mut self, s: &HistorySample, delta_rad: f64, direction: f64, dt_s: f64) -> Result<(), SimError> {
-        let ends = self.ends(s)?;
-        let entry = if direction >= 0.0 { s.t1_n } else { s.t2_n };
-        advect(&mut self.state, delta_rad, direction, entry, ends.centrifugal_n);
-        // Slip velocity from increments long enough to resolve it: a whole pitch of travel, or
-        // any loading at rest (a sub-step ending just before a sample carries no information).
-        let resolves =
-            self.track_motion && dt_s > 0.0 && (delta_rad == 0.0 || delta_rad.abs() >= 0.25 * self.state.pitch_rad);
-        if resolves {
-            self.motion.before.clear();
-            self.motion.before.extend_from_slice(&self.state.knots);
-        }
-        let outcome = match self.params.solver {
-            Solver::Fast => update::update(&mut self.state, &ends),
-            Solver::Clarabel => match qp::update(&mut self.state, &ends)? {
-                QpVerdict::Solved => {
-                    self.stats.qp_solved += 1;
-                    Outcome::Held
-                }
-                QpVerdict::SolvedPolished => {
-                    self.stats.qp_solved += 1;
-                    self.stats.qp_polished += 1;
-                    Outcome::Held
-                }
-                QpVerdict::AlmostSolved => {
-                    self.stats.qp_almost_solved += 1;
-                    Outcome::Held
-                }
-                QpVerdict::Infeasible => update::update(&mut self.state, &ends),
-            },
-        };
-        self.gross_slip = outcome == Outcome::GrossSlip;
-        self.stats.increments += 1;
-        if self.gross_slip {
-            self.stats.gross_slip_increments += 1;
-        }
-        if resolves {
-            self.motion.after.clear();
-            self.motion.after.extend_from_slice(&self.state.knots);
-            self.motion.centrifugal_n = ends.centrifugal_n;
-            self.motion.dt_s = dt_s;
+    /// Runs local times `from … to` of one sample interval.
+    fn run_interval(&mut self, input: &Linear, t0: f64, from: f64, to: f64) -> Result<(), SimError> {
+        let p = self.params;
+        let mut tau = from;
+        while tau < to {
+            let mut end = to;
+            let mut centrifugal = None;
+            if let Some(tz) = speed_zero(input, tau, to) {
+                end = tz;
+                centrifugal = Some(0.0);
+            }
+            if let Some((tc, c)) = self.lattice_crossing(input, tau, end) {
+                end = tc;
+                centrifugal = Some(c);
+            }
+            let cuts = schedule::cuts(input, tau, end, p.mu, p.wrap_angle_rad, self.centrifugal_n);
+            let mut a = tau;
+            for b in cuts.into_iter().chain(std::iter::once(end)) {
+                self.increment(input, t0, a, b)?;
+                a = b;
+            }
+            if let Some(c) = centrifugal {
+                self.centrifugal_step(c, input, end)?;
+            }
+            tau = end;
         }
         Ok(())
     }
+
+    /// The next point of the m'v² lattice the speed reaches on (lo, hi), and its m'v² (the
+    /// speed's own zero is a separate event).
+    fn lattice_crossing(&self, input: &Linear, lo: f64, hi: f64) -> Option<(f64, f64)> {
+        let e = input.omega_slope_per_s2;
+        let step = self.centrifugal_step_n;
+        if e == 0.0 || step <= 0.0 || self.params.mass_per_m_kg == 0.0 {
+            return None;
+        }
+        let (r, m) = (self.params.radius_m, self.params.mass_per_m_kg);
+        let mid = 0.5 * (lo + hi);
+        let sign = input.omega_per_s(mid).signum();
+        let w_lo = input.omega_per_s(lo);
+        let c_lo = m * (w_lo * r).powi(2);
+        let rising = sign * e > 0.0;
+        // Lattice points at (k + ½)·step: a sample at the largest speed, or any constant speed
+        // on a whole multiple of the step, lies half a step from a point, never on one.
+        let x = c_lo / step - 0.5;
+        let mut level = if rising { x.floor() + 1.0 } else { x.ceil() - 1.0 };
+        for _ in 0..3 {
+            if level < 0.0 {
+                return None;
+            }
+            let c = (level + 0.5) * step;
+            let w = sign * (c / m).sqrt() / r;
+            let tau = (w - input.omega_per_s) / e;
+            if tau > lo && tau < hi {
+                return Some((tau, c));
+            }
+            if tau >= hi {
+                return None;
+            }
+            level += if rising { 1.0 } else { -1.0 };
+        }
+        None
+    }
+
+    /// m'v² steps to `c` at local time τ: stuck rope beyond the new limit is repaired, then the
+    /// profile is clamped to the ends of that instant.
+    fn centrifugal_step(&mut self, c: f64, input: &Linear, tau: f64) -> Result<(), SimError> {
+        let p = self.params;
+        let rose = c > self.centrifugal_n;
+
+        self.centrifugal_n = c;
+        self.stats.centrifugal_steps += 1;
+        let env = self.envelopes(input, tau)?;
+        if !env.admissible() {
+            clamp::slide(&mut self.profile, &env);
+            self.gross_slip = true;
+            return Ok(());
+        }
+        if rose {
+            self.stats.repairs += repair::repair(&mut self.profile, c, p.mu, &mut self.roots);
+        }
+
+        let touched = clamp::clamp(&mut self.profile, &env, &mut self.roots, &mut self.scratch);
+        self.gross_slip = false;
+        self.last = LastStep { env: Some(env), touched, rates: [0.0; 4] };
+        Ok(())
+    }
+
+    /// The envelopes at local time τ for the held m'v²; a slack rope is an error.
+    fn envelopes(&self, input: &Linear, tau: f64) -> Result<Envelopes, SimError> {
+        let (t1, t2) = (input.t1_n(tau), input.t2_n(tau));
+        let c = self.centrifugal_n;
+        if t1.min(t2) <= c {
+            return Err(SimError::ContactLoss { t_s: self.t_s, centrifugal_n: c, tension_n: t1.min(t2) });
+        }
+        Ok(Envelopes::new(t1, t2, c, self.params.mu, self.params.wrap_angle_rad))
+    }
+
+    /// One increment over local times a … b (no cut inside): advect, then clamp to the ends at b.
+    fn increment(&mut self, input: &Linear, t0: f64, a: f64, b: f64) -> Result<(), SimError> {
+        let p = self.params;
+        let env = self.envelopes(input, b).map_err(|e| match e {
+            SimError::ContactLoss { centrifugal_n, tension_n, .. } => {
+                SimError::ContactLoss { t_s: t0 + b, centrifugal_n, tension_n }
+            }
+            e => e,
+        })?;
+        self.stats.increments += 1;
+        let mid = 0.5 * (a + b);
+        let (n1, n2) = (input.t1_n(mid) - self.centrifugal_n, input.t2_n(mid) - self.centrifugal_n);
+        if crate::contact::slips_grossly(n1, n2, p.mu, p.wrap_angle_rad) {
+            clamp::slide(&mut self.profile, &env);
+            self.gross_slip = true;
+            self.stats.gross_slip_increments += 1;
+            self.last = LastStep::default();
+            return Ok(());
+        }
+        let delta = input.turn_rad(b) - input.turn_rad(a);
+        if delta != 0.0 {
+            self.profile.advect(delta, entered(input, a, delta, p.wrap_angle_rad));
+        }
+        let touched = match p.solver {
+            Solver::Fast => clamp::clamp(&mut self.profile, &env, &mut self.roots, &mut self.scratch),
+            Solver::Clarabel => {
+                let (touched, verdict, deviation) =
+                    qp::clamp(&mut self.profile, &env, &mut self.roots, &mut self.scratch)?;
+                self.stats.qp_max_deviation_rel = self.stats.qp_max_deviation_rel.max(deviation);
+                match verdict {
+                    QpVerdict::Solved => self.stats.qp_solved += 1,
+                    QpVerdict::SolvedPolished => {
+                        self.stats.qp_solved += 1;
+                        self.stats.qp_polished += 1;
+                    }
+                    QpVerdict::AlmostSolved => self.stats.qp_almost_solved += 1,
+                }
+                touched
+            }
+        };
+        self.profile.merge_ends();
+        self.gross_slip = false;
+        let c = self.centrifugal_n;
+        let rates = [
+            input.line_rate(true, -1.0, p.mu, c, b),
+            input.line_rate(true, 1.0, p.mu, c, b),
+            input.line_rate(false, 1.0, p.mu, c, b),
+            input.line_rate(false, -1.0, p.mu, c, b),
+        ];
+        self.last = LastStep { env: Some(env), touched, rates };
+        Ok(())
+    }
+
+    /// Slip velocity (m/s, +θ: rope speed less pulley surface speed) at θ in the state the last
+    /// increment left; `None` in gross slip.
+    ///
+    /// In the pulley's frame stuck rope does not move. In a slip zone attached to an end the
+    /// rope's strain changes at the rate of its line, `∂T/∂t = ġ (T − m'v²)`, and the rope
+    /// moves as the integral of that strain rate from the zone's stick boundary θ_b:
+    /// `w(θ) = ∓(R/EA) ∫ ∂T/∂t dθ'` (− for the zone at θ = 0, integrated from θ to θ_b; + for
+    /// the zone at θ = α, from θ_b to θ). In steady rolling this is creep theory's
+    /// `v (T − T_in)/EA`.
+    pub fn slip_velocity_m_s(&self, theta: f64) -> Option<f64> {
+        if self.gross_slip {
+            return None;
+        }
+        let Some(env) = self.last.env else { return Some(0.0) };
+        let k = self.params.radius_m / self.params.ea_n;
+        let mu = self.params.mu;
+        let alpha = self.params.wrap_angle_rad;
+        let [l1, u1, l2, u2] = self.last.rates;
+        let touched = self.last.touched;
+        let n = |line: Line, t: f64| env.line(line, t).exp();
+        // w = ∓(R/EA) ġ ∫ n dθ' over the zone between θ and its stick boundary.
+        let s1 = touched.side1_rad;
+        match touched.side1_line {
+            Some(Line::Lower1) if theta <= s1 && l1 > 0.0 => {
+                return Some(-k * l1 * (n(Line::Lower1, theta) - n(Line::Lower1, s1)) / mu);
+            }
+            Some(Line::Upper1) if theta <= s1 && u1 < 0.0 => {
+                return Some(-k * u1 * (n(Line::Upper1, s1) - n(Line::Upper1, theta)) / mu);
+            }
+            _ => {}
+        }
+        let b = alpha - touched.side2_rad;
+        match touched.side2_line {
+            Some(Line::Lower2) if theta >= b && l2 > 0.0 => {
+                return Some(k * l2 * (n(Line::Lower2, theta) - n(Line::Lower2, b)) / mu);
+            }
+            Some(Line::Upper2) if theta >= b && u2 < 0.0 => {
+                return Some(k * u2 * (n(Line::Upper2, b) - n(Line::Upper2, theta)) / mu);
+            }
+            _ => {}
+        }
+        Some(0.0)
+    }
+}
+
+/// The rope that entered over local times a … a + Δτ, whose travel was `delta_rad`, in the wrap's
+/// frame after the move: the entry end's tension of each instant, carried in by the pulley.
+fn entered(input: &Linear, a: f64, delta_rad: f64, alpha: f64) -> Piece {
+    let (entry_theta, tension, slope) = if delta_rad > 0.0 {
+        (0.0, input.t1_n(a), input.t1_slope_n_per_s)
+    } else {
+        (alpha, input.t2_n(a), input.t2_slope_n_per_s)
+    };
+    let (lo, hi) = if delta_rad > 0.0 { (0.0, delta_rad.min(alpha)) } else { ((alpha + delta_rad).max(0.0), alpha) };
+    if slope == 0.0 {
+        return Piece::constant(lo, hi, tension);
+    }
+    let ramp = EntryRamp {
+        theta_a_rad: entry_theta + delta_rad,
+        tension_n: tension,
+        slope_n_per_s: slope,
+        omega_per_s: input.omega_per_s(a),
+        alpha_per_s2: input.omega_slope_per_s2,
+    };
+    Piece::entry(lo, hi, ramp)
+}
+
+/// Where the speed passes through zero strictly inside (lo, hi).
+fn speed_zero(input: &Linear, lo: f64, hi: f64) -> Option<f64> {
+    let e = input.omega_slope_per_s2;
+    if e == 0.0 {
+        return None;
+    }
+    let t = -input.omega_per_s / e;
+    (t > lo && t < hi).then_some(t)
 }
 
 /// Index k of the sample segment [t_k, t_{k+1}) containing t (the last sample at or after the end).
@@ -270,33 +461,4 @@ pub fn interpolate(samples: &[HistorySample], t: f64) -> HistorySample {
         }
         _ => HistorySample { t_s: t, ..a },
     }
-}
-
-/// Smallest τ in [0, span] with `w τ + ½ α τ² = d` (angular speed w, angular acceleration α):
-/// when the node lattice next reaches an event at travel d. A root at τ = 0 (d = ±0: already on
-/// the event) counts only if the lattice is heading that way; the lattice may also turn round
-/// within the step and come back to it (the root τ = −2w/α).
-fn first_time(w: f64, alpha: f64, d: f64, span: f64) -> Option<f64> {
-    let heading = |tau: f64| {
-        let v = w + alpha * tau;
-        if v != 0.0 { v.signum() } else { alpha.signum() }
-    };
-    let valid = |tau: f64| {
-        tau.is_finite()
-            && (0.0..=span).contains(&tau)
-            && (tau > 0.0 || (heading(0.0) == d.signum() && (w != 0.0 || alpha != 0.0)))
-    };
-    let roots = if alpha == 0.0 || alpha.abs() * span < 1e-12 * w.abs() {
-        [if w != 0.0 { d / w } else { f64::NAN }, f64::NAN]
-    } else {
-        let disc = w * w + 2.0 * alpha * d;
-        if disc < 0.0 {
-            return None;
-        }
-        // Stable roots of ½α τ² + w τ − d = 0.
-        let sign = if w >= 0.0 { 1.0 } else { -1.0 };
-        let qd = -0.5 * (w + sign * disc.sqrt());
-        [qd / (0.5 * alpha), if qd != 0.0 { -d / qd } else { f64::NAN }]
-    };
-    roots.into_iter().filter(|&t| valid(t)).min_by(f64::total_cmp).map(|t| t.max(0.0))
 }

@@ -1,0 +1,292 @@
+//! The slip envelopes of the rigid lining and the clamp of a piece between them.
+//!
+//! With `x = ln(T − m'v²)` the admissible set for the end values `x1 = ln n1`, `x2 = ln n2` is
+//! `{x : |dx/dθ| ≤ μ, x(0) = x1, x(α) = x2}`; it is empty when `|x1 − x2| > μα` (gross slip).
+//! Every admissible profile lies between the envelopes
+//!
+//! ```text
+//! L(θ) = max(l1, l2),  l1 = x1 − μθ,  l2 = x2 − μ(α − θ)
+//! U(θ) = min(u1, u2),  u1 = x1 + μθ,  u2 = x2 + μ(α − θ)
+//! ```
+//!
+//! and for an admissible old profile `o` the update `x = clamp(o, L, U)` moves every point by the
+//! least amount any admissible profile can: it is the rigid-lining solution (stuck rope keeps
+//! its tension; slip zones grow from the ends at |q| = μn exactly) and, for the same reason,
+//! the minimiser of every separable convex distance, the complementary energy among them.
+//!
+//! On a piece of an admissible profile, `o − l1` and `o − u2` never fall and `o − l2`, `o − u1`
+//! never rise (`|o'| ≤ μ`), so each line crosses a piece at most once: the clamp of a piece is
+//! found from the signs at its ends and one bracketed root per line.
+
+use crate::roots::{RootStats, bracketed};
+use crate::wrap::{Piece, Shape};
+
+/// One of the four envelope lines.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Line {
+    /// `l1 = x1 − μθ`: positive friction at the limit from the θ = 0 end.
+    Lower1,
+    /// `u1 = x1 + μθ`: reverse friction at the limit from the θ = 0 end.
+    Upper1,
+    /// `l2 = x2 − μ(α − θ)`: reverse friction at the limit from the θ = α end.
+    Lower2,
+    /// `u2 = x2 + μ(α − θ)`: positive friction at the limit from the θ = α end.
+    Upper2,
+}
+
+/// The envelopes of one instant.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Envelopes {
+    /// Contact forces `n = T − m'v²` at the two ends (N/rad).
+    pub n1: f64,
+    pub n2: f64,
+    pub x1: f64,
+    pub x2: f64,
+    pub mu: f64,
+    pub alpha: f64,
+    /// m'v² (N) of the instant.
+    pub centrifugal_n: f64,
+}
+
+impl Envelopes {
+    /// The envelopes for end tensions `t1_n`, `t2_n` at m'v² = `centrifugal_n`.
+    pub fn new(t1_n: f64, t2_n: f64, centrifugal_n: f64, mu: f64, alpha: f64) -> Self {
+        let (n1, n2) = (t1_n - centrifugal_n, t2_n - centrifugal_n);
+        Self { n1, n2, x1: n1.ln(), x2: n2.ln(), mu, alpha, centrifugal_n }
+    }
+
+    /// Whether an admissible field exists: the tension ratio is within the Euler limit.
+    pub fn admissible(&self) -> bool {
+        !crate::contact::slips_grossly(self.n1, self.n2, self.mu, self.alpha)
+    }
+
+    /// `ln n` on a line at θ.
+    pub fn line(&self, line: Line, theta: f64) -> f64 {
+        let (mu, a) = (self.mu, self.alpha);
+        match line {
+            Line::Lower1 => self.x1 - mu * theta,
+            Line::Upper1 => self.x1 + mu * theta,
+            Line::Lower2 => self.x2 - mu * (a - theta),
+            Line::Upper2 => self.x2 + mu * (a - theta),
+        }
+    }
+
+    /// The line as a piece over [a, b]: `T = m'v² + e^{line(a)} e^{±μ(θ − a)}`.
+    pub fn line_piece(&self, line: Line, a: f64, b: f64) -> Piece {
+        let rate = match line {
+            Line::Lower1 | Line::Upper2 => -self.mu,
+            Line::Upper1 | Line::Lower2 => self.mu,
+        };
+        Piece::exponential(a, b, self.centrifugal_n, self.line(line, a).exp(), rate)
+    }
+
+    /// The line that bounds from below at θ (the larger of l1, l2) and its value.
+    pub fn lower(&self, theta: f64) -> (Line, f64) {
+        let (a, b) = (self.line(Line::Lower1, theta), self.line(Line::Lower2, theta));
+        if a >= b { (Line::Lower1, a) } else { (Line::Lower2, b) }
+    }
+
+    /// The line that bounds from above at θ (the smaller of u1, u2) and its value.
+    pub fn upper(&self, theta: f64) -> (Line, f64) {
+        let (a, b) = (self.line(Line::Upper1, theta), self.line(Line::Upper2, theta));
+        if a <= b { (Line::Upper1, a) } else { (Line::Upper2, b) }
+    }
+
+    /// Where l1 = l2 and where u1 = u2 (the envelopes' corners).
+    fn corners(&self) -> [f64; 2] {
+        let two_mu = 2.0 * self.mu;
+        [(self.x1 - self.x2 + self.mu * self.alpha) / two_mu, (self.x2 - self.x1 + self.mu * self.alpha) / two_mu]
+    }
+
+    /// `T − (m'v² + e^{line})` at θ for a piece: its sign is that of `x_piece − line`.
+    fn gap(&self, piece: &Piece, line: Line, theta: f64) -> f64 {
+        piece.tension_n(theta) - (self.centrifugal_n + self.line(line, theta).exp())
+    }
+
+    /// Where `line` crosses the piece strictly inside it, if it does, given `ln n` of the piece
+    /// at its two ends.
+    fn crossing(&self, piece: &Piece, line: Line, (xa, xb): (f64, f64), stats: &mut RootStats) -> Option<f64> {
+        let (a, b) = (piece.theta0_rad, piece.theta1_rad);
+        let (da, db) = (xa - self.line(line, a), xb - self.line(line, b));
+        if da == 0.0 || db == 0.0 || da.signum() == db.signum() || da.is_nan() || db.is_nan() {
+            return None;
+        }
+        if piece.contact_exponential(self.centrifugal_n).is_some() {
+            // Both straight in ln n: they meet in closed form.
+            let t = a + (b - a) * da / (da - db);
+            return (t > a && t < b).then_some(t);
+        }
+        let tol = 1e-14 * (b - a).max(1e-300);
+        bracketed(|t| self.gap(piece, line, t), a, b, tol, stats).ok().filter(|t| *t > a && *t < b)
+    }
+}
+
+/// What bounds a stretch of the clamped profile.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Bound {
+    /// The old profile (untouched).
+    Old,
+    /// An envelope line.
+    On(Line),
+}
+
+/// How far a clamp moved the profile onto each end's lines: the farthest θ reached by a moved
+/// stretch on l1 or u1 (`side1_to_rad`), the nearest θ to side 1 of one on l2 or u2.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Moved {
+    pub side1_to_rad: Option<f64>,
+    pub side2_from_rad: Option<f64>,
+    /// The lines the moved stretches lie on, from each end.
+    pub side1_line: Option<Line>,
+    pub side2_line: Option<Line>,
+}
+
+impl Line {
+    /// Whether the line starts at the θ = 0 end.
+    pub fn from_side1(self) -> bool {
+        matches!(self, Line::Lower1 | Line::Upper1)
+    }
+}
+
+/// The clamp of one piece, in θ order, appended to `out`, and how far it moved.
+pub fn clamp_piece(piece: &Piece, env: &Envelopes, out: &mut Vec<Piece>, stats: &mut RootStats) -> Moved {
+    let (a, b) = (piece.theta0_rad, piece.theta1_rad);
+    let ends =
+        (log_contact(piece.tension_n(a) - env.centrifugal_n), log_contact(piece.tension_n(b) - env.centrifugal_n));
+    if untouched(piece, env, ends) {
+        out.push(*piece);
+        return Moved { side1_to_rad: None, side2_from_rad: None, side1_line: None, side2_line: None };
+    }
+    let mut cuts: [f64; 8] = [f64::NAN; 8];
+    let mut k = 0;
+    for t in env.corners() {
+        if t > a && t < b {
+            cuts[k] = t;
+            k += 1;
+        }
+    }
+    for line in [Line::Lower1, Line::Upper1, Line::Lower2, Line::Upper2] {
+        if let Some(t) = env.crossing(piece, line, ends, stats) {
+            cuts[k] = t;
+            k += 1;
+        }
+    }
+    let cuts = &mut cuts[..k];
+    cuts.sort_by(f64::total_cmp);
+    let mut moved = Moved { side1_to_rad: None, side2_from_rad: None, side1_line: None, side2_line: None };
+    let mut start = a;
+    let mut current: Option<Bound> = None;
+    let ends = cuts.iter().copied().chain(std::iter::once(b));
+    for end in ends {
+        if end - start < super::profile::MIN_PIECE_RAD && end < b {
+            continue;
+        }
+        let bound = bound_at(piece, env, 0.5 * (start + end));
+        if let Some(prev) = current.filter(|p| *p == bound) {
+            // Same bound as the stretch before: extend it.
+            let last = out.last_mut().expect("a stretch was pushed");
+            last.theta1_rad = end;
+            current = Some(prev);
+        } else {
+            out.push(match bound {
+                Bound::Old => piece.restricted(start, end),
+                Bound::On(line) => env.line_piece(line, start, end),
+            });
+            current = Some(bound);
+        }
+        match bound {
+            Bound::On(line) if line.from_side1() => {
+                moved.side1_to_rad = Some(end);
+                moved.side1_line = Some(line);
+            }
+            Bound::On(line) => {
+                moved.side2_from_rad.get_or_insert(start);
+                moved.side2_line.get_or_insert(line);
+            }
+            Bound::Old => {}
+        }
+        start = end;
+    }
+    moved
+}
+
+/// Whether no line can bind anywhere on an admissible piece: strictly inside l1 and u1 at its
+/// start and inside l2 and u2 at its end (each gap is monotone over the piece, see the module
+/// doc). A piece steeper than the limit starts on a line (it entered at the end's tension), so
+/// it never passes.
+fn untouched(piece: &Piece, env: &Envelopes, (xa, xb): (f64, f64)) -> bool {
+    let (a, b) = (piece.theta0_rad, piece.theta1_rad);
+    xa > env.line(Line::Lower1, a)
+        && xa < env.line(Line::Upper1, a)
+        && xb > env.line(Line::Lower2, b)
+        && xb < env.line(Line::Upper2, b)
+}
+
+/// `ln n`, −∞ where the rope has no contact force.
+fn log_contact(n: f64) -> f64 {
+    if n > 0.0 { n.ln() } else { f64::NEG_INFINITY }
+}
+
+/// Which bound holds at θ: the old profile when it lies within [L, U], else the line it is
+/// clamped to.
+fn bound_at(piece: &Piece, env: &Envelopes, theta: f64) -> Bound {
+    let x = log_contact(piece.tension_n(theta) - env.centrifugal_n);
+    let (lower, l) = env.lower(theta);
+    let (upper, u) = env.upper(theta);
+    if x < l {
+        Bound::On(lower)
+    } else if x > u {
+        Bound::On(upper)
+    } else {
+        Bound::Old
+    }
+}
+
+/// Whether a piece's value at θ lies strictly between the two lines from one end (`side1`:
+/// l1 and u1; else l2 and u2): beyond such a point those lines cannot bind (see the module doc).
+pub fn strictly_inside(piece: &Piece, env: &Envelopes, theta: f64, side1: bool) -> bool {
+    let (lo, hi) = if side1 { (Line::Lower1, Line::Upper1) } else { (Line::Lower2, Line::Upper2) };
+    env.gap(piece, lo, theta) > 0.0 && env.gap(piece, hi, theta) < 0.0
+}
+
+/// Whether `b` continues `a` with the same closed form (the same line of a slip zone, the
+/// same constant, or the rope that entered during one linear ramp of the end tension), so
+/// that the two can be one piece with `a`'s closed form.
+pub fn continues(a: &Piece, b: &Piece) -> bool {
+    match (a.shape, b.shape) {
+        (Shape::Entry(x), Shape::Entry(y)) => {
+            // One ramp written with more samples has slopes equal to round-off.
+            let same = |p: f64, q: f64| p == q || (p - q).abs() <= 1e-12 * p.abs().max(q.abs());
+            if !same(x.slope_n_per_s, y.slope_n_per_s) || !same(x.alpha_per_s2, y.alpha_per_s2) {
+                return false;
+            }
+            // y started τ0 seconds after x: the same ramp if its start lies on x's curve.
+            let tau0 = if x.alpha_per_s2 != 0.0 {
+                (y.omega_per_s - x.omega_per_s) / x.alpha_per_s2
+            } else if x.omega_per_s == y.omega_per_s {
+                (y.tension_n - x.tension_n) / x.slope_n_per_s
+            } else {
+                return false;
+            };
+            let close = |p: f64, q: f64, scale: f64| (p - q).abs() <= 1e-12 * scale;
+            let turn = x.omega_per_s * tau0 + 0.5 * x.alpha_per_s2 * tau0 * tau0;
+            close(x.tension_n + x.slope_n_per_s * tau0, y.tension_n, y.tension_n.abs())
+                && close(x.omega_per_s + x.alpha_per_s2 * tau0, y.omega_per_s, y.omega_per_s.abs().max(1e-300))
+                && close(x.theta_a_rad - turn, y.theta_a_rad, 1.0 + y.theta_a_rad.abs())
+        }
+        (
+            Shape::Exp { base_n: b1, amp_n: a1, rate_per_rad: r1 },
+            Shape::Exp { base_n: b2, amp_n: a2, rate_per_rad: r2 },
+        ) => {
+            if b1 != b2 || r1 != r2 {
+                return false;
+            }
+            if r1 == 0.0 {
+                return b1 + a1 == b2 + a2;
+            }
+            let predicted = a1 * (r1 * (b.theta0_rad - a.theta0_rad)).exp();
+            (predicted - a2).abs() <= 1e-14 * a2.abs()
+        }
+        _ => false,
+    }
+}

@@ -1,0 +1,365 @@
+//! The state of the rigid-lining model: the tension the rope holds over the wrap, as exact
+//! pieces carried by the pulley.
+//!
+//! A stuck rope on a rigid lining keeps its tension and moves with the pulley surface, so the
+//! pieces are stored in the pulley's material coordinate `ξ = θ − φ` (φ: the pulley's turn since
+//! the state was last re-based). Advection then only changes φ, adds the rope that entered
+//! (one [`EntryRamp`](crate::wrap::EntryRamp) or constant piece) at the entry end and drops the
+//! rope that left at the other: O(1) per increment however many pieces the wrap holds. Pieces
+//! are contiguous and cover exactly `θ ∈ [0, α]`; their closed forms are those of
+//! [`crate::wrap::Shape`], so the state has no interpolation error.
+
+use crate::wrap::{Piece, Shape, TensionField};
+use std::collections::VecDeque;
+
+/// Shortest piece kept (rad; 2.5e-10 m of rope on a 2.5 m pulley): shorter ones are round-off
+/// of a coincidence of breakpoints, and are joined to a neighbour.
+pub const MIN_PIECE_RAD: f64 = 1e-10;
+
+/// |φ| beyond which the pieces are re-based to φ = 0 (keeps ξ = θ − φ exact to round-off of
+/// the wrap angle, however far the pulley has turned).
+const REBASE_RAD: f64 = 64.0;
+
+/// The tension the rope holds over the wrap.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Profile {
+    /// Pieces in material coordinates (`theta*` fields hold ξ), in increasing ξ.
+    pieces: VecDeque<Piece>,
+    /// For each piece, the m'v² at which it first reaches the Coulomb limit somewhere
+    /// ([`limit_centrifugal_n`], a lower bound): a rise of m'v² past it calls for a repair.
+    limits_n: VecDeque<f64>,
+    /// The pulley's turn φ (rad) since the pieces were last re-based: θ = ξ + φ.
+    phi_rad: f64,
+    wrap_angle_rad: f64,
+    mu: f64,
+}
+
+impl Profile {
+    /// A rope at uniform tension on a lining of friction coefficient `mu`.
+    pub fn uniform(wrap_angle_rad: f64, tension_n: f64, mu: f64) -> Self {
+        Self::from_field(&TensionField { pieces: vec![Piece::constant(0.0, wrap_angle_rad, tension_n)] }, mu)
+    }
+
+    /// The state holding a field (its pieces, over [0, α]).
+    pub fn from_field(field: &TensionField, mu: f64) -> Self {
+        let wrap_angle_rad = field.wrap_angle_rad();
+        let pieces: VecDeque<Piece> = field.pieces.iter().copied().filter(|p| p.len_rad() > 0.0).collect();
+        let limits_n = pieces.iter().map(|p| limit_centrifugal_n(p, mu)).collect();
+        Self { pieces, limits_n, phi_rad: 0.0, wrap_angle_rad, mu }
+    }
+
+    /// The friction coefficient the profile is admissible for.
+    pub fn mu(&self) -> f64 {
+        self.mu
+    }
+
+    /// [`limit_centrifugal_n`] of piece `i`.
+    pub fn limit_n(&self, i: usize) -> f64 {
+        self.limits_n[i]
+    }
+
+    pub fn wrap_angle_rad(&self) -> f64 {
+        self.wrap_angle_rad
+    }
+
+    /// Number of pieces.
+    pub fn len(&self) -> usize {
+        self.pieces.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.pieces.is_empty()
+    }
+
+    /// Piece `i` in θ (the wrap's frame), its ends snapped to exactly 0 and α at the ends.
+    pub fn piece(&self, i: usize) -> Piece {
+        debug_assert_eq!(self.pieces.len(), self.limits_n.len());
+        let mut p = self.pieces[i].shifted(self.phi_rad);
+        if i == 0 {
+            p.theta0_rad = 0.0;
+        }
+        if i + 1 == self.pieces.len() {
+            p.theta1_rad = self.wrap_angle_rad;
+        }
+        p
+    }
+
+    /// All pieces in θ order, in the wrap's frame.
+    pub fn pieces(&self) -> impl ExactSizeIterator<Item = Piece> + '_ {
+        (0..self.pieces.len()).map(|i| self.piece(i))
+    }
+
+    /// The state as a tension field over [0, α].
+    pub fn field(&self) -> TensionField {
+        TensionField { pieces: self.pieces().collect() }
+    }
+
+    /// Tension at θ (N).
+    pub fn tension_n(&self, theta_rad: f64) -> f64 {
+        let xi = theta_rad - self.phi_rad;
+        let i = self.pieces.partition_point(|p| p.theta1_rad < xi).min(self.pieces.len() - 1);
+        self.piece(i).tension_n(theta_rad)
+    }
+
+    /// Tension at the θ = 0 end and at the θ = α end.
+    pub fn end_tensions_n(&self) -> (f64, f64) {
+        let m = self.pieces.len();
+        (self.piece(0).tension_n(0.0), self.piece(m - 1).tension_n(self.wrap_angle_rad))
+    }
+
+    /// Replaces pieces `from..to` (θ frame, contiguous with their neighbours) by `items`.
+    pub fn replace(&mut self, from: usize, to: usize, items: &[Piece]) {
+        let phi = self.phi_rad;
+        let mu = self.mu;
+        let material = items.iter().map(|p| p.shifted(-phi));
+        if from == 0 && to <= self.pieces.len() {
+            // Near the front: pop and push there, leaving the rest in place.
+            for _ in 0..to {
+                self.pieces.pop_front();
+                self.limits_n.pop_front();
+            }
+            for (p, q) in material.zip(items).rev() {
+                self.pieces.push_front(p);
+                self.limits_n.push_front(limit_centrifugal_n(q, mu));
+            }
+        } else {
+            let tail: Vec<Piece> = self.pieces.drain(to..).collect();
+            let tail_limits: Vec<f64> = self.limits_n.drain(to..).collect();
+            self.pieces.truncate(from);
+            self.limits_n.truncate(from);
+            self.pieces.extend(material);
+            self.limits_n.extend(items.iter().map(|q| limit_centrifugal_n(q, mu)));
+            self.pieces.extend(tail);
+            self.limits_n.extend(tail_limits);
+        }
+    }
+
+    /// Replaces every piece by `items` (θ frame).
+    pub fn set(&mut self, items: &[Piece]) {
+        let m = self.pieces.len();
+        self.replace(0, m, items);
+    }
+
+    /// Moves the rope with the pulley by `delta_rad` (positive: towards θ = α). The rope that
+    /// entered is `entered` (θ frame after the move: `[0, Δ]` for Δ > 0, `[α + Δ, α]` for
+    /// Δ < 0); the rope carried beyond the far end leaves.
+    pub fn advect(&mut self, delta_rad: f64, entered: Piece) {
+        if delta_rad == 0.0 {
+            return;
+        }
+        self.phi_rad += delta_rad;
+        let phi = self.phi_rad;
+        let alpha = self.wrap_angle_rad;
+        let (lo, hi) = (-phi, alpha - phi);
+        let mut entered = entered.shifted(-phi);
+        if delta_rad > 0.0 {
+            // Leaves at θ = α: drop pieces beyond hi.
+            while self.pieces.len() > 1 && self.pieces.back().is_some_and(|p| p.theta0_rad >= hi) {
+                self.pieces.pop_back();
+                self.limits_n.pop_back();
+            }
+            if self.pieces.back().is_some_and(|p| p.theta0_rad >= hi) {
+                self.pieces.clear();
+                self.limits_n.clear();
+            }
+            if let Some(last) = self.pieces.back_mut() {
+                last.theta1_rad = hi;
+            }
+            entered.theta0_rad = lo;
+            match self.pieces.front() {
+                Some(first) => entered.theta1_rad = first.theta0_rad,
+                None => entered.theta1_rad = hi,
+            }
+            if !self.absorb_front(&entered) {
+                self.limits_n.push_front(limit_centrifugal_n(&entered, self.mu));
+                self.pieces.push_front(entered);
+            }
+        } else {
+            while self.pieces.len() > 1 && self.pieces.front().is_some_and(|p| p.theta1_rad <= lo) {
+                self.pieces.pop_front();
+                self.limits_n.pop_front();
+            }
+            if self.pieces.front().is_some_and(|p| p.theta1_rad <= lo) {
+                self.pieces.clear();
+                self.limits_n.clear();
+            }
+            if let Some(first) = self.pieces.front_mut() {
+                *first = first.restricted(lo, first.theta1_rad);
+            }
+            entered.theta1_rad = hi;
+            match self.pieces.back() {
+                Some(last) => entered.theta0_rad = last.theta1_rad,
+                None => entered.theta0_rad = lo,
+            }
+            if !self.absorb_back(&entered) {
+                self.limits_n.push_back(limit_centrifugal_n(&entered, self.mu));
+                self.pieces.push_back(entered);
+            }
+        }
+        self.drop_slivers();
+        if phi.abs() > REBASE_RAD {
+            self.rebase();
+        }
+    }
+
+    /// Joins the pieces near the two ends that continue one another's closed form (rope that
+    /// entered during one ramp of the end tension over several increments), looking at the
+    /// first and last few pairs: only there do pieces enter or change.
+    pub fn merge_ends(&mut self) {
+        for _ in 0..2 {
+            for i in [0, 1, 2] {
+                self.merge_pair(i);
+            }
+            let m = self.pieces.len();
+            for i in [m.saturating_sub(2), m.saturating_sub(3), m.saturating_sub(4)] {
+                self.merge_pair(i);
+            }
+        }
+    }
+
+    /// Joins pieces i and i + 1 when the second continues the first.
+    fn merge_pair(&mut self, i: usize) {
+        if i + 1 >= self.pieces.len() || !super::envelope::continues(&self.pieces[i], &self.pieces[i + 1]) {
+            return;
+        }
+        self.pieces[i].theta1_rad = self.pieces[i + 1].theta1_rad;
+        self.limits_n[i] = self.limits_n[i].min(self.limits_n[i + 1]);
+        self.pieces.remove(i + 1);
+        self.limits_n.remove(i + 1);
+    }
+
+    /// Extends the first piece over `p` (just in front of it) when both hold the same constant
+    /// (rope entering at a steady end tension).
+    fn absorb_front(&mut self, p: &Piece) -> bool {
+        match self.pieces.front_mut() {
+            Some(first) if same_constant(first, p) => {
+                first.theta0_rad = p.theta0_rad;
+                true
+            }
+            _ => false,
+        }
+    }
+
+    /// Extends the last piece over `p` (just behind it) when both hold the same constant.
+    fn absorb_back(&mut self, p: &Piece) -> bool {
+        match self.pieces.back_mut() {
+            Some(last) if same_constant(last, p) => {
+                last.theta1_rad = p.theta1_rad;
+                true
+            }
+            _ => false,
+        }
+    }
+
+    /// Merges pieces shorter than [`MIN_PIECE_RAD`] at the two ends into their neighbours.
+    fn drop_slivers(&mut self) {
+        while self.pieces.len() > 1 && self.pieces.front().is_some_and(|p| p.len_rad() < MIN_PIECE_RAD) {
+            let lo = self.pieces[0].theta0_rad;
+            self.pieces.pop_front();
+            self.limits_n.pop_front();
+            let first = &mut self.pieces[0];
+            *first = first.restricted(lo, first.theta1_rad);
+        }
+        while self.pieces.len() > 1 && self.pieces.back().is_some_and(|p| p.len_rad() < MIN_PIECE_RAD) {
+            let hi = self.pieces[self.pieces.len() - 1].theta1_rad;
+            self.pieces.pop_back();
+            self.limits_n.pop_back();
+            if let Some(last) = self.pieces.back_mut() {
+                last.theta1_rad = hi;
+            }
+        }
+    }
+
+    /// Moves the material origin to the wrap's: φ = 0 (O(pieces), once every [`REBASE_RAD`]).
+    fn rebase(&mut self) {
+        let phi = self.phi_rad;
+        for p in self.pieces.iter_mut() {
+            *p = p.shifted(phi);
+        }
+        self.phi_rad = 0.0;
+    }
+}
+
+/// A lower bound of the m'v² at which a piece first reaches the Coulomb limit,
+/// `min over the piece of T − |q|/μ` (u = |q|/(μ(T − c)) = 1 there): exact for exponentials (the
+/// bound is monotone over them, so an end), the smaller of the ends and the interior turning
+/// point for an entry ramp.
+pub fn limit_centrifugal_n(piece: &Piece, mu: f64) -> f64 {
+    let at = |theta: f64| {
+        let (t, q) = piece.tension_friction(theta);
+        t - q.abs() / mu
+    };
+    let ends = at(piece.theta0_rad).min(at(piece.theta1_rad));
+    match piece.shape {
+        Shape::Entry(r) if r.alpha_per_s2 != 0.0 && r.slope_n_per_s != 0.0 => {
+            // d/dτ [T − |s|/(μ|ω|)] = s + |s| σ ε/(μ ω²) vanishes at |ω| = √(|ε|/μ) when
+            // −sign(s) σ ε > 0 (σ the sign of ω).
+            let sigma = if r.omega_per_s != 0.0 { r.omega_per_s.signum() } else { r.alpha_per_s2.signum() };
+            let (s, e) = (r.slope_n_per_s, r.alpha_per_s2);
+            if -s.signum() * sigma * e > 0.0 {
+                let w = sigma * (e.abs() / mu).sqrt();
+                let tau = (w - r.omega_per_s) / e;
+                let theta = r.theta_a_rad - (r.omega_per_s * tau + 0.5 * e * tau * tau);
+                let (lo, hi) = (piece.theta0_rad.min(piece.theta1_rad), piece.theta1_rad.max(piece.theta0_rad));
+                if theta > lo && theta < hi {
+                    return ends.min(at(theta));
+                }
+            }
+            ends
+        }
+        _ => ends,
+    }
+}
+
+/// Whether two pieces hold the same constant tension.
+fn same_constant(a: &Piece, b: &Piece) -> bool {
+    match (a.shape, b.shape) {
+        (
+            Shape::Exp { base_n: b1, amp_n: a1, rate_per_rad: r1 },
+            Shape::Exp { base_n: b2, amp_n: a2, rate_per_rad: r2 },
+        ) => r1 == 0.0 && r2 == 0.0 && b1 + a1 == b2 + a2,
+        _ => false,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn advection_keeps_the_stuck_profile_and_enters_new_rope() {
+        let alpha = 3.0;
+        let mut p = Profile::from_field(
+            &TensionField {
+                pieces: vec![Piece::constant(0.0, 1.0, 10.0), Piece::exponential(1.0, 3.0, 0.0, 10.0, -0.25)],
+            },
+            0.25,
+        );
+        p.advect(0.5, Piece::constant(0.0, 0.5, 12.0));
+        assert_eq!(p.len(), 3);
+        assert_eq!(p.tension_n(0.25), 12.0);
+        assert_eq!(p.tension_n(1.25), 10.0);
+        // The exponential moved by 0.5 rad: T(θ) = 10 e^{−0.25 (θ − 1.5)}.
+        let expected = 10.0 * (-0.25_f64 * (2.5 - 1.5)).exp();
+        assert!((p.tension_n(2.5) - expected).abs() < 1e-12);
+        assert_eq!(p.piece(p.len() - 1).theta1_rad, alpha);
+        // Back again: the entered constant leaves at θ = 0, the rope re-enters at θ = α.
+        p.advect(-0.5, Piece::constant(2.5, 3.0, 7.0));
+        assert_eq!(p.tension_n(0.5), 10.0);
+        assert_eq!(p.tension_n(2.9), 7.0);
+        assert_eq!(p.piece(0).theta0_rad, 0.0);
+    }
+
+    #[test]
+    fn a_constant_entering_behind_the_same_constant_adds_no_piece() {
+        let mut p = Profile::uniform(3.0, 10.0, 0.25);
+        for _ in 0..100 {
+            p.advect(0.01, Piece::constant(0.0, 0.01, 10.0));
+        }
+        assert_eq!(p.len(), 1);
+        for _ in 0..100 {
+            p.advect(-0.01, Piece::constant(2.99, 3.0, 10.0));
+        }
+        assert_eq!(p.len(), 1);
+    }
+}

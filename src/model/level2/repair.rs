@@ -1,0 +1,288 @@
+//! Stuck rope that a rise of m'v² puts beyond the Coulomb limit (docs/physics.md, level 2).
+//!
+//! A rise of m'v² lowers the contact force `n = T − m'v²` of stuck rope that keeps its
+//! tension. Where the rope held friction at (or near) the limit, `|dT/dθ| > μ(T − m'v²)` then:
+//! that stretch must slip. A stretch at an end, or next to rope at the limit of the other sign,
+//! slips from that side at the limit until it meets stuck rope, as a slip zone grows from an
+//! end. A stretch inside the wrap, between stuck rope, slips into one zone
+//! `[a, b] ⊇ [p, r]` at the limit,
+//!
+//! ```text
+//! T(θ) = m'v² + (T_o(a) − m'v²) e^{κμ(θ − a)}      (κ = −1 for positive friction, +1 reverse)
+//! T(b) = T_o(b),      ∫_a^b (T − T_o) dθ = 0
+//! ```
+//!
+//! The last condition is the rope's compatibility: the stuck rope at `a` and `b` does not move
+//! on the lining, so the rope between them keeps its length, `∫ ΔT/EA ds = 0`. The zone is
+//! found by Newton's method on (a, b) from the violated stretch. It depends only on the profile
+//! before the rise and on the new m'v² (the compatibility integral telescopes over any sequence
+//! of rises), so the path m'v² takes to its value does not matter.
+
+use super::profile::{MIN_PIECE_RAD, Profile};
+use crate::contact::ContactLaw;
+use crate::roots::{RootStats, bracketed};
+use crate::wrap::Piece;
+
+/// Utilization above which stuck rope counts as beyond the limit (round-off of exact pieces
+/// at the limit stays below).
+const BEYOND: f64 = 1.0 + 1e-12;
+
+/// Newton iterations of one zone (it converges in a handful from the violated stretch).
+const MAX_NEWTON: usize = 60;
+
+/// Repairs the stretches of `profile` beyond the limit at m'v² = `c` that lie between stuck
+/// rope; returns how many it repaired.
+pub fn repair(profile: &mut Profile, c: f64, mu: f64, stats: &mut RootStats) -> u64 {
+    let m = profile.len();
+    if m < 2 {
+        return 0;
+    }
+    let law = ContactLaw::new(mu, c);
+    let mut last = profile.len();
+    let mut repaired = 0;
+    let mut i = 0;
+    while i < last {
+        if profile.limit_n(i) >= c {
+            i += 1;
+            continue;
+        }
+        let Some((p, sign)) = violated_start(&profile.piece(i), &law, stats) else {
+            i += 1;
+            continue;
+        };
+        // Extend over the following pieces beyond the limit with the same sign of friction.
+        let mut j = i;
+        let mut r = violated_end(&profile.piece(j), &law, stats).unwrap_or(profile.piece(j).theta1_rad);
+        while j + 1 < last && r >= profile.piece(j).theta1_rad {
+            let next = profile.piece(j + 1);
+            match violated_start(&next, &law, stats) {
+                Some((start, s)) if s == sign && start <= next.theta0_rad => {
+                    j += 1;
+                    r = violated_end(&next, &law, stats).unwrap_or(next.theta1_rad);
+                }
+                _ => break,
+            }
+        }
+        if r - p < MIN_PIECE_RAD {
+            // A sliver beyond the limit by round-off of its own ends: nothing to slip.
+            i = j + 1;
+            continue;
+        }
+        let kappa = if sign { -1.0 } else { 1.0 };
+        let zone = Zone { p, r, kappa, mu, c };
+        let (a, b) = zone.solve(profile, i, j, stats);
+        let piece = Piece::exponential(a, b, c, profile.tension_n(a) - c, kappa * mu);
+        let before = profile.len();
+        splice(profile, a, b, piece);
+        last = (last + profile.len()).saturating_sub(before);
+        repaired += 1;
+        // Go on from the piece holding b: the rest of a stretch the zone cut may still be
+        // beyond the limit (the zone itself is not: it is at the new m'v²).
+        i = profile_index(profile, b);
+    }
+    repaired
+}
+
+/// One stretch beyond the limit, `[p, r]`, with friction of sign −κ, at m'v² = `c`.
+struct Zone {
+    p: f64,
+    r: f64,
+    kappa: f64,
+    mu: f64,
+    c: f64,
+}
+
+impl Zone {
+    /// The zone it slips into. Between stuck rope on both sides: the compatible zone of the
+    /// module doc. Where a side borders an end or rope at the limit (which slips itself, so
+    /// no compatibility holds there), or the compatible zone would reach an end: the zone
+    /// starts at that side, `T_z = T_o` there, and runs at the limit until it meets the stuck
+    /// rope on the other side — as a slip zone grows from an end. When neither side is
+    /// stuck, or the compatible zone cannot be found, it starts from the high-tension side.
+    fn solve(&self, profile: &Profile, i: usize, j: usize, stats: &mut RootStats) -> (f64, f64) {
+        let stuck = |k: Option<usize>| k.is_some_and(|k| !is_line(&profile.piece(k), self.mu));
+        let left_stuck = self.p > 0.0 && stuck(i.checked_sub(1).filter(|_| profile.piece(i).theta0_rad >= self.p));
+        let right_stuck = self.r < profile.wrap_angle_rad()
+            && stuck(Some(j + 1).filter(|&k| k < profile.len() && profile.piece(j).theta1_rad <= self.r));
+        let left_inside = self.p > profile.piece(i).theta0_rad;
+        let right_inside = self.r < profile.piece(j).theta1_rad;
+        let (left_ok, right_ok) = (left_stuck || left_inside, right_stuck || right_inside);
+        if left_ok && right_ok {
+            if let Some(zone) = self.compatible(profile) {
+                return zone;
+            }
+        }
+        let alpha = profile.wrap_angle_rad();
+        let from_left = match (left_ok, right_ok) {
+            // A stretch at an end starts there: the end's tension holds it.
+            _ if self.p <= 0.0 && self.r < alpha => true,
+            _ if self.r >= alpha && self.p > 0.0 => false,
+            (true, false) => false,
+            (false, true) => true,
+            // Neither or both: the high-tension side (left for positive friction).
+            _ => self.kappa < 0.0,
+        };
+        self.one_sided(profile, from_left, stats)
+    }
+
+    /// The compatible zone by Newton's method on (a, b):
+    /// `F1 = T_z(b) − T_o(b)`, `F2 = ∫_a^b (T_z − T_o) dθ`; `None` when it would reach an end.
+    fn compatible(&self, profile: &Profile) -> Option<(f64, f64)> {
+        let Zone { p, r, kappa, mu, c } = *self;
+        let alpha = profile.wrap_angle_rad();
+        let km = kappa * mu;
+        let (mut a, mut b) = (p, r);
+        for _ in 0..MAX_NEWTON {
+            let na = profile.tension_n(a) - c;
+            // Slopes of the stuck rope outside the zone: left of a, right of b.
+            let (ta_slope, tb_slope) = (slope(profile, a, false), slope(profile, b, true));
+            let e = (km * (b - a)).exp();
+            let tz_b = c + na * e;
+            let f1 = tz_b - profile.tension_n(b);
+            let f2 = c * (b - a) + na * (e - 1.0) / km - integral(profile, a, b);
+            let g = ta_slope - km * na;
+            let (j11, j12) = (e * g, km * (tz_b - c) - tb_slope);
+            // ∂F2/∂a = g (e − 1)/κμ, ∂F2/∂b = T_z(b) − T_o(b) = F1.
+            let (j21, j22) = (g * (e - 1.0) / km, f1);
+            let det = j11 * j22 - j12 * j21;
+            if !det.is_finite() || det == 0.0 {
+                return None;
+            }
+            let da = (f1 * j22 - j12 * f2) / det;
+            let db = (j11 * f2 - j21 * f1) / det;
+            let (a_new, b_new) = ((a - da).min(p), (b - db).max(r));
+            let done = (a_new - a).abs() <= 1e-15 * alpha && (b_new - b).abs() <= 1e-15 * alpha;
+            (a, b) = (a_new, b_new);
+            if a <= 0.0 || b >= alpha {
+                return None;
+            }
+            if done {
+                return Some((a, b));
+            }
+        }
+        None
+    }
+
+    /// The zone starting at p (`from_left`) or ending at r, at the limit until it meets the
+    /// stuck rope (or the end of the wrap). Beyond the stretch the limit line lies on the far
+    /// side of the stuck rope (`gap > 0` going right from p for positive friction, and so on),
+    /// so the zone ends at the first breakpoint past which the gap has changed sign.
+    fn one_sided(&self, profile: &Profile, from_left: bool, stats: &mut RootStats) -> (f64, f64) {
+        let Zone { p, r, kappa, mu, c } = *self;
+        let alpha = profile.wrap_angle_rad();
+        let km = kappa * mu;
+        let pin = if from_left { p } else { r };
+        let n_pin = profile.tension_n(pin) - c;
+        // T_z − T_o, signed so that it is positive inside the zone.
+        let sign = if from_left { -kappa } else { kappa };
+        let gap = |t: f64| sign * (c + n_pin * (km * (t - pin)).exp() - profile.tension_n(t));
+        let m = profile.len();
+        if from_left {
+            let mut lo = r;
+            for k in profile_index(profile, r)..m {
+                let hi = profile.piece(k).theta1_rad.min(alpha);
+                if hi > lo && gap(hi) <= 0.0 {
+                    let b = if gap(lo) > 0.0 { bracketed(gap, lo, hi, 1e-15, stats).unwrap_or(hi) } else { lo };
+                    return (p, b);
+                }
+                lo = hi.max(lo);
+            }
+            (p, alpha)
+        } else {
+            let mut hi = p;
+            for k in (0..=profile_index(profile, p)).rev() {
+                let lo = profile.piece(k).theta0_rad.max(0.0);
+                if hi > lo && gap(lo) <= 0.0 {
+                    let a = if gap(hi) > 0.0 { bracketed(gap, lo, hi, 1e-15, stats).unwrap_or(lo) } else { hi };
+                    return (a, r);
+                }
+                hi = lo.min(hi);
+            }
+            (0.0, r)
+        }
+    }
+}
+
+/// Whether a piece is an exponential of the contact force at the limit (|k| = μ).
+fn is_line(p: &Piece, mu: f64) -> bool {
+    matches!(p.shape, crate::wrap::Shape::Exp { rate_per_rad, .. } if rate_per_rad.abs() == mu)
+}
+
+/// Where the stretch beyond the limit on a piece starts, and the sign of its friction (true:
+/// positive), if any of it is beyond.
+fn violated_start(piece: &Piece, law: &ContactLaw, stats: &mut RootStats) -> Option<(f64, bool)> {
+    let (a, b) = (piece.theta0_rad, piece.theta1_rad);
+    let (ua, ub) = (law.utilization_unclamped(piece, a), law.utilization_unclamped(piece, b));
+    let sign = piece.friction_positive();
+    match (ua > BEYOND, ub > BEYOND) {
+        (true, _) => Some((a, sign)),
+        (false, true) => {
+            let t = bracketed(|t| law.utilization_unclamped(piece, t) - BEYOND, a, b, 1e-15, stats).ok()?;
+            Some((t, sign))
+        }
+        _ => None,
+    }
+}
+
+/// Where the stretch beyond the limit on a piece ends, if it ends inside the piece.
+fn violated_end(piece: &Piece, law: &ContactLaw, stats: &mut RootStats) -> Option<f64> {
+    let (a, b) = (piece.theta0_rad, piece.theta1_rad);
+    let (ua, ub) = (law.utilization_unclamped(piece, a), law.utilization_unclamped(piece, b));
+    (ua > BEYOND && ub <= BEYOND)
+        .then(|| bracketed(|t| law.utilization_unclamped(piece, t) - BEYOND, a, b, 1e-15, stats).ok())
+        .flatten()
+}
+
+/// dT/dθ of the profile at θ, from the piece to its right (`right`) or left at a breakpoint.
+fn slope(profile: &Profile, theta: f64, right: bool) -> f64 {
+    let mut i = profile_index(profile, theta);
+    if right && i + 1 < profile.len() && profile.piece(i).theta1_rad <= theta {
+        i += 1;
+    }
+    -profile.piece(i).friction_n_per_rad(theta)
+}
+
+/// ∫_a^b T dθ over the profile (N·rad).
+fn integral(profile: &Profile, a: f64, b: f64) -> f64 {
+    let (i, j) = (profile_index(profile, a), profile_index(profile, b));
+    (i..=j)
+        .map(|k| {
+            let p = profile.piece(k);
+            p.integral_n_rad(a.max(p.theta0_rad), b.min(p.theta1_rad))
+        })
+        .sum()
+}
+
+/// Index of the piece holding θ.
+fn profile_index(profile: &Profile, theta: f64) -> usize {
+    let m = profile.len();
+    let (mut lo, mut hi) = (0, m - 1);
+    while lo < hi {
+        let mid = (lo + hi) / 2;
+        if profile.piece(mid).theta1_rad < theta { lo = mid + 1 } else { hi = mid }
+    }
+    lo
+}
+
+/// Puts `zone` over [a, b], cutting the pieces it overlaps.
+fn splice(profile: &mut Profile, a: f64, b: f64, zone: Piece) {
+    let (i, j) = (profile_index(profile, a), profile_index(profile, b));
+    let (pi, pj) = (profile.piece(i), profile.piece(j));
+    let mut items = Vec::with_capacity(3);
+    if a - pi.theta0_rad > MIN_PIECE_RAD {
+        items.push(pi.restricted(pi.theta0_rad, a));
+    }
+    items.push(zone);
+    if pj.theta1_rad - b > MIN_PIECE_RAD {
+        items.push(pj.restricted(b, pj.theta1_rad));
+    }
+    let first = items.first().map_or(a, |p| p.theta0_rad);
+    let last = items.last().map_or(b, |p| p.theta1_rad);
+    if let Some(p) = items.first_mut() {
+        p.theta0_rad = first.min(pi.theta0_rad);
+    }
+    if let Some(p) = items.last_mut() {
+        p.theta1_rad = last.max(pj.theta1_rad);
+    }
+    profile.replace(i, j + 1, &items);
+}
