@@ -233,6 +233,7 @@ fn bench_command(args: BenchArgs) -> anyhow::Result<()> {
         println!("{}", wrapcalc::bench::probe(&options, spec)?.map_or_else(|| "-".into(), |kb| kb.to_string()));
         return Ok(());
     }
+    refuse_foreign(&args.out)?;
     let rows = wrapcalc::bench::run(&options, &mut |r| {
         if !args.quiet {
             eprintln!("{}", wrapcalc::bench::output::progress_line(r));
@@ -258,16 +259,17 @@ fn sweep_command(args: SweepArgs) -> anyhow::Result<()> {
         shard,
     };
     let grid = sweep::grid::Grid::parse(&spec.vary)?;
-    let points = shard.map_or(0..grid.points(), |s| s.range(grid.points()));
-    let bar = progress_bar(points.end - points.start, args.quiet);
-    let file = sweep::sweep(&args.sheet, &spec, &|n| bar.inc(n));
-    bar.finish_and_clear();
-    let file = file?;
     let out_dir = args.out.unwrap_or_else(|| {
         let mut dir = default_out_dir(&args.sheet).into_os_string();
         dir.push("-sweep");
         PathBuf::from(dir)
     });
+    refuse_foreign(&out_dir)?;
+    let points = shard.map_or(0..grid.points(), |s| s.range(grid.points()));
+    let bar = progress_bar(points.end - points.start, args.quiet);
+    let file = sweep::sweep(&args.sheet, &spec, &|n| bar.inc(n));
+    bar.finish_and_clear();
+    let file = file?;
     let written = sweep::write(&out_dir, &sweep::csv_name(shard), &file, !args.no_plots && shard.is_none())?;
     if !args.quiet {
         let failing = file.rows.iter().filter(|r| r.flag("checks_pass") != Some(true)).count();
@@ -288,6 +290,7 @@ fn sweep_command(args: SweepArgs) -> anyhow::Result<()> {
 }
 
 fn merge_command(args: MergeArgs) -> anyhow::Result<()> {
+    refuse_foreign(&args.out)?;
     let file = sweep::merge::merge(&args.shards)?;
     let written = sweep::write(&args.out, sweep::SWEEP_CSV, &file, !args.no_plots)?;
     if !args.quiet {
@@ -317,8 +320,9 @@ fn run_command(args: RunArgs) -> anyhow::Result<bool> {
     let forced_level = args.model.level.forced();
     let options =
         Options { request: Request::Full { forced_level }, nodes: args.model.nodes, solver: args.solver.into() };
-    let result = run::run(&design, &scenes, options)?;
     let out_dir = args.out.clone().unwrap_or_else(|| default_out_dir(&args.sheet));
+    refuse_foreign(&out_dir)?;
+    let result = run::run(&design, &scenes, options)?;
     let summary = Summary::of(&design, &result);
     report::write(&out_dir, &summary, &result, report::ReportOptions { plots: !args.no_plots })?;
     print_result(&design, &result, args.format, args.quiet);
@@ -326,6 +330,12 @@ fn run_command(args: RunArgs) -> anyhow::Result<bool> {
         println!("report written to {}", out_dir.display());
     }
     Ok(result.all_checks_pass())
+}
+
+/// Refuses at once, before any work, an output path wrapcalc may not write a report to (a file,
+/// or a directory with content that is not a wrapcalc report); the writers check it again.
+fn refuse_foreign(out_dir: &Path) -> Result<(), report::ReportError> {
+    report::target::check(&report::target::resolve(out_dir)).map(|_| ())
 }
 
 fn default_out_dir(sheet: &Path) -> PathBuf {
