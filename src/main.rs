@@ -322,7 +322,7 @@ fn run_command(args: RunArgs) -> anyhow::Result<bool> {
         Options { request: Request::Full { forced_level }, nodes: args.model.nodes, solver: args.solver.into() };
     let out_dir = args.out.clone().unwrap_or_else(|| default_out_dir(&args.sheet));
     refuse_foreign(&out_dir)?;
-    let result = run::run(&design, &scenes, options)?;
+    let result = run::run(&design, &scenes, options).map_err(|e| anyhow::anyhow!("{}: {e}", design.sheet))?;
     let summary = Summary::of(&design, &result);
     report::write(&out_dir, &summary, &result, report::ReportOptions { plots: !args.no_plots })?;
     print_result(&design, &result, args.format, args.quiet);
