@@ -89,6 +89,9 @@ struct ModelArgs {
     /// Number of wrap nodes of the output grid / discrete levels.
     #[arg(long, default_value_t = run::DEFAULT_NODES)]
     nodes: usize,
+    /// Refuse, before it starts, a scene whose estimated run time on one core exceeds this.
+    #[arg(long, value_name = "SECONDS", default_value_t = wrapcalc::cost::DEFAULT_LIMIT_S)]
+    cost_limit_s: u64,
 }
 
 #[derive(clap::Args)]
@@ -255,7 +258,12 @@ fn sweep_command(args: SweepArgs) -> anyhow::Result<()> {
     let spec = sweep::Spec {
         vary: args.vary.clone(),
         scenes: args.scenes.clone(),
-        options: Options { request: Request::Full { forced_level }, nodes: args.model.nodes, ..Options::default() },
+        options: Options {
+            request: Request::Full { forced_level },
+            nodes: args.model.nodes,
+            cost_limit_s: args.model.cost_limit_s,
+            ..Options::default()
+        },
         shard,
     };
     let grid = sweep::grid::Grid::parse(&spec.vary)?;
@@ -314,15 +322,46 @@ fn progress_bar(len: u64, quiet: bool) -> indicatif::ProgressBar {
     bar
 }
 
+/// Runs estimated to take at least this long (s, one core) show a progress bar on a terminal.
+const LONG_RUN_S: f64 = 2.0;
+
+/// The bar of a `run`: the estimated work (ms on one core) done by the finished scenes, with
+/// the elapsed time; hidden for a short run, with --quiet, NO_COLOR or when stderr is not a
+/// terminal.
+fn run_bar(estimated_s: f64, quiet: bool) -> indicatif::ProgressBar {
+    if estimated_s < LONG_RUN_S || quiet || !styled(std::io::stderr().is_terminal()) {
+        return indicatif::ProgressBar::hidden();
+    }
+    let bar = indicatif::ProgressBar::new((estimated_s * 1e3).ceil() as u64);
+    let template = format!(
+        "{{bar:40}} {{percent}}% of the estimated {}, {{elapsed}}",
+        wrapcalc::cost::human_duration(estimated_s)
+    );
+    if let Ok(style) = indicatif::ProgressStyle::with_template(&template) {
+        bar.set_style(style);
+    }
+    bar.enable_steady_tick(std::time::Duration::from_millis(200));
+    bar
+}
+
 fn run_command(args: RunArgs) -> anyhow::Result<bool> {
     let design = sheet::load(&args.sheet)?;
     let scenes = design.select_scenes(&args.scenes).map_err(|e| anyhow::anyhow!("{}: {e}", design.sheet))?;
     let forced_level = args.model.level.forced();
-    let options =
-        Options { request: Request::Full { forced_level }, nodes: args.model.nodes, solver: args.solver.into() };
+    let options = Options {
+        request: Request::Full { forced_level },
+        nodes: args.model.nodes,
+        solver: args.solver.into(),
+        cost_limit_s: args.model.cost_limit_s,
+    };
     let out_dir = args.out.clone().unwrap_or_else(|| default_out_dir(&args.sheet));
     refuse_foreign(&out_dir)?;
-    let result = run::run(&design, &scenes, options).map_err(|e| anyhow::anyhow!("{}: {e}", design.sheet))?;
+    let in_sheet = |e: run::RunError| anyhow::anyhow!("{}: {e}", design.sheet);
+    let estimated_s: f64 = run::estimate(&design, &scenes, options).map_err(in_sheet)?.iter().map(|e| e.seconds).sum();
+    let bar = run_bar(estimated_s, args.quiet);
+    let result = run::run_with_progress(&design, &scenes, options, &|s| bar.inc((s * 1e3) as u64));
+    bar.finish_and_clear();
+    let result = result.map_err(in_sheet)?;
     let summary = Summary::of(&design, &result);
     report::write(&out_dir, &summary, &result, report::ReportOptions { plots: !args.no_plots })?;
     print_result(&design, &result, args.format, args.quiet);

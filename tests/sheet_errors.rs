@@ -216,6 +216,11 @@ fn cases() -> Vec<Case> {
             expect: &["scene[3].emergency_stop_s", "after the motion profile ends at 10.5 s"],
         },
         Case {
+            label: "duty-cycle: a time step that would take hours",
+            input: duty_cycle("time_step_s = 1e-9\n"),
+            expect: &["scene \"d\": refused before running", "h on one core", "time_step_s = 0.000000001 s", "--cost-limit-s"],
+        },
+        Case {
             label: "lining: no stiffness",
             input: Input::Text(format!("{VALID}\n[lining]\nrope_inertia = true\n")),
             expect: &["lining.shear_stiffness_n_per_m2", "missing"],

@@ -132,6 +132,7 @@ fn run_samples(
         Some(r) => Initial::Rolling { level1: r, first, direction },
     };
     let run = wrap_history(design, scene, &result.plan, samples, output, initial, options)?;
+    crate::tally::add_increments(run.stats.increments);
     let mut snapshots: Vec<level2::Snapshot> = run.snapshots;
     let last = snapshots.pop();
     result.snapshots = snapshots.into_iter().map(|s| s.distribution).collect();
