@@ -28,17 +28,22 @@ pub struct CreepFit {
     pub active_arc_deg: f64,
     /// Fitted tension of the idle arc, N per rope.
     pub idle_tension_n: f64,
-    /// Friction in the fitted active arc: "positive" or "reverse".
+    /// Friction in the fitted active arc: "positive" or "reverse" ("none" for a uniform field).
     pub friction: &'static str,
     /// Where the rope enters the wrap in the fitted picture: "side 1" (θ = 0) or "side 2".
     pub entry: &'static str,
     /// Root mean square of T − T_fit over the distribution's samples, N.
     pub rms_residual_n: f64,
-    /// The same relative to the range of the tension over the wrap, max T − min T (or to T when
-    /// it is uniform): 0 is exactly the classical picture.
+    /// The same relative to the range of the tension over the wrap, max T − min T: 0 is exactly
+    /// the classical picture. A field uniform to round-off is the classical picture with no
+    /// active arc, exactly: 0, with the reason in `note` (a residual divided by a round-off
+    /// range would say nothing).
     pub rms_residual_rel: f64,
+    /// Why the fit is degenerate, when it is (a uniform field); absent otherwise.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub note: Option<String>,
     pub iterations: u64,
-    /// argmin's termination reason.
+    /// argmin's termination reason ("not run: nothing to fit" for a uniform field).
     pub termination: String,
 }
 
@@ -104,6 +109,9 @@ pub fn creep_fit(d: &Distribution, centrifugal_n: f64, entry_side1: Option<bool>
     if d.samples.len() < 3 {
         return Err(FitError::TooFewSamples);
     }
+    if let Some(uniform) = uniform_fit(d, entry_side1) {
+        return Ok(uniform);
+    }
     let theta_rad: Vec<f64> = d.samples.iter().map(|s| s.theta_deg.to_radians()).collect();
     let y_n: Vec<f64> = d.samples.iter().map(|s| s.tension_n - centrifugal_n).collect();
     let alpha_rad = d.wrap_angle_deg.to_radians();
@@ -143,11 +151,7 @@ pub fn creep_fit(d: &Distribution, centrifugal_n: f64, entry_side1: Option<bool>
     };
     let (a, r) = shape.solve(beta);
     let rms = (r / y_n.len() as f64).sqrt();
-    let (lo, hi) = d
-        .samples
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), s| (lo.min(s.tension_n), hi.max(s.tension_n)));
-    let scale = if hi > lo { hi - lo } else { hi.abs().max(f64::MIN_POSITIVE) };
+    let (lo, hi) = tension_range(d);
     // T decreasing along +θ is positive friction (dT/dθ = −q): entering at side 1 that is k < 0.
     let positive = (shape.k < 0.0) == shape.entry_side1;
     Ok(CreepFit {
@@ -156,8 +160,50 @@ pub fn creep_fit(d: &Distribution, centrifugal_n: f64, entry_side1: Option<bool>
         friction: if positive { "positive" } else { "reverse" },
         entry: if shape.entry_side1 { "side 1" } else { "side 2" },
         rms_residual_n: rms,
-        rms_residual_rel: rms / scale,
+        rms_residual_rel: rms / (hi - lo),
+        note: None,
         iterations,
         termination: TerminationReason::SolverConverged.text().to_string(),
+    })
+}
+
+/// A tension range at most this fraction of the tension is round-off, not a field to fit: the
+/// models carry tensions of about 1e5 N through thousands of increments, each rounding at
+/// about 1e-16 of them, so 1e-9 is far above what round-off reaches and far below any
+/// physical friction (a range of 1e-9 T is a friction utilization below 1e-8 over the wrap).
+pub const UNIFORM_RANGE_REL: f64 = 1e-9;
+
+/// Lowest and highest tension of a distribution (N).
+fn tension_range(d: &Distribution) -> (f64, f64) {
+    d.samples.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), s| (lo.min(s.tension_n), hi.max(s.tension_n)))
+}
+
+/// The fit of a field whose tension range is below round-off ([`UNIFORM_RANGE_REL`]): the
+/// classical picture with the whole wrap idle at the mean tension, β = 0. Its residual relative
+/// to the range is 0 with the reason in `note`; the absolute residual is the field's own
+/// round-off. `None` for a field with a real range.
+fn uniform_fit(d: &Distribution, entry_side1: Option<bool>) -> Option<CreepFit> {
+    let (lo, hi) = tension_range(d);
+    let scale = lo.abs().max(hi.abs());
+    if hi - lo > UNIFORM_RANGE_REL * scale {
+        return None;
+    }
+    let n = d.samples.len() as f64;
+    let mean = d.samples.iter().map(|s| s.tension_n).sum::<f64>() / n;
+    let rms = (d.samples.iter().map(|s| (s.tension_n - mean).powi(2)).sum::<f64>() / n).sqrt();
+    Some(CreepFit {
+        active_arc_deg: 0.0,
+        idle_tension_n: mean,
+        friction: "none",
+        entry: if entry_side1 == Some(false) { "side 2" } else { "side 1" },
+        rms_residual_n: rms,
+        rms_residual_rel: 0.0,
+        note: Some(format!(
+            "uniform field: the tension range over the wrap, {:.1e} N, is below round-off ({UNIFORM_RANGE_REL:e} of \
+             T = {mean:.1} N); creep theory fits it exactly with no active arc",
+            hi - lo
+        )),
+        iterations: 0,
+        termination: "not run: nothing to fit".into(),
     })
 }

@@ -12,6 +12,7 @@
 
 pub mod bench;
 pub mod contact;
+pub mod cost;
 pub mod derived;
 pub mod design;
 pub mod dynamics;
@@ -25,4 +26,5 @@ pub mod roots;
 pub mod run;
 pub mod sheet;
 pub mod sweep;
+pub mod tally;
 pub mod wrap;

@@ -89,6 +89,9 @@ struct ModelArgs {
     /// Number of wrap nodes of the output grid / discrete levels.
     #[arg(long, default_value_t = run::DEFAULT_NODES)]
     nodes: usize,
+    /// Refuse, before it starts, a scene whose estimated run time on one core exceeds this.
+    #[arg(long, value_name = "SECONDS", default_value_t = wrapcalc::cost::DEFAULT_LIMIT_S)]
+    cost_limit_s: u64,
 }
 
 #[derive(clap::Args)]
@@ -233,6 +236,7 @@ fn bench_command(args: BenchArgs) -> anyhow::Result<()> {
         println!("{}", wrapcalc::bench::probe(&options, spec)?.map_or_else(|| "-".into(), |kb| kb.to_string()));
         return Ok(());
     }
+    refuse_foreign(&args.out)?;
     let rows = wrapcalc::bench::run(&options, &mut |r| {
         if !args.quiet {
             eprintln!("{}", wrapcalc::bench::output::progress_line(r));
@@ -254,20 +258,26 @@ fn sweep_command(args: SweepArgs) -> anyhow::Result<()> {
     let spec = sweep::Spec {
         vary: args.vary.clone(),
         scenes: args.scenes.clone(),
-        options: Options { request: Request::Full { forced_level }, nodes: args.model.nodes, ..Options::default() },
+        options: Options {
+            request: Request::Full { forced_level },
+            nodes: args.model.nodes,
+            cost_limit_s: args.model.cost_limit_s,
+            ..Options::default()
+        },
         shard,
     };
     let grid = sweep::grid::Grid::parse(&spec.vary)?;
-    let points = shard.map_or(0..grid.points(), |s| s.range(grid.points()));
-    let bar = progress_bar(points.end - points.start, args.quiet);
-    let file = sweep::sweep(&args.sheet, &spec, &|n| bar.inc(n));
-    bar.finish_and_clear();
-    let file = file?;
     let out_dir = args.out.unwrap_or_else(|| {
         let mut dir = default_out_dir(&args.sheet).into_os_string();
         dir.push("-sweep");
         PathBuf::from(dir)
     });
+    refuse_foreign(&out_dir)?;
+    let points = shard.map_or(0..grid.points(), |s| s.range(grid.points()));
+    let bar = progress_bar(points.end - points.start, args.quiet);
+    let file = sweep::sweep(&args.sheet, &spec, &|n| bar.inc(n));
+    bar.finish_and_clear();
+    let file = file?;
     let written = sweep::write(&out_dir, &sweep::csv_name(shard), &file, !args.no_plots && shard.is_none())?;
     if !args.quiet {
         let failing = file.rows.iter().filter(|r| r.flag("checks_pass") != Some(true)).count();
@@ -288,6 +298,7 @@ fn sweep_command(args: SweepArgs) -> anyhow::Result<()> {
 }
 
 fn merge_command(args: MergeArgs) -> anyhow::Result<()> {
+    refuse_foreign(&args.out)?;
     let file = sweep::merge::merge(&args.shards)?;
     let written = sweep::write(&args.out, sweep::SWEEP_CSV, &file, !args.no_plots)?;
     if !args.quiet {
@@ -311,14 +322,46 @@ fn progress_bar(len: u64, quiet: bool) -> indicatif::ProgressBar {
     bar
 }
 
+/// Runs estimated to take at least this long (s, one core) show a progress bar on a terminal.
+const LONG_RUN_S: f64 = 2.0;
+
+/// The bar of a `run`: the estimated work (ms on one core) done by the finished scenes, with
+/// the elapsed time; hidden for a short run, with --quiet, NO_COLOR or when stderr is not a
+/// terminal.
+fn run_bar(estimated_s: f64, quiet: bool) -> indicatif::ProgressBar {
+    if estimated_s < LONG_RUN_S || quiet || !styled(std::io::stderr().is_terminal()) {
+        return indicatif::ProgressBar::hidden();
+    }
+    let bar = indicatif::ProgressBar::new((estimated_s * 1e3).ceil() as u64);
+    let template = format!(
+        "{{bar:40}} {{percent}}% of the estimated {}, {{elapsed}}",
+        wrapcalc::cost::human_duration(estimated_s)
+    );
+    if let Ok(style) = indicatif::ProgressStyle::with_template(&template) {
+        bar.set_style(style);
+    }
+    bar.enable_steady_tick(std::time::Duration::from_millis(200));
+    bar
+}
+
 fn run_command(args: RunArgs) -> anyhow::Result<bool> {
     let design = sheet::load(&args.sheet)?;
     let scenes = design.select_scenes(&args.scenes).map_err(|e| anyhow::anyhow!("{}: {e}", design.sheet))?;
     let forced_level = args.model.level.forced();
-    let options =
-        Options { request: Request::Full { forced_level }, nodes: args.model.nodes, solver: args.solver.into() };
-    let result = run::run(&design, &scenes, options)?;
+    let options = Options {
+        request: Request::Full { forced_level },
+        nodes: args.model.nodes,
+        solver: args.solver.into(),
+        cost_limit_s: args.model.cost_limit_s,
+    };
     let out_dir = args.out.clone().unwrap_or_else(|| default_out_dir(&args.sheet));
+    refuse_foreign(&out_dir)?;
+    let in_sheet = |e: run::RunError| anyhow::anyhow!("{}: {e}", design.sheet);
+    let estimated_s: f64 = run::estimate(&design, &scenes, options).map_err(in_sheet)?.iter().map(|e| e.seconds).sum();
+    let bar = run_bar(estimated_s, args.quiet);
+    let result = run::run_with_progress(&design, &scenes, options, &|s| bar.inc((s * 1e3) as u64));
+    bar.finish_and_clear();
+    let result = result.map_err(in_sheet)?;
     let summary = Summary::of(&design, &result);
     report::write(&out_dir, &summary, &result, report::ReportOptions { plots: !args.no_plots })?;
     print_result(&design, &result, args.format, args.quiet);
@@ -326,6 +369,12 @@ fn run_command(args: RunArgs) -> anyhow::Result<bool> {
         println!("report written to {}", out_dir.display());
     }
     Ok(result.all_checks_pass())
+}
+
+/// Refuses at once, before any work, an output path wrapcalc may not write a report to (a file,
+/// or a directory with content that is not a wrapcalc report); the writers check it again.
+fn refuse_foreign(out_dir: &Path) -> Result<(), report::ReportError> {
+    report::target::check(&report::target::resolve(out_dir)).map(|_| ())
 }
 
 fn default_out_dir(sheet: &Path) -> PathBuf {

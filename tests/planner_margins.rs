@@ -313,6 +313,74 @@ fn fit_recovers_creep_theory_parameters() {
     }
 }
 
+/// A distribution of 181 samples over α = 187.42° with the given tensions (N).
+fn field(tension_n: impl Fn(usize) -> f64) -> Distribution {
+    let samples = (0..=180)
+        .map(|i| Sample {
+            theta_deg: 187.42 * i as f64 / 180.0,
+            tension_n: tension_n(i),
+            normal_n_per_rad: tension_n(i),
+            friction_n_per_rad: 0.0,
+            utilization: 0.0,
+            state: NodeState::Stick,
+            slip_velocity_m_s: None,
+        })
+        .collect();
+    Distribution {
+        t_s: 0.0,
+        mu: 0.25,
+        wrap_angle_deg: 187.42,
+        samples,
+        zones: Vec::new(),
+        jdp_deg: None,
+        gross_slip: false,
+    }
+}
+
+/// A uniform field (2e5 N with round-off of ±3e-9 N, a range of 3e-14 of T) is creep theory's
+/// picture with no active arc, exactly: residual 0 with the reason, not a round-off residual
+/// divided by a round-off range; for either entry side and at rest.
+#[test]
+fn fit_of_a_uniform_field_reports_zero_residual_and_why() {
+    let d = field(|i| 2.0e5 + 3.0e-9 * (i as f64 * 1.7).sin());
+    for entry in [Some(true), Some(false), None] {
+        let f = creep_fit(&d, 0.0, entry).expect("fits");
+        assert_eq!((f.rms_residual_rel, f.active_arc_deg, f.friction), (0.0, 0.0, "none"), "{entry:?}");
+        assert!(f.note.as_deref().is_some_and(|n| n.contains("uniform field") && n.contains("round-off")), "{f:?}");
+        assert!(rel(f.idle_tension_n, 2.0e5) < 1e-12 && f.rms_residual_n < 3e-9, "{f:?}");
+    }
+    // Through a run: a history at constant, equal tensions, rolling either way (level 2).
+    for speed in [1.0, -1.0] {
+        let d = with_scenes(&format!(
+            "[[scene]]\nname = \"flat\"\nkind = \"history\"\nt_s = [0.0, 1.0, 2.0]\nt1_n = [2.0e5, 2.0e5, 2.0e5]\n\
+             t2_n = [2.0e5, 2.0e5, 2.0e5]\nspeed_m_s = [{speed:?}, {speed:?}, {speed:?}]\n"
+        ));
+        let r = run::run(&d, &[scene(&d, "flat")], Options::default()).expect("runs");
+        let f = r.scenes[0].fit.as_ref().expect("a fit");
+        assert_eq!(f.rms_residual_rel, 0.0, "speed {speed}: {f:?}");
+        assert!(f.note.is_some(), "speed {speed}");
+    }
+}
+
+/// A field with a small but real range is fitted as usual: at m'v² = T_idle − 1 N the creep arc
+/// of β = 37.123° changes the tension by (1 N)(1 − e^{−μβ}) = 0.15 N, 7.4e-7 of T (740 times
+/// the round-off bound). The fit finds β within 0.01° with no note, in both orientations.
+#[test]
+fn fit_of_a_field_just_above_round_off_is_a_real_fit() {
+    let (mu, t_idle, beta_deg) = (0.25f64, 2.0e5, 37.123f64);
+    let c = t_idle - 1.0;
+    for entry_side1 in [true, false] {
+        let d = field(|i| {
+            let theta_deg = 187.42 * i as f64 / 180.0;
+            let phi_deg = if entry_side1 { theta_deg - (187.42 - beta_deg) } else { beta_deg - theta_deg }.max(0.0);
+            c + (t_idle - c) * (-mu * phi_deg.to_radians()).exp()
+        });
+        let f = creep_fit(&d, c, Some(entry_side1)).expect("fits");
+        assert!(f.note.is_none(), "{f:?}");
+        assert!((f.active_arc_deg - beta_deg).abs() < 0.01 && f.rms_residual_rel < 1e-6, "{entry_side1}: {f:?}");
+    }
+}
+
 /// History takes the wrap away from the classical picture: after the standstill steps (a slip
 /// zone at each end) no single active arc fits, and the residual says so (it is a sizeable
 /// fraction of the tension range, where a creep-theory state fits to ~1e-9).

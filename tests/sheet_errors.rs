@@ -201,6 +201,26 @@ fn cases() -> Vec<Case> {
             expect: &["emergency_decel_m_s2", "missing"],
         },
         Case {
+            label: "duty-cycle: emergency stop during the final rest",
+            input: duty_cycle("emergency_stop_s = 9.0\nemergency_decel_m_s2 = 1.5\n"),
+            expect: &["scene[3].emergency_stop_s = 9.0", "at rest from 7.5 to 10.5 s", "0 < emergency_stop_s < 7.5 s"],
+        },
+        Case {
+            label: "duty-cycle: emergency stop during the final rest of the lowering",
+            input: duty_cycle("direction = \"lower\"\nemergency_stop_s = 9.0\nemergency_decel_m_s2 = 1.5\n"),
+            expect: &["scene[3].emergency_stop_s = 9.0", "at rest from 7.5 to 10.5 s", "0 < emergency_stop_s < 7.5 s"],
+        },
+        Case {
+            label: "duty-cycle: emergency stop after the profile",
+            input: duty_cycle("emergency_stop_s = 11.0\nemergency_decel_m_s2 = 1.5\n"),
+            expect: &["scene[3].emergency_stop_s", "after the motion profile ends at 10.5 s"],
+        },
+        Case {
+            label: "duty-cycle: a time step that would take hours",
+            input: duty_cycle("time_step_s = 1e-9\n"),
+            expect: &["scene \"d\": refused before running", "h on one core", "time_step_s = 0.000000001 s", "--cost-limit-s"],
+        },
+        Case {
             label: "lining: no stiffness",
             input: Input::Text(format!("{VALID}\n[lining]\nrope_inertia = true\n")),
             expect: &["lining.shear_stiffness_n_per_m2", "missing"],
@@ -259,6 +279,18 @@ fn cases() -> Vec<Case> {
     ]
 }
 
+/// The base sheet with a duty cycle (scene 3) of a hoist that accelerates at up to 0.5 m/s² for
+/// 5 s (to 1.25 m/s), brakes at 0.5 m/s² to rest (2.5 s, until 7.5 s) and rests 3 s: it moves
+/// from 0 to 7.5 s. `keys` are added to the scene.
+fn duty_cycle(keys: &str) -> Input {
+    Input::Text(format!(
+        "{VALID}\n[[scene]]\nname = \"d\"\nkind = \"duty-cycle\"\npayload_kg = 1000.0\n{keys}\n[hoist]\n\
+         conveyance1_kg = 5000.0\nconveyance2_kg = 6000.0\nside1_length_m = 300.0\nside2_length_m = 20.0\n\
+         [[hoist.stage]]\nduration_s = 5.0\naccel_m_s2 = 0.5\n[[hoist.stage]]\naccel_m_s2 = -0.5\nstep = true\n\
+         until_stop = true\n[[hoist.stage]]\nduration_s = 3.0\naccel_m_s2 = 0.0\nstep = true\n"
+    ))
+}
+
 fn write_input(dir: &Path, input: &Input) -> std::path::PathBuf {
     let path = dir.join("test.toml");
     match input {
@@ -299,6 +331,7 @@ fn every_malformed_sheet_fails_cleanly_and_leaves_the_report_untouched() {
         fs::create_dir_all(out.join("a")).expect("mkdir");
         fs::write(out.join("summary.json"), "sentinel").expect("write");
         fs::write(out.join("a").join("distribution.csv"), "old").expect("write");
+        fs::write(out.join(wrapcalc::report::target::MARKER), "wrapcalc report (run)\n").expect("write");
         let before = snapshot(tmp.path());
 
         let assert =

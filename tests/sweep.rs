@@ -381,7 +381,7 @@ fn inconsistent_shards_are_refused() {
     let shard = |k: u64, n: u64, s: &Spec| {
         let file = run_sweep(&path, &Spec { shard: Some(Shard { k, n }), ..s.clone() }).expect("shard");
         let name = format!("{}-{}", s.vary[0].replace([':', '='], "_"), sweep::csv_name(Some(Shard { k, n })));
-        sweep::write(dir.path(), &name, &file, false).expect("write").remove(0)
+        sweep::write(&dir.path().join("shards"), &name, &file, false).expect("write").remove(0)
     };
     let (a, b) = (shard(1, 2, &s), shard(2, 2, &s));
     assert!(merge::merge(&[b.clone(), a.clone()]).is_ok());

@@ -9,7 +9,7 @@ use std::path::Path;
 
 /// Writes the report for `rows` to `dir` (replacing an older one only once the new one is complete).
 pub fn write(dir: &Path, rows: &[BenchRow], scaling: &[Scaling]) -> Result<(), ReportError> {
-    report::write_dir(dir, |staged| {
+    report::write_dir(dir, report::ReportKind::Bench, |staged| {
         write_csv(&staged.join("bench.csv"), rows)?;
         write_csv(&staged.join("scaling.csv"), scaling)?;
         plot_bench::plot_bench(&staged.join("bench.png"), rows)?;

@@ -56,7 +56,7 @@ mod profile;
 mod rope;
 mod simulate;
 
-pub use profile::{Kinematics, MotionProfile, Stage};
+pub use profile::{AT_REST_M_S, Kinematics, MotionProfile, Stage};
 pub use simulate::{Checkpoint, DynSample, SimOptions, simulate, simulate_resumable, simulate_with};
 
 use serde::{Deserialize, Serialize};

@@ -42,6 +42,9 @@ impl Stage {
     }
 }
 
+/// Speeds at or below this are a profile at rest (round-off of stages that bring it to rest), m/s.
+pub const AT_REST_M_S: f64 = 1e-9;
+
 /// Pulley surface travel, speed and acceleration at one instant (v > 0 lifts side 1).
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
 pub struct Kinematics {
@@ -180,6 +183,24 @@ impl MotionProfile {
     /// The state at the end of the last stage.
     pub fn end(&self) -> Kinematics {
         self.end
+    }
+
+    /// The time intervals in which the pulley moves (|v| above [`AT_REST_M_S`]), in order,
+    /// adjacent ones merged: the stretches of the profile between its rests.
+    pub fn moving_intervals(&self) -> Vec<(f64, f64)> {
+        let times = self.x_extreme_times();
+        let mut out: Vec<(f64, f64)> = Vec::new();
+        for w in times.windows(2) {
+            let (a, b) = (w[0], w[1]);
+            if b <= a || self.at(0.5 * (a + b)).speed_m_s.abs() <= AT_REST_M_S {
+                continue;
+            }
+            match out.last_mut() {
+                Some(last) if last.1 == a => last.1 = b,
+                _ => out.push((a, b)),
+            }
+        }
+        out
     }
 
     /// Times of the stage ends and of the speed zeros inside stages (the candidates for the

@@ -250,5 +250,6 @@ pub fn simulate_resumable(
             kept = Some(checkpoint(step, t, &sides, work_j, dissipated_j));
         }
     }
+    crate::tally::add_increments((steps + 1 - first_step) as u64);
     Ok((out, kept))
 }

@@ -9,7 +9,9 @@
 //! suspended ropes, and each side's tension is what its rope column pulls with.
 
 use crate::design::{Design, Direction, DutyCycleScene, EmergencyStop, HistorySample, Hoist};
-use crate::dynamics::{self, Checkpoint, DynSample, DynamicsError, HoistParams, MotionProfile, SimOptions, Stage};
+use crate::dynamics::{
+    self, AT_REST_M_S, Checkpoint, DynSample, DynamicsError, HoistParams, MotionProfile, Side, SimOptions, Stage,
+};
 use crate::margins::{self, Margin};
 use crate::model::level0::{EndState, euler_limit};
 use crate::roots::RootStats;
@@ -29,6 +31,19 @@ pub enum Level4Error {
     EmergencyAtRest { at_s: f64 },
     #[error("a duty-cycle scene needs the sheet's [hoist] section")]
     NoHoist,
+    #[error(
+        "slack rope on {side} at t = {t:.3} s: {model} give a tension of {tension:.1} N per rope at its tangent point \
+         (v = {v:.3} m/s), but a rope stays on the pulley only while its tension exceeds m'v² = {c:.1} N; it would \
+         need {short:.1} N more. {advice}",
+        side = slack.side,
+        t = slack.t_s,
+        model = if *level == 0 { "rigid ropes (level 0)" } else { "the suspended ropes' dynamics" },
+        tension = slack.tension_n,
+        v = slack.speed_m_s,
+        c = slack.centrifugal_n,
+        short = slack.centrifugal_n - slack.tension_n
+    )]
+    SlackRope { slack: Box<SlackRope>, level: u8, advice: String },
 }
 
 /// Interval of the end tensions handed to the wrap (s). The dynamics integrate at the scene's
@@ -65,36 +80,45 @@ pub fn hoist_params(design: &Design, hoist: &Hoist, scene: &DutyCycleScene) -> H
 
 /// Travel of the pulley surface over the `[hoist]` profile as given (a lift), m.
 fn lift_travel_m(hoist: &Hoist) -> f64 {
-    let stages: Vec<Stage> = hoist
+    hoist_profile(hoist, Direction::Lift).map_or(0.0, |p| p.at(p.duration_s()).x_m)
+}
+
+/// The hoist's motion profile for a duty cycle run in `direction`: its stages as given when
+/// lifting side 1, mirrored (every acceleration negated) when lowering it.
+pub fn hoist_profile(hoist: &Hoist, direction: Direction) -> Result<MotionProfile, DynamicsError> {
+    MotionProfile::new(&hoist_stages(hoist, direction))
+}
+
+/// The stages of a trip run in `direction`, and with `return_after_s` a rest of that long and
+/// the same trip back the other way (a round trip).
+pub fn trip_stages(hoist: &Hoist, direction: Direction, return_after_s: Option<f64>) -> Vec<Stage> {
+    let mut stages = hoist_stages(hoist, direction);
+    if let Some(rest_s) = return_after_s {
+        if rest_s > 0.0 {
+            stages.push(Stage { duration_s: Some(rest_s), accel_end_m_s2: 0.0, step: true });
+        }
+        let back = match direction {
+            Direction::Lift => Direction::Lower,
+            Direction::Lower => Direction::Lift,
+        };
+        stages.extend(hoist_stages(hoist, back));
+    }
+    stages
+}
+
+fn hoist_stages(hoist: &Hoist, direction: Direction) -> Vec<Stage> {
+    let sign = direction.sign();
+    hoist
         .stages
         .iter()
-        .map(|s| Stage { duration_s: s.duration_s, accel_end_m_s2: s.accel_m_s2, step: s.step })
-        .collect();
-    MotionProfile::new(&stages).map_or(0.0, |p| p.at(p.duration_s()).x_m)
+        .map(|s| Stage { duration_s: s.duration_s, accel_end_m_s2: sign * s.accel_m_s2, step: s.step })
+        .collect()
 }
 
 /// The scene's motion profile: the hoist's stages (mirrored when lowering side 1), cut at the
 /// emergency stop and followed by constant braking to rest when the scene has one.
 pub fn motion_profile(hoist: &Hoist, scene: &DutyCycleScene) -> Result<MotionProfile, Level4Error> {
-    let sign = match scene.direction {
-        Direction::Lift => 1.0,
-        Direction::Lower => -1.0,
-    };
-    let trip = |sign: f64| {
-        hoist.stages.iter().map(move |s| Stage {
-            duration_s: s.duration_s,
-            accel_end_m_s2: sign * s.accel_m_s2,
-            step: s.step,
-        })
-    };
-    let mut stages: Vec<Stage> = trip(sign).collect();
-    if let Some(rest_s) = scene.return_after_s {
-        // A round trip: rest, then the same trip back the other way.
-        if rest_s > 0.0 {
-            stages.push(Stage { duration_s: Some(rest_s), accel_end_m_s2: 0.0, step: true });
-        }
-        stages.extend(trip(-sign));
-    }
+    let stages = trip_stages(hoist, scene.direction, scene.return_after_s);
     let Some(stop) = scene.emergency else {
         return Ok(MotionProfile::new(&stages)?);
     };
@@ -117,7 +141,7 @@ pub fn motion_profile(hoist: &Hoist, scene: &DutyCycleScene) -> Result<MotionPro
         t += d;
     }
     let v = full.at(stop.at_s).speed_m_s;
-    if v == 0.0 {
+    if v.abs() <= AT_REST_M_S {
         return Err(Level4Error::EmergencyAtRest { at_s: stop.at_s });
     }
     cut.push(Stage::step_until_stop(-v.signum() * stop.decel_m_s2));
@@ -182,7 +206,7 @@ pub fn rigid_ropes(
 
 /// Speeds below 1 nm/s are round-off of a profile that has come to rest: exactly 0.
 fn at_rest_snapped(speed_m_s: f64) -> f64 {
-    if speed_m_s.abs() < 1e-9 { 0.0 } else { speed_m_s }
+    if speed_m_s.abs() <= AT_REST_M_S { 0.0 } else { speed_m_s }
 }
 
 /// The end tensions and speed the wrap sees, per rope (the dynamics' samples as a history).
@@ -224,7 +248,7 @@ pub fn emergency_margins(
     scene: &DutyCycleScene,
     stats: &mut RootStats,
 ) -> Option<(Margin, Margin)> {
-    let stop = scene.emergency?;
+    let trials = StopTrials::new(design, hoist, scene)?;
     let limit = euler_limit(design.pulley.mu, design.pulley.wrap_angle_rad);
     let m_v2 = design.rope.mass_per_m_kg;
     let state = |s: &DynSample| EndState {
@@ -234,27 +258,123 @@ pub fn emergency_margins(
         accel_m_s2: s.accel_m_s2,
         centrifugal_n: m_v2 * s.speed_m_s * s.speed_m_s,
     };
-    let slip = |s: &EndState| margins::slip_residual(s, limit);
+    let slip = |s: &DynSample| margins::slip_residual(&state(s), limit);
     let sf_min = design.requirements.dynamic_safety_factor_min;
-    let sf = |s: &EndState| margins::sf_residual(s, limit, sf_min);
-    // The motion before the brake sets in is the same for every trial: integrated once.
-    let (before, checkpoint) = match resumable_ropes(design, hoist, scene, None, Some(stop.at_s)) {
-        Ok((samples, Some(cp))) => (samples, cp),
-        _ => return None,
-    };
-    let worst_before = |residual: &dyn Fn(&EndState) -> f64| {
-        before.iter().filter(|s| s.t_s <= checkpoint.t_s()).map(|s| residual(&state(s))).fold(f64::INFINITY, f64::min)
-    };
-    let (slip_before, sf_before) = (worst_before(&slip), worst_before(&sf));
-    let worst = |d: f64, residual: &dyn Fn(&EndState) -> f64, before: f64| -> f64 {
-        let trial = DutyCycleScene { emergency: Some(EmergencyStop { decel_m_s2: d, ..stop }), ..scene.clone() };
-        match resumable_ropes(design, hoist, &trial, Some(&checkpoint), None) {
-            Ok((samples, _)) => samples.iter().map(|s| residual(&state(s))).fold(before, f64::min),
+    let sf = |s: &DynSample| margins::sf_residual(&state(s), limit, sf_min);
+    let (slip_before, sf_before) = (trials.worst_before(&slip), trials.worst_before(&sf));
+    let (lo, hi) = (0.5 * trials.stop.decel_m_s2, 0.999 * design.g_m_s2);
+    let to_slip = margins::largest_holding(|d| trials.worst(d, &slip, slip_before), lo, hi, stats);
+    let to_sf = margins::largest_holding(|d| trials.worst(d, &sf, sf_before), lo, hi, stats);
+    Some((to_slip, to_sf))
+}
+
+/// An emergency-stop scene's suspended ropes, integrated once up to the brake (the motion
+/// before it is the same whatever the deceleration); trials of other decelerations continue
+/// from there.
+struct StopTrials<'a> {
+    design: &'a Design,
+    hoist: &'a Hoist,
+    scene: &'a DutyCycleScene,
+    stop: EmergencyStop,
+    before: Vec<DynSample>,
+    checkpoint: Checkpoint,
+}
+
+impl<'a> StopTrials<'a> {
+    /// `None` for a scene without an emergency stop, or whose ropes cannot run to it.
+    fn new(design: &'a Design, hoist: &'a Hoist, scene: &'a DutyCycleScene) -> Option<Self> {
+        let stop = scene.emergency?;
+        match resumable_ropes(design, hoist, scene, None, Some(stop.at_s)) {
+            Ok((before, Some(checkpoint))) => Some(Self { design, hoist, scene, stop, before, checkpoint }),
+            _ => None,
+        }
+    }
+
+    /// The lowest `residual` over the samples before the brake sets in.
+    fn worst_before(&self, residual: &dyn Fn(&DynSample) -> f64) -> f64 {
+        let t = self.checkpoint.t_s();
+        self.before.iter().filter(|s| s.t_s <= t).map(residual).fold(f64::INFINITY, f64::min)
+    }
+
+    /// The lowest `residual` over a run braking at `decel_m_s2` (from the brake on), at most
+    /// `before`; NaN when that run cannot be made (e.g. a hanging length reaching 0).
+    fn worst(&self, decel_m_s2: f64, residual: &dyn Fn(&DynSample) -> f64, before: f64) -> f64 {
+        let emergency = Some(EmergencyStop { decel_m_s2, ..self.stop });
+        let trial = DutyCycleScene { emergency, ..self.scene.clone() };
+        match resumable_ropes(self.design, self.hoist, &trial, Some(&self.checkpoint), None) {
+            Ok((samples, _)) => samples.iter().map(residual).fold(before, f64::min),
             Err(_) => f64::NAN,
         }
+    }
+}
+
+/// A rope leaving the pulley: at a tangent point the tension per rope no longer exceeds m'v²,
+/// so the contact force n = T − m'v² (MODEL §2) is gone.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SlackRope {
+    pub side: Side,
+    pub t_s: f64,
+    /// Tension per rope at that side's tangent point (N); ≤ 0 when the rope has gone slack.
+    pub tension_n: f64,
+    /// m'v² (N): the tension needed to keep the rope on the pulley.
+    pub centrifugal_n: f64,
+    pub speed_m_s: f64,
+}
+
+/// The first sample of a duty cycle's end history whose lower tension per rope does not exceed
+/// m'v² (`T_lo ≤ m'v²`): the wrap models need `n = T − m'v² > 0` at both ends. Between samples
+/// the tensions and the speed are linear, so `m'v² − T` is convex there and the samples suffice.
+pub fn first_slack(samples: &[HistorySample], mass_per_m_kg: f64) -> Option<SlackRope> {
+    samples.iter().find_map(|s| {
+        let centrifugal_n = mass_per_m_kg * s.speed_m_s * s.speed_m_s;
+        let (side, tension_n) = if s.t1_n <= s.t2_n { (Side::One, s.t1_n) } else { (Side::Two, s.t2_n) };
+        (tension_n <= centrifugal_n).then_some(SlackRope {
+            side,
+            t_s: s.t_s,
+            tension_n,
+            centrifugal_n,
+            speed_m_s: s.speed_m_s,
+        })
+    })
+}
+
+/// What to change about a slack rope of `scene` (the [`Level4Error::SlackRope`] advice): during
+/// an emergency stop, the deceleration (with the ropes' dynamics, `level` 4, the largest that
+/// keeps both ropes on the pulley, by Brent's method on `min_t (T_lo − m'v²)` over [d₀/4, d₀]),
+/// else the motion profile's accelerations; or more mass hanging on the slack side.
+pub fn slack_advice(design: &Design, hoist: &Hoist, scene: &DutyCycleScene, slack: &SlackRope, level: u8) -> String {
+    let mass_key = match slack.side {
+        Side::One => "[hoist] conveyance1_kg or the scene's payload_kg",
+        Side::Two => "[hoist] conveyance2_kg",
     };
-    let (lo, hi) = (0.5 * stop.decel_m_s2, 0.999 * design.g_m_s2);
-    let to_slip = margins::largest_holding(|d| worst(d, &slip, slip_before), lo, hi, stats);
-    let to_sf = margins::largest_holding(|d| worst(d, &sf, sf_before), lo, hi, stats);
-    Some((to_slip, to_sf))
+    let Some(stop) = scene.emergency.filter(|s| slack.t_s >= s.at_s) else {
+        return format!(
+            "The motion profile accelerates the hoist faster than {}'s hanging load can follow: lower the \
+             accelerations of the [[hoist.stage]] tables (accel_m_s2), or hang more mass on {} ({mass_key}).",
+            slack.side, slack.side
+        );
+    };
+    let m = design.rope.mass_per_m_kg;
+    let contact = |s: &DynSample| s.t1_n.min(s.t2_n) - m * s.speed_m_s * s.speed_m_s;
+    let largest = (level == 4)
+        .then(|| StopTrials::new(design, hoist, scene))
+        .flatten()
+        .and_then(|trials| {
+            let before = trials.worst_before(&contact);
+            let (lo, hi) = (0.25 * stop.decel_m_s2, stop.decel_m_s2);
+            margins::largest_holding(|d| trials.worst(d, &contact, before), lo, hi, &mut RootStats::default()).value
+        })
+        .map_or_else(String::new, |d| {
+            format!(" With the ropes' dynamics both ropes stay on the pulley up to about {d:.3} m/s².")
+        });
+    format!(
+        "The emergency stop (emergency_decel_m_s2 = {} m/s² from emergency_stop_s = {} s) brakes faster than \
+         {}'s hanging load can follow, {:.3} s after the brake sets in.{largest} Lower emergency_decel_m_s2, or \
+         hang more mass on {} ({mass_key}).",
+        stop.decel_m_s2,
+        stop.at_s,
+        slack.side,
+        slack.t_s - stop.at_s,
+        slack.side
+    )
 }

@@ -3,7 +3,8 @@
 //!
 //! A report is written into a fresh temporary directory beside the target and renamed into
 //! place; an existing report is moved aside first and deleted only once the new one is in
-//! place, so a failure never leaves a half-written or half-overwritten report.
+//! place, so a failure never leaves a half-written or half-overwritten report. Only a report
+//! wrapcalc wrote itself is ever replaced ([`target`]).
 
 pub mod csv_out;
 pub mod plot;
@@ -12,13 +13,15 @@ pub mod plot_history;
 pub mod plot_sweep;
 pub mod summary;
 pub mod table;
+pub mod target;
 
 use crate::run::{RunResult, SceneResult};
 use rayon::prelude::*;
 use std::fs::{self, File};
 use std::io::BufWriter;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use summary::Summary;
+pub use target::ReportKind;
 
 #[derive(Debug, thiserror::Error)]
 pub enum ReportError {
@@ -28,6 +31,12 @@ pub enum ReportError {
     Csv { path: String, source: csv::Error },
     #[error(transparent)]
     Plot(#[from] plot::PlotError),
+    #[error(
+        "{path}: not written, and left as it is: {reason}. wrapcalc replaces only a report it wrote itself \
+         (a directory holding a {marker} file); give --out a new or an empty directory, or move this one away",
+        marker = target::MARKER
+    )]
+    Refused { path: String, reason: String },
 }
 
 pub(crate) fn io(path: &Path) -> impl FnOnce(std::io::Error) -> ReportError + '_ {
@@ -42,20 +51,28 @@ pub struct ReportOptions {
 
 /// Writes the complete report for `run` to `dir`, atomically.
 pub fn write(dir: &Path, summary: &Summary, run: &RunResult, options: ReportOptions) -> Result<(), ReportError> {
-    write_dir(dir, |staged| write_into(staged, summary, run, options))
+    write_dir(dir, ReportKind::Run, |staged| write_into(staged, summary, run, options))
 }
 
-/// Puts a directory in place whole or not at all: `fill` writes it into a fresh staging
-/// directory beside `dir`, which then replaces `dir`.
-pub fn write_dir(dir: &Path, fill: impl FnOnce(&Path) -> Result<(), ReportError>) -> Result<(), ReportError> {
-    let parent = match dir.parent() {
-        Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
-        _ => PathBuf::from("."),
-    };
+/// Puts a report directory in place whole or not at all: `fill` writes it into a fresh
+/// staging directory beside `dir` (with the marker of a `kind` report), which then replaces
+/// `dir`. `dir` must be missing, empty or a wrapcalc report ([`target::check`], before the
+/// work and again under the lock, so that two writers never mix their reports).
+pub fn write_dir(
+    dir: &Path,
+    kind: ReportKind,
+    fill: impl FnOnce(&Path) -> Result<(), ReportError>,
+) -> Result<(), ReportError> {
+    let dir = target::resolve(dir);
+    target::check(&dir)?;
+    let parent = target::parent_of(&dir);
     fs::create_dir_all(&parent).map_err(io(&parent))?;
     let staging = tempfile::Builder::new().prefix(".wrapcalc-new-").tempdir_in(&parent).map_err(io(&parent))?;
+    target::mark(staging.path(), kind)?;
     fill(staging.path())?;
-    swap_into_place(staging, dir, &parent)
+    let _lock = target::lock(&dir)?;
+    target::check(&dir)?;
+    swap_into_place(staging, &dir, &parent)
 }
 
 fn write_into(dir: &Path, summary: &Summary, run: &RunResult, options: ReportOptions) -> Result<(), ReportError> {
@@ -122,14 +139,14 @@ fn write_scene(dir: &Path, summary: &Summary, scene: &SceneResult, options: Repo
 fn swap_into_place(staging: tempfile::TempDir, dir: &Path, parent: &Path) -> Result<(), ReportError> {
     let old = if dir.exists() {
         let aside = tempfile::Builder::new().prefix(".wrapcalc-old-").tempdir_in(parent).map_err(io(parent))?;
-        let aside_path = aside.keep();
         // The rename target must not exist: move the old report into the fresh directory.
-        let old_path = aside_path.join("report");
+        let old_path = aside.path().join("report");
         fs::rename(dir, &old_path).map_err(io(dir))?;
-        Some((aside_path, old_path))
+        Some((aside.keep(), old_path))
     } else {
         None
     };
+    pause_for_tests();
     let staged = staging.keep();
     if let Err(e) = fs::rename(&staged, dir) {
         if let Some((_, old_path)) = &old {
@@ -142,4 +159,12 @@ fn swap_into_place(staging: tempfile::TempDir, dir: &Path, parent: &Path) -> Res
         let _ = fs::remove_dir_all(aside_path);
     }
     Ok(())
+}
+
+/// A testing aid: a pause (ms, from `WRAPCALC_SWAP_PAUSE_MS`) between moving the old report
+/// aside and moving the new one in, so that a test can make two writers meet there.
+fn pause_for_tests() {
+    if let Some(ms) = std::env::var("WRAPCALC_SWAP_PAUSE_MS").ok().and_then(|v| v.parse::<u64>().ok()) {
+        std::thread::sleep(std::time::Duration::from_millis(ms));
+    }
 }

@@ -1,5 +1,6 @@
 //! The scalar summary of a run, as written to summary.json and summary.csv (INTERFACE.md).
 
+use crate::cost::Estimate;
 use crate::design::{Design, Requirements};
 use crate::fit::CreepFit;
 use crate::margins::Margins;
@@ -122,6 +123,8 @@ pub struct SceneJson {
     pub margins: Option<Margins>,
     /// The creep-theory picture fitted to the reported distribution (when asked for).
     pub fit: Option<CreepFit>,
+    /// The cost estimated before the scene ran: work per stage and seconds on one core.
+    pub cost: Option<Estimate>,
 }
 
 /// The whole summary.json document.
@@ -156,6 +159,7 @@ impl Summary {
                     solver: s.history.as_ref().map(|h| h.stats),
                     margins: s.margins.clone(),
                     fit: s.fit.clone(),
+                    cost: s.cost.clone(),
                 })
                 .collect(),
         }

@@ -112,7 +112,9 @@ pub fn render(title: &str, sheet: &str, run: &RunResult, style: Style) -> String
         if let Some(m) = &s.margins {
             render_margins(&mut out, m);
         }
-        if let Some(f) = &s.fit {
+        if let Some(f) = s.fit.as_ref().filter(|f| f.note.is_some()) {
+            let _ = writeln!(out, "  creep-theory fit: {}", f.note.as_deref().unwrap_or_default());
+        } else if let Some(f) = &s.fit {
             let _ = writeln!(
                 out,
                 "  creep-theory fit: active arc β = {:.3}° ({} friction, entry at {}), T_idle = {:.1} N, RMS residual {:.1} N = {:.2e} of the tension range",

@@ -13,6 +13,7 @@ use derive::{derive_answers, ensure_finite};
 use loads::run_loads;
 use time::{run_duty_cycle, run_history};
 
+use crate::cost::{self, Estimate};
 use crate::derived::WrapSummary;
 use crate::design::{Design, Scene, SceneKind};
 use crate::fit::{CreepFit, FitError};
@@ -38,11 +39,19 @@ pub struct Options {
     pub nodes: usize,
     /// Solver of the discrete level's increments.
     pub solver: Solver,
+    /// A scene whose estimated run time ([`crate::cost`]) exceeds this many seconds is refused
+    /// before the run starts.
+    pub cost_limit_s: u64,
 }
 
 impl Default for Options {
     fn default() -> Self {
-        Self { request: Request::Full { forced_level: None }, nodes: DEFAULT_NODES, solver: Solver::Fast }
+        Self {
+            request: Request::Full { forced_level: None },
+            nodes: DEFAULT_NODES,
+            solver: Solver::Fast,
+            cost_limit_s: cost::DEFAULT_LIMIT_S,
+        }
     }
 }
 
@@ -64,6 +73,19 @@ pub enum RunError {
     Level3 { scene: String, source: Level3Error },
     #[error("scene \"{scene}\": {source}")]
     Fit { scene: String, source: FitError },
+    #[error(
+        "scene \"{scene}\": refused before running: it would take about {time} on one core (limit {limit_s} s, \
+         --cost-limit-s) and keep {rows:.0} history rows, about {memory:.2} GB (limit {memory_limit:.1} GB). \
+         Estimated work: {work}. It grows with {drivers}: change those, or raise --cost-limit-s if the scene is \
+         meant to run that long",
+        time = cost::human_duration(estimate.seconds),
+        rows = estimate.rows,
+        memory = estimate.memory_bytes / 1e9,
+        memory_limit = cost::MEMORY_LIMIT_BYTES / 1e9,
+        work = estimate.describe(),
+        drivers = estimate.drivers.join(", ")
+    )]
+    Costly { scene: String, estimate: Box<Estimate>, limit_s: u64 },
 }
 
 /// The wrap distribution of a scene (levels ≥ 1).
@@ -106,6 +128,8 @@ pub struct SceneResult {
     pub fit: Option<CreepFit>,
     pub nodes: Option<usize>,
     pub runtime_ms: f64,
+    /// The run time estimated before the scene ran, and the work it stands for.
+    pub cost: Option<Estimate>,
 }
 
 impl SceneResult {
@@ -126,14 +150,54 @@ impl RunResult {
     }
 }
 
-/// Runs the given scenes of a design (all of them when `only` is empty).
+/// Runs the given scenes of a design.
 pub fn run(design: &Design, scenes: &[&Scene], options: Options) -> Result<RunResult, RunError> {
+    run_with_progress(design, scenes, options, &|_| {})
+}
+
+/// The estimated cost of each scene ([`crate::cost`]), refusing one above the limit.
+pub fn estimate(design: &Design, scenes: &[&Scene], options: Options) -> Result<Vec<Estimate>, RunError> {
     if options.nodes == 0 || options.nodes > MAX_NODES {
         return Err(RunError::Nodes(options.nodes));
     }
+    scenes
+        .iter()
+        .map(|scene| {
+            let plan = planner::plan_with_lining(scene, options.request, design.lining.is_some())?;
+            let e = cost::estimate(design, scene, &plan, options.nodes, options.solver);
+            if e.seconds > options.cost_limit_s as f64 || e.memory_bytes > cost::MEMORY_LIMIT_BYTES {
+                return Err(RunError::Costly {
+                    scene: scene.name.clone(),
+                    estimate: Box::new(e),
+                    limit_s: options.cost_limit_s,
+                });
+            }
+            Ok(e)
+        })
+        .collect()
+}
+
+/// [`run`], calling `progress` with each scene's estimated seconds when it is done. Every
+/// scene's cost is estimated first: a scene above the limit is refused before any runs.
+pub fn run_with_progress(
+    design: &Design,
+    scenes: &[&Scene],
+    options: Options,
+    progress: &(dyn Fn(f64) + Sync),
+) -> Result<RunResult, RunError> {
+    let estimates = estimate(design, scenes, options)?;
     let start = Instant::now();
     // Scenes are independent: run in parallel, reported in the sheet's order.
-    let scenes = scenes.par_iter().map(|s| run_scene(design, s, options)).collect::<Result<Vec<_>, _>>()?;
+    let scenes = scenes
+        .par_iter()
+        .zip(estimates)
+        .map(|(s, e)| {
+            let seconds = e.seconds;
+            let result = run_scene(design, s, options).map(|r| SceneResult { cost: Some(e), ..r });
+            progress(seconds);
+            result
+        })
+        .collect::<Result<Vec<_>, _>>()?;
     Ok(RunResult { scenes, runtime_ms: start.elapsed().as_secs_f64() * 1e3 })
 }
 
@@ -166,6 +230,7 @@ fn empty(scene: &Scene, plan: Plan, classical: Classical) -> SceneResult {
         fit: None,
         nodes: None,
         runtime_ms: 0.0,
+        cost: None,
     }
 }
 

@@ -4,7 +4,7 @@
 
 use super::loads::steady_run;
 use super::{HistoryOutput, Options, RunError, SceneResult, WrapResult, empty, params};
-use crate::design::{Design, Direction, DutyCycleScene, HistorySample, HistoryScene, Scene};
+use crate::design::{Design, Direction, DutyCycleScene, HistorySample, HistoryScene, Hoist, Scene};
 use crate::model::level0::{self, EndState};
 use crate::model::level1;
 use crate::model::level2::{self, Profile};
@@ -46,11 +46,13 @@ pub(super) fn run_duty_cycle(
     if plan.level == 0 {
         // The classical check: rigid ropes along the motion profile; no dynamics, no wrap.
         let (samples, accel) = level4::rigid_ropes(design, hoist, cycle).map_err(err)?;
+        refuse_slack(design, hoist, cycle, &samples, plan.level).map_err(err)?;
         let input = Samples { samples: &samples, accel_m_s2: Some(&accel), direction_before: before, output };
         return run_samples(design, scene, input, plan, options);
     }
     let dynamics = level4::suspended_ropes(design, hoist, cycle).map_err(err)?;
     let samples = level4::end_history(&dynamics);
+    refuse_slack(design, hoist, cycle, &samples, plan.level).map_err(err)?;
     let accel: Vec<f64> = dynamics.iter().map(|s| s.accel_m_s2).collect();
     let input = Samples { samples: &samples, accel_m_s2: Some(&accel), direction_before: before, output };
     let mut result = run_samples(design, scene, input, plan, options)?;
@@ -58,6 +60,24 @@ pub(super) fn run_duty_cycle(
         history.anchors_n = history.rows.iter().map(|r| level4::anchors_at(&dynamics, r.t_s)).collect();
     }
     Ok(result)
+}
+
+/// A duty cycle's end history must keep both ropes on the pulley: a slack rope is an error that
+/// says which side, when, the tension it would need and what to change.
+fn refuse_slack(
+    design: &Design,
+    hoist: &Hoist,
+    cycle: &DutyCycleScene,
+    samples: &[HistorySample],
+    level: u8,
+) -> Result<(), Level4Error> {
+    match level4::first_slack(samples, design.rope.mass_per_m_kg) {
+        Some(slack) => {
+            let advice = level4::slack_advice(design, hoist, cycle, &slack, level);
+            Err(Level4Error::SlackRope { slack: Box::new(slack), level, advice })
+        }
+        None => Ok(()),
+    }
 }
 
 /// The end tensions of a time scene and what the wrap needs to run through them.
@@ -112,6 +132,7 @@ fn run_samples(
         Some(r) => Initial::Rolling { level1: r, first, direction },
     };
     let run = wrap_history(design, scene, &result.plan, samples, output, initial, options)?;
+    crate::tally::add_increments(run.stats.increments);
     let mut snapshots: Vec<level2::Snapshot> = run.snapshots;
     let last = snapshots.pop();
     result.snapshots = snapshots.into_iter().map(|s| s.distribution).collect();

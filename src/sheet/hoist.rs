@@ -7,6 +7,7 @@ use super::validate::{
     At, NON_NEGATIVE, POSITIVE, Rule, checked, direction_keyword, foreign_keys, in_range, optional, required,
 };
 use crate::design::{Direction, DutyCycleScene, EmergencyStop, Hoist, MotionStage};
+use crate::model::level4;
 use toml::Spanned;
 
 /// Default time between history rows of a duty cycle (s).
@@ -203,7 +204,13 @@ pub(super) fn duty_cycle(c: &mut Collector, at: At, raw: &RawScene, hoist: Optio
             None
         }
     };
-    let _ = hoist?;
+    let hoist = hoist?;
+    if let (Some(Some(stop)), Some(t)) = (&emergency, &raw.emergency_stop_s)
+        && let Some(message) = emergency_at_rest(hoist, stop.at_s, return_after_s.flatten())
+    {
+        c.push(Some(t.span()), at.scene, &at.key("emergency_stop_s"), message);
+        return None;
+    }
     if !foreign_ok {
         return None;
     }
@@ -216,4 +223,42 @@ pub(super) fn duty_cycle(c: &mut Collector, at: At, raw: &RawScene, hoist: Optio
         output_step_s: output_step_s?,
         time_step_s: time_step_s?,
     })
+}
+
+/// Why an emergency stop at `at_s` has nothing to brake, naming the times it may set in: the
+/// intervals in which the hoist's motion profile moves. `None` when it moves then, or when the
+/// profile itself cannot be built (the run reports that).
+fn emergency_at_rest(hoist: &Hoist, at_s: f64, return_after_s: Option<f64>) -> Option<String> {
+    let profile = crate::dynamics::MotionProfile::new(&level4::trip_stages(hoist, Direction::Lift, return_after_s)).ok()?;
+    let moving = profile.moving_intervals();
+    if moving.iter().any(|&(a, b)| a < at_s && at_s < b) {
+        return None;
+    }
+    let s = |t: f64| format!("{}", (t * 1e3).round() / 1e3);
+    if moving.is_empty() {
+        return Some(
+            "the [hoist] motion profile never moves, so there is nothing to brake; remove emergency_stop_s and \
+             emergency_decel_m_s2"
+                .into(),
+        );
+    }
+    let end = profile.duration_s();
+    let when = if at_s >= end {
+        format!("after the motion profile ends at {} s", s(end))
+    } else {
+        // The rest holding `at_s`: from the end of the motion before it to the start of the next.
+        let from = moving.iter().map(|m| m.1).filter(|&b| b <= at_s).fold(0.0, f64::max);
+        let to = moving.iter().map(|m| m.0).filter(|&a| a >= at_s).fold(end, f64::min);
+        if to > from {
+            format!("the hoist is at rest from {} to {} s", s(from), s(to))
+        } else {
+            format!("the hoist is at rest at {} s", s(at_s))
+        }
+    };
+    let windows: Vec<String> =
+        moving.iter().map(|&(a, b)| format!("{} < emergency_stop_s < {} s", s(a), s(b))).collect();
+    Some(format!(
+        "{when}; an emergency stop brakes a moving hoist: it must set in while the [hoist] profile moves, {}",
+        windows.join(" or ")
+    ))
 }

@@ -13,7 +13,8 @@ pub mod merge;
 pub mod run;
 
 use crate::report::plot::PlotError;
-use crate::report::plot_sweep;
+use crate::report::target::{self, Existing, ReportKind};
+use crate::report::{ReportError, plot_sweep};
 use crate::run::{MAX_NODES, Options, RunError};
 use crate::sheet::SheetError;
 use apply::Template;
@@ -59,6 +60,8 @@ pub enum SweepError {
     Write { path: String, message: String },
     #[error(transparent)]
     Plot(#[from] PlotError),
+    #[error(transparent)]
+    Report(#[from] ReportError),
 }
 
 /// What to sweep.
@@ -96,17 +99,25 @@ pub fn csv_name(shard: Option<Shard>) -> String {
     shard.map_or_else(|| SWEEP_CSV.to_string(), |s| format!("sweep-shard-{}-of-{}.csv", s.k, s.n))
 }
 
-/// Writes `csv_name` (and `sweep.png` when `plot`) into `dir`, next to whatever else is there.
-/// The files are drawn in a staging directory inside `dir` and renamed into place only once all
-/// are complete, so a failure leaves `dir` as it was.
+/// Writes `csv_name` (and `sweep.png` when `plot`) into `dir`, next to the other files of the
+/// sweep there. `dir` must be missing, empty or a wrapcalc report ([`report::target`]; it is
+/// marked as a sweep report when new). The files are drawn in a staging directory inside `dir`
+/// and renamed into place only once all are complete, while holding the directory's lock, so a
+/// failure leaves `dir` as it was and two writers never mix their files.
 pub fn write(dir: &Path, csv_name: &str, file: &SweepFile, plot: bool) -> Result<Vec<PathBuf>, SweepError> {
     let fail = |path: &Path| {
         let path = path.display().to_string();
         move |e: &dyn std::fmt::Display| SweepError::Write { path: path.clone(), message: e.to_string() }
     };
-    std::fs::create_dir_all(dir).map_err(|e| fail(dir)(&e))?;
+    let dir = target::resolve(dir);
+    target::check(&dir)?;
+    let _lock = target::lock(&dir)?;
+    if target::check(&dir)? != Existing::Report {
+        std::fs::create_dir_all(&dir).map_err(|e| fail(&dir)(&e))?;
+        target::mark(&dir, ReportKind::Sweep)?;
+    }
     // Removed with whatever is left in it when dropped.
-    let staging = tempfile::Builder::new().prefix(".wrapcalc-sweep-").tempdir_in(dir).map_err(|e| fail(dir)(&e))?;
+    let staging = tempfile::Builder::new().prefix(".wrapcalc-sweep-").tempdir_in(&dir).map_err(|e| fail(&dir)(&e))?;
     let staged_csv = staging.path().join(csv_name);
     let csv_file = File::create(&staged_csv).map_err(|e| fail(&staged_csv)(&e))?;
     let mut out = BufWriter::new(csv_file);

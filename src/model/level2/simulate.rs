@@ -119,10 +119,6 @@ impl<'a> Simulation<'a> {
     /// Starts at the first sample with the given state (its ends are set by [`Self::settle`]).
     pub fn new(params: Params, samples: &'a [HistorySample], profile: Profile) -> Self {
         let t_s = samples.first().map_or(0.0, |s| s.t_s);
-        let t_max = samples.iter().map(|s| s.t1_n.max(s.t2_n)).fold(0.0, f64::max);
-        // |v| is largest at a sample (it is linear between them), so both maxima are the same
-        // however the history is sampled.
-        let c_max = samples.iter().map(|s| params.mass_per_m_kg * s.speed_m_s * s.speed_m_s).fold(0.0, f64::max);
         let centrifugal_n = samples.first().map_or(0.0, |s| params.mass_per_m_kg * s.speed_m_s * s.speed_m_s);
         Self {
             params,
@@ -131,7 +127,7 @@ impl<'a> Simulation<'a> {
             profile,
             gross_slip: false,
             centrifugal_n,
-            centrifugal_step_n: (CENTRIFUGAL_STEP_REL * t_max).max(CENTRIFUGAL_STEP_OF_RANGE * c_max),
+            centrifugal_step_n: centrifugal_step_n(samples, params.mass_per_m_kg),
             stats: StepStats::default(),
             roots: RootStats::default(),
             last: LastStep::default(),
@@ -425,6 +421,34 @@ fn speed_zero(input: &Linear, lo: f64, hi: f64) -> Option<f64> {
     }
     let t = -input.omega_per_s / e;
     (t > lo && t < hi).then_some(t)
+}
+
+/// Spacing of the m'v² lattice for a history (N), see [`CENTRIFUGAL_STEP_REL`].
+pub fn centrifugal_step_n(samples: &[HistorySample], mass_per_m_kg: f64) -> f64 {
+    let t_max = samples.iter().map(|s| s.t1_n.max(s.t2_n)).fold(0.0, f64::max);
+    // |v| is largest at a sample (it is linear between them), so both maxima are the same
+    // however the history is sampled.
+    let c_max = samples.iter().map(|s| mass_per_m_kg * s.speed_m_s * s.speed_m_s).fold(0.0, f64::max);
+    (CENTRIFUGAL_STEP_REL * t_max).max(CENTRIFUGAL_STEP_OF_RANGE * c_max)
+}
+
+/// Steps of m'v² on its lattice through a history: the total variation of m'v² over the
+/// spacing (known before the run, for its cost).
+pub fn centrifugal_steps(samples: &[HistorySample], mass_per_m_kg: f64) -> f64 {
+    let step = centrifugal_step_n(samples, mass_per_m_kg);
+    if step <= 0.0 {
+        return 0.0;
+    }
+    let c = |v: f64| mass_per_m_kg * v * v;
+    let variation: f64 = samples
+        .windows(2)
+        .map(|w| {
+            let (a, b) = (w[0].speed_m_s, w[1].speed_m_s);
+            // Through zero, m'v² falls to 0 and rises again.
+            if a * b < 0.0 { c(a) + c(b) } else { (c(b) - c(a)).abs() }
+        })
+        .sum();
+    (variation / step).ceil()
 }
 
 /// Index k of the sample segment [t_k, t_{k+1}) containing t (the last sample at or after the end).

@@ -1,0 +1,17 @@
+//! A process-wide tally of model increments computed (time steps of the suspended ropes,
+//! increments of the wrap), so that a caller can tell whether any work was done, e.g. that a
+//! costly scene was refused before its first increment.
+
+use std::sync::atomic::{AtomicU64, Ordering};
+
+static INCREMENTS: AtomicU64 = AtomicU64::new(0);
+
+/// Adds `n` computed increments.
+pub fn add_increments(n: u64) {
+    INCREMENTS.fetch_add(n, Ordering::Relaxed);
+}
+
+/// Increments computed by this process so far.
+pub fn increments() -> u64 {
+    INCREMENTS.load(Ordering::Relaxed)
+}
