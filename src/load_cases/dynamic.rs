@@ -7,7 +7,7 @@
 //! reported under its own name beside the code value of the level-0 cases.
 
 use super::profile::Characteristics;
-use super::rigid::{Emergency, emergency_mode, from_states, stop_case, trip_params};
+use super::rigid::{Emergency, MOVING_M_S, emergency_mode, from_states, stop_case, trip_params};
 use super::{CaseResult, Position};
 use crate::check::{Relation, all_pass};
 use crate::design::{Design, Direction, Hoist, LoadCases, Phase, SafetyFactorBasis};
@@ -116,10 +116,11 @@ fn phase_cases(
     let n = f64::from(design.rope.count);
     let mut out = Vec::new();
     for &phase in phases {
+        let moving = |st: &EndState| st.speed_m_s.abs() > MOVING_M_S;
         let in_phase = |st: &EndState| match phase {
-            Phase::Accelerating => s * st.accel_m_s2 > 0.0 && st.speed_m_s != 0.0,
-            Phase::FullSpeed => st.accel_m_s2 == 0.0 && st.speed_m_s != 0.0,
-            _ => s * st.accel_m_s2 < 0.0 && st.speed_m_s != 0.0,
+            Phase::Accelerating => s * st.accel_m_s2 > 0.0 && moving(st),
+            Phase::FullSpeed => st.accel_m_s2 == 0.0 && moving(st),
+            _ => s * st.accel_m_s2 < 0.0 && moving(st),
         };
         let worst =
             states.iter().zip(samples).filter(|((t, st), _)| in_phase(st) && onset.is_none_or(|o| *t <= o.t_s)).min_by(

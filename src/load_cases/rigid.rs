@@ -12,6 +12,9 @@ use crate::model::level0::{self, DYNAMIC_CHECK, EndState, euler_limit, safety_fa
 use crate::model::level4::{self, Level4Error};
 use crate::model::stop::{self, SlipOnset, StopReport};
 
+/// Speeds below this are a profile at rest (m/s): the round-off of its stages' integrals.
+pub const MOVING_M_S: f64 = 1e-9;
+
 /// How the matrix's emergency stops are braked.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Emergency {
@@ -176,7 +179,13 @@ pub fn from_states(
         ),
     ];
     let label = label(payload_kg, dir, phase, &position, x_m, level);
-    let checks: Vec<Check> = checks.into_iter().map(|c| c.governed_by(label.clone())).collect();
+    // The static check belongs to the masses at rest, whatever the phase.
+    let at_rest = format!("payload {payload_kg:.0} kg at rest, x = {x_m:.1} m");
+    let checks: Vec<Check> = checks
+        .into_iter()
+        .enumerate()
+        .map(|(i, c)| c.governed_by(if i == 1 { at_rest.clone() } else { label.clone() }))
+        .collect();
     CaseResult {
         label,
         payload_kg,
@@ -265,7 +274,8 @@ fn worst_instants(
     let step = 0.01;
     let steps = (profile.duration_s() / step).ceil() as usize;
     let phases = [Phase::Accelerating, Phase::FullSpeed, Phase::Decelerating];
-    let phase_of = |k: &Kinematics| match (k.speed_m_s != 0.0, s * k.accel_m_s2) {
+    // Moving: faster than the round-off of a profile that has come to rest.
+    let phase_of = |k: &Kinematics| match (k.speed_m_s.abs() > MOVING_M_S, s * k.accel_m_s2) {
         (false, _) => None,
         (true, a) if a > 0.0 => Some(0),
         (true, 0.0) => Some(1),

@@ -2,6 +2,7 @@
 //! case, then every check of the design as a whole at its governing case.
 
 use super::table::{Style, render_check};
+use crate::check::Verdict;
 use crate::load_cases::{CaseResult, MatrixResult, Position};
 use crate::run::DesignResult;
 use std::fmt::Write;
@@ -43,6 +44,12 @@ pub fn render_matrix(out: &mut String, m: &MatrixResult, style: Style) {
     );
     for c in &m.cases {
         let failing: Vec<&str> = c.checks.iter().filter(|k| !k.pass).map(|k| k.name).collect();
+        let warning: Vec<&str> = c.checks.iter().filter(|k| k.verdict == Verdict::Warning).map(|k| k.name).collect();
+        let remark = match (failing.is_empty(), warning.is_empty()) {
+            (false, _) => format!("  ({})", failing.join("; ")),
+            (true, false) => format!("  (warning: {})", warning.join("; ")),
+            (true, true) => String::new(),
+        };
         let _ = writeln!(
             out,
             "{:>8.0}  {:<5}  {:<12}  {:<22}  {:>6.1}  {:>3}  {:>8.2}  {:>8.2}  {:>6.4}  {:>7}  {:>7}  {:>7}  {:>6}  {:>6}  {}{}",
@@ -61,7 +68,7 @@ pub fn render_matrix(out: &mut String, m: &MatrixResult, style: Style) {
             opt(c.stop.map(|s| s.decel_m_s2), 3),
             opt(c.stop.map(|s| s.slip_limited_decel_m_s2), 3),
             style.verdict_pass(c.checks_pass),
-            if failing.is_empty() { String::new() } else { format!("  ({})", failing.join("; ")) }
+            remark
         );
     }
 }
