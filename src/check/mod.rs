@@ -156,6 +156,18 @@ impl Check {
         self
     }
 
+    /// Adds the masses behind rigid-rope tensions to the inputs: m1, m2 (all ropes), the guide
+    /// sheave's J_g/R_g² on each side where there is one, and the acceleration a, so that
+    /// T1 = (m1(g + a) + m_g1·a)/n, T2 = (m2(g − a) − m_g2·a)/n can be redone by hand.
+    pub fn with_masses(mut self, masses_kg: [f64; 2], guide_kg: [f64; 2], accel_m_s2: f64) -> Self {
+        self.inputs.extend([q("m1", masses_kg[0], "kg"), q("m2", masses_kg[1], "kg")]);
+        for (i, g) in guide_kg.iter().enumerate().filter(|(_, g)| **g > 0.0) {
+            self.inputs.push(q(if i == 0 { "m_g1 = J_g/R_g²" } else { "m_g2 = J_g/R_g²" }, *g, "kg"));
+        }
+        self.inputs.push(q("a", accel_m_s2, "m/s²"));
+        self
+    }
+
     pub fn governed_by(mut self, case: impl Into<String>) -> Self {
         self.governing_case = Some(case.into());
         self

@@ -138,6 +138,18 @@ pub fn case_at(
     let kg = params.ropes as f64 / params.g_m_s2;
     let mut result = from_states(design, payload_kg, dir, phase, position, k.x_m, 0, state, static_state);
     (result.m1_kg, result.m2_kg) = (t1s * kg, t2s * kg);
+    let masses = [result.m1_kg, result.m2_kg];
+    let guide = design.guide_mass_kg();
+    result.checks = result
+        .checks
+        .into_iter()
+        .enumerate()
+        .map(
+            |(i, c)| {
+                if i == 1 { c.with_masses(masses, [0.0; 2], 0.0) } else { c.with_masses(masses, guide, k.accel_m_s2) }
+            },
+        )
+        .collect();
     Ok(result)
 }
 

@@ -138,14 +138,29 @@ impl Classical {
 /// `T1 += m_g1·a/n`, `T2 −= m_g2·a/n` (`m_g = J_g/R_g²`, an equivalent mass without weight).
 pub fn loads(design: &Design, scene: &LoadsScene) -> Classical {
     let mut state = EndState::of(scene, design.g_m_s2, &design.rope);
+    let guide = design.guide_mass_kg();
     if let EndLoads::Masses { .. } = scene.ends {
-        let [g1, g2] = design.guide_mass_kg();
         let n = f64::from(design.rope.count);
-        state.t1_n += g1 * scene.accel_m_s2 / n;
-        state.t2_n -= g2 * scene.accel_m_s2 / n;
+        state.t1_n += guide[0] * scene.accel_m_s2 / n;
+        state.t2_n -= guide[1] * scene.accel_m_s2 / n;
     }
     let static_state = EndState::at_rest(scene, design.g_m_s2, &design.rope);
-    classical(design, state, static_state)
+    let mut c = classical(design, state, static_state);
+    if let EndLoads::Masses { m1_kg, m2_kg } = scene.ends {
+        let a = scene.accel_m_s2;
+        c.checks = c
+            .checks
+            .into_iter()
+            .map(|k| {
+                if k.name == "static safety factor" {
+                    k.with_masses([m1_kg, m2_kg], [0.0; 2], 0.0)
+                } else {
+                    k.with_masses([m1_kg, m2_kg], guide, a)
+                }
+            })
+            .collect();
+    }
+    c
 }
 
 /// Level 0 for a given state and its state at rest.
