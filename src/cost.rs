@@ -156,9 +156,7 @@ fn level2_part(samples: u64, reversals: u64, centrifugal_steps: u64, rows: u64) 
         "wrap (level 2)",
         level2_work(samples, reversals, centrifugal_steps, rows),
         "breakpoint updates",
-        format!(
-            "{samples} samples, {reversals} load reversals, {centrifugal_steps} steps of m'v², {rows} report rows"
-        ),
+        format!("{samples} samples, {reversals} load reversals, {centrifugal_steps} steps of m'v², {rows} report rows"),
         LEVEL2_NS,
     )
 }

@@ -1,6 +1,8 @@
 //! The validated design: what a sheet describes once every value has been checked.
 //! All quantities are SI; angles are stored in radians (`_rad`) and reported in degrees.
 
+pub use crate::requirements::{DEFAULT_SAFETY_FACTOR_SOURCE, Limit, Requirements, SafetyFactorBasis};
+
 /// Standard gravity, used unless the sheet gives `g_m_s2`.
 pub const STANDARD_GRAVITY_M_S2: f64 = 9.81;
 
@@ -19,6 +21,10 @@ pub struct Design {
     /// The elastic lining of level 3 (the `[lining]` section), when the sheet has one: it
     /// switches level 3 on for the scenes that run the wrap in time.
     pub lining: Option<Lining>,
+    /// What moves with the rope beside the hanging masses, and the brake.
+    pub machine: Machine,
+    /// The load-case matrix of the `[load_cases]` section, when the sheet has one.
+    pub load_cases: Option<LoadCases>,
 }
 
 /// A `--scene` name the sheet does not have.
@@ -31,6 +37,23 @@ pub struct UnknownScene {
 }
 
 impl Design {
+    /// Equivalent mass of the guide sheave on each side, `J_g/R_g²` (kg; `[0, 0]` without one).
+    pub fn guide_mass_kg(&self) -> [f64; 2] {
+        match self.machine.guide {
+            Some(g) => match g.side {
+                1 => [g.equivalent_mass_kg, 0.0],
+                _ => [0.0, g.equivalent_mass_kg],
+            },
+            None => [0.0; 2],
+        }
+    }
+
+    /// Equivalent mass at the pulley's rim of what turns with the friction pulley, `J/R²` (kg).
+    pub fn pulley_mass_kg(&self) -> f64 {
+        let r = 0.5 * self.pulley.diameter_m;
+        self.machine.pulley_inertia_kg_m2 / (r * r)
+    }
+
     /// The scenes named in `names` (all when empty), in sheet order.
     pub fn select_scenes(&self, names: &[String]) -> Result<Vec<&Scene>, UnknownScene> {
         if let Some(missing) = names.iter().find(|n| !self.scenes.iter().any(|s| &s.name == *n)) {
@@ -98,6 +121,9 @@ pub struct DutyCycleScene {
     pub return_after_s: Option<f64>,
     /// Emergency braking: at `at_s` the drive decelerates at `decel_m_s2` until the hoist stops.
     pub emergency: Option<EmergencyStop>,
+    /// Emergency braking by the sheet's `[brake]`: at this time the drive trips and the pulley
+    /// becomes a body that the brake stops (MODEL §11).
+    pub brake_stop_s: Option<f64>,
     pub snapshots_s: Vec<f64>,
     /// Time between history rows (s).
     pub output_step_s: f64,
@@ -137,22 +163,87 @@ pub struct Rope {
     pub mass_per_m_kg: f64,
     /// Axial stiffness EA of one rope (N).
     pub ea_n: f64,
+    /// Nominal diameter d of one rope (m), when the sheet gives it (D/d, lining pressure).
+    pub diameter_m: Option<f64>,
+    /// Minimum breaking force of one rope (N), when the sheet gives it (rope safety factor).
+    pub min_breaking_force_n: Option<f64>,
     /// Bending stiffness EI of one rope (N·m², level 3): given, or `ratio · E π d⁴/64`; 0 when
     /// the sheet gives none.
     pub bending_stiffness_n_m2: f64,
 }
 
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
-pub struct Requirements {
-    pub static_safety_factor_min: f64,
-    pub dynamic_safety_factor_min: f64,
+/// What turns with the rope beside the hanging masses (MODEL §11), and the brake.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Machine {
+    /// Friction pulley with the motor rotor (and gear) reduced to the pulley axis (kg·m²; 0
+    /// when the sheet gives none). It matters once the drive lets go: in an emergency stop.
+    pub pulley_inertia_kg_m2: f64,
+    pub guide: Option<GuideSheave>,
+    pub brake: Option<Brake>,
 }
 
-impl Default for Requirements {
-    /// Coal-mine design practice: 1.75 static, 1.25 dynamic.
-    fn default() -> Self {
-        Self { static_safety_factor_min: 1.75, dynamic_safety_factor_min: 1.25 }
+/// The guide (deflection) sheave as a body: its inertia adds `J_g/R_g²` of mass (no weight) to
+/// its side whenever the rope accelerates.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct GuideSheave {
+    pub diameter_m: f64,
+    /// The side whose rope runs over it (1 or 2).
+    pub side: u8,
+    /// `J_g/R_g²` (kg).
+    pub equivalent_mass_kg: f64,
+    /// `J_g` (kg·m²).
+    pub inertia_kg_m2: f64,
+}
+
+/// The safety brake (`[brake]`): after the trip signal nothing acts for `idle_time_s`, then the
+/// force rises linearly to `force_n` over `build_up_s` and stays.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Brake {
+    /// Total brake force at the friction pulley's rim, M_b/R (N).
+    pub force_n: f64,
+    pub idle_time_s: f64,
+    pub build_up_s: f64,
+}
+
+/// A phase of travel in the load-case matrix.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Phase {
+    Accelerating,
+    FullSpeed,
+    Decelerating,
+    Emergency,
+}
+
+impl Phase {
+    pub const ALL: [Phase; 4] = [Phase::Accelerating, Phase::FullSpeed, Phase::Decelerating, Phase::Emergency];
+
+    pub fn keyword(self) -> &'static str {
+        match self {
+            Phase::Accelerating => "accelerating",
+            Phase::FullSpeed => "full-speed",
+            Phase::Decelerating => "decelerating",
+            Phase::Emergency => "emergency",
+        }
     }
+}
+
+/// The load-case matrix (`[load_cases]`): every payload × direction × phase × position of the
+/// `[hoist]`, at level 0, and the phases in `rope_dynamics` also with the ropes' dynamics.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LoadCases {
+    pub payloads_kg: Vec<f64>,
+    pub directions: Vec<Direction>,
+    /// Positions as fractions of the travel (0: side 1 at the bottom, 1: at the top).
+    pub positions: Vec<f64>,
+    /// Phases whose cases also run the suspended ropes' dynamics (level 4).
+    pub rope_dynamics: Vec<Phase>,
+    /// Where in the full-speed run the level-4 emergency stops set in (fractions, 0: its start).
+    pub rope_dynamics_stops: Vec<f64>,
+    /// Imposed emergency deceleration (m/s²) instead of the `[brake]`.
+    pub emergency_decel_m_s2: Option<f64>,
+    /// Integration step of the ropes' dynamics (s).
+    pub time_step_s: f64,
 }
 
 #[derive(Debug, Clone, PartialEq)]

@@ -4,13 +4,17 @@
 //! [`sheet`] (TOML design sheet → validated [`design::Design`]) → [`planner`] (cheapest model
 //! level per scene) → [`model`] levels (closed-form checks, creep theory) on the shared
 //! [`wrap`] discretization and [`contact`] law → [`derived`] quantities (arcs, JDP, zones) →
-//! [`report`] (summary.json/csv, distribution.csv, PNG plots, terminal table).
+//! [`report`] (summary.json/csv, distribution.csv, PNG plots, terminal table). Every design check
+//! is a [`check::Check`] record (formula, inputs, values, limit and its source from
+//! [`requirements`], verdict); [`load_cases`] builds and answers the load-case matrix of a
+//! sheet's `[load_cases]`.
 //!
 //! Conventions (fixed): θ runs from the side-1 tangent point (0) to the side-2 tangent point
 //! (α); v > 0 means the rope travels side 1 → side 2; friction q on the rope is positive in +θ
 //! and `dT/dθ = −q`; tensions are per rope; SI units, angles reported in degrees.
 
 pub mod bench;
+pub mod check;
 pub mod contact;
 pub mod cost;
 pub mod derived;
@@ -18,10 +22,12 @@ pub mod design;
 pub mod dynamics;
 pub mod fit;
 pub mod geometry;
+pub mod load_cases;
 pub mod margins;
 pub mod model;
 pub mod planner;
 pub mod report;
+pub mod requirements;
 pub mod roots;
 pub mod run;
 pub mod sheet;

@@ -26,7 +26,7 @@ struct Cli {
 enum Command {
     /// Run every scene of a design sheet and write the report.
     Run(RunArgs),
-    /// Level-0 anti-slip checks only (instant); writes no report.
+    /// Level-0 checks only (instant), with the load-case matrix; writes no report.
     Check(CheckArgs),
     /// Run a sheet over a grid of one or two varied keys; writes sweep.csv and sweep.png.
     Sweep(SweepArgs),
@@ -62,7 +62,7 @@ struct RunArgs {
     /// Report directory [default: reports/<sheet file stem>/].
     #[arg(long)]
     out: Option<PathBuf>,
-    /// Run only this scene (repeatable).
+    /// Run only this scene (repeatable); the load-case matrix and the design checks then do not run.
     #[arg(long = "scene", value_name = "NAME")]
     scenes: Vec<String>,
     #[command(flatten)]
@@ -218,7 +218,8 @@ fn execute(cli: Cli) -> anyhow::Result<bool> {
         Command::Check(args) => {
             let design = sheet::load(&args.sheet)?;
             let scenes: Vec<&Scene> = design.scenes.iter().collect();
-            let result = run::run(&design, &scenes, Options { request: Request::ChecksOnly, ..Options::default() })?;
+            let options = Options { request: Request::ChecksOnly, ..Options::default() };
+            let result = run::run_all(&design, &scenes, options)?;
             print_result(&design, &result, args.format, false);
             Ok(result.all_checks_pass())
         }
@@ -359,7 +360,14 @@ fn run_command(args: RunArgs) -> anyhow::Result<bool> {
     let in_sheet = |e: run::RunError| anyhow::anyhow!("{}: {e}", design.sheet);
     let estimated_s: f64 = run::estimate(&design, &scenes, options).map_err(in_sheet)?.iter().map(|e| e.seconds).sum();
     let bar = run_bar(estimated_s, args.quiet);
-    let result = run::run_with_progress(&design, &scenes, options, &|s| bar.inc((s * 1e3) as u64));
+    // The whole sheet also gets its design as a whole (load-case matrix, checks beside
+    // anti-slip); a selection of scenes runs those scenes only.
+    let progress = |s: f64| bar.inc((s * 1e3) as u64);
+    let result = if args.scenes.is_empty() {
+        run::run_all_with_progress(&design, &scenes, options, &progress)
+    } else {
+        run::run_with_progress(&design, &scenes, options, &progress)
+    };
     bar.finish_and_clear();
     let result = result.map_err(in_sheet)?;
     let summary = Summary::of(&design, &result);

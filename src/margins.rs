@@ -47,9 +47,13 @@ pub struct Margins {
     /// Time of the state the margins are measured from (time scenes: the instant with the lowest
     /// safety factor); null for a `loads` scene.
     pub at_t_s: Option<f64>,
-    /// The rigid-rope side masses of the state, `m1 = T1·n/(g + a)`, `m2 = T2·n/(g − a)` (kg, all ropes).
+    /// The side masses of the state (kg, all ropes): those hanging at that instant (duty cycles,
+    /// mass-loaded scenes), else back-computed from rigid ropes, `m1 = T1·n/(g + a)`, `m2 = T2·n/(g − a)`.
     pub m1_kg: f64,
     pub m2_kg: f64,
+    /// Where the masses come from: `hanging` (the [hoist] at that instant, or the scene's
+    /// masses) or `back-computed` from the tensions on rigid ropes.
+    pub masses_source: &'static str,
     pub critical_mu: Margin,
     pub payload_to_slip_kg: Margin,
     pub payload_to_min_safety_factor_kg: Margin,
@@ -98,13 +102,31 @@ pub fn sf_residual(s: &EndState, limit: f64, sf_min: f64) -> f64 {
 /// The margins of `state` (per-rope tensions, its speed and acceleration) on `design`'s pulley;
 /// `at_t_s`: the time of the state in a time scene. Braking opposes the motion: the direction of
 /// the speed, or of the acceleration when starting from rest; a state at rest has no braking margin.
+/// The side masses are back-computed from the tensions, `m1 = T1·n/(g + a)`, `m2 = T2·n/(g − a)`.
 pub fn of(design: &Design, state: &EndState, at_t_s: Option<f64>) -> Margins {
+    let n = f64::from(design.rope.count);
+    let g = design.g_m_s2;
+    let masses = [state.t1_n * n / (g + state.accel_m_s2), state.t2_n * n / (g - state.accel_m_s2)];
+    Margins { masses_source: "back-computed", ..of_masses(design, state, at_t_s, masses, [0.0; 2]) }
+}
+
+/// The margins of a state whose hanging masses are known: `masses` = [m1, m2] (kg, all ropes)
+/// hang below the tangent points and `guide_kg` = the guide sheave's `J_g/R_g²` on each side, so
+/// that a braking deceleration d gives `T1 = (m1(g + a) + m_g1·a)/n`, `T2 = (m2(g − a) − m_g2·a)/n`
+/// with `a = −s·d` (`state` itself should be these tensions at its own acceleration).
+pub fn of_masses(
+    design: &Design,
+    state: &EndState,
+    at_t_s: Option<f64>,
+    masses: [f64; 2],
+    guide_kg: [f64; 2],
+) -> Margins {
     let mu = design.pulley.mu;
     let alpha = design.pulley.wrap_angle_rad;
     let limit = euler_limit(mu, alpha);
     let g = design.g_m_s2;
     let n = f64::from(design.rope.count);
-    let req = design.requirements;
+    let req = &design.requirements;
     let mut stats = RootStats::default();
 
     // Critical μ: the state slips for μ below μ_c, where ln(ratio) − μα changes sign (searched
@@ -120,8 +142,8 @@ pub fn of(design: &Design, state: &EndState, at_t_s: Option<f64>) -> Margins {
 
     // Payload on side 1 (kg, all ropes) at the state's acceleration.
     let per_kg_n = (g + state.accel_m_s2) / n;
-    let m1 = state.t1_n * n / (g + state.accel_m_s2);
-    let m2 = state.t2_n * n / (g - state.accel_m_s2);
+    let [m1, m2] = masses;
+    let [g1, g2] = guide_kg;
     let payload_hi = 10.0 * (m1.abs() + m2.abs()).max(1.0);
     let with_payload = |x: f64| EndState { t1_n: state.t1_n + x * per_kg_n, ..*state };
     let at_rest = state.speed_m_s == 0.0 && state.accel_m_s2 == 0.0;
@@ -134,7 +156,7 @@ pub fn of(design: &Design, state: &EndState, at_t_s: Option<f64>) -> Margins {
     let running_sign = if state.speed_m_s != 0.0 { state.speed_m_s.signum() } else { state.accel_m_s2.signum() };
     let braking = |d: f64| {
         let a = -running_sign * d;
-        EndState { t1_n: m1 * (g + a) / n, t2_n: m2 * (g - a) / n, accel_m_s2: a, ..*state }
+        EndState { t1_n: (m1 * (g + a) + g1 * a) / n, t2_n: (m2 * (g - a) - g2 * a) / n, accel_m_s2: a, ..*state }
     };
     let braking_hi = 0.999 * g;
     let (braking_to_slip_m_s2, braking_to_min_safety_factor_m_s2) = if at_rest {
@@ -157,6 +179,7 @@ pub fn of(design: &Design, state: &EndState, at_t_s: Option<f64>) -> Margins {
         at_t_s,
         m1_kg: m1,
         m2_kg: m2,
+        masses_source: "hanging",
         critical_mu,
         payload_to_slip_kg,
         payload_to_min_safety_factor_kg,

@@ -193,9 +193,9 @@ fn emergency_braking_margin_is_the_edge_of_gross_slip() {
 /// Level 0 of a duty cycle is the classical check on rigid ropes. At t = 10 s of the MID lift
 /// (constant 0.6 m/s² after the 1.71 s jerk-up ramp): x = 0.1·1.71² + 0.513·8.29 + 0.3·8.29²
 /// = 0.29241 + 4.25277 + 20.61723 = 25.16241 m, and everything below each tangent point moves
-/// with its conveyance:
+/// with its conveyance; the guide sheave's 15 000 kg (J_g/R_g², side 2) accelerates with the rope:
 ///   T1 = (95 000 + 64.86·(463.56 − x) + 69·(28.25 + x))·(9.81 + 0.6)/6,
-///   T2 = (95 000 + 64.86·(51.34 + x) + 69·(453.25 − x))·(9.81 − 0.6)/6.
+///   T2 = (95 000 + 64.86·(51.34 + x) + 69·(453.25 − x))·(9.81 − 0.6)/6 − 15 000·0.6/6.
 /// Same within 1e-9 relative (the profile is evaluated in closed form, no integration).
 #[test]
 fn level0_duty_cycle_is_the_rigid_rope_check() {
@@ -208,9 +208,75 @@ fn level0_duty_cycle_is_the_rigid_rope_check() {
     let i = samples.iter().position(|s| (s.t_s - 10.0).abs() < 1e-9).expect("a sample at 10 s");
     let x = 0.1 * 1.71 * 1.71 + 0.513 * 8.29 + 0.3 * 8.29 * 8.29;
     let t1 = (95_000.0 + 64.86 * (463.56 - x) + 69.0 * (28.25 + x)) * (9.81 + 0.6) / 6.0;
-    let t2 = (95_000.0 + 64.86 * (51.34 + x) + 69.0 * (453.25 - x)) * (9.81 - 0.6) / 6.0;
+    let t2 = (95_000.0 + 64.86 * (51.34 + x) + 69.0 * (453.25 - x)) * (9.81 - 0.6) / 6.0 - 15_000.0 * 0.6 / 6.0;
     assert!((accel[i] - 0.6).abs() < 1e-12);
     assert!(((samples[i].t1_n - t1) / t1).abs() < 1e-9, "T1 {} vs {t1}", samples[i].t1_n);
     assert!(((samples[i].t2_n - t2) / t2).abs() < 1e-9, "T2 {} vs {t2}", samples[i].t2_n);
     assert!((samples[i].speed_m_s - (0.513 + 0.6 * 8.29)).abs() < 1e-9);
+}
+
+/// Honest labels: a duty cycle run with the ropes' dynamics reports the code's dynamic safety
+/// factor, on rigid ropes — the same number the scene gives at level 0 — and the level-4 value
+/// beside it under its own name. The brake's step makes the ropes overshoot, so the value with
+/// rope dynamics is the lower one; by default it does not decide the verdict.
+#[test]
+fn duty_cycle_reports_the_code_value_and_the_rope_dynamics_value() {
+    let d = design();
+    let level4 = &run_scenes(&d, &["emergency-MID"])[0];
+    let scenes: Vec<_> = d.scenes.iter().filter(|s| s.name == "emergency-MID").collect();
+    let options = Options { request: wrapcalc::planner::Request::Full { forced_level: Some(0) }, ..Options::default() };
+    let level0 = &run::run(&d, &scenes, options).expect("runs").scenes[0];
+    let code = level4.classical.dynamic_safety_factor.expect("a code value");
+    assert_eq!(Some(code), level0.classical.dynamic_safety_factor, "the code value is level 0's");
+    let ropes = level4.rope_dynamics_safety_factor.expect("a value with rope dynamics");
+    assert!(ropes < code, "{ropes} vs {code}");
+    let check =
+        level4.classical.checks.iter().find(|c| c.name == wrapcalc::run::ROPE_DYNAMICS_CHECK).expect("its check");
+    assert_eq!(check.value, Some(ropes));
+    assert!(check.pass, "not binding by default");
+    assert!(level4.classical.checks.iter().any(|c| c.name == "dynamic safety factor" && c.value == Some(code)));
+}
+
+/// The margins of a duty cycle are measured from the masses that hang at its worst instant,
+/// from the [hoist]: at the travel x of that instant
+///   m1 = 65 000 + 30 000 + 64.86·(463.56 − x) + 69·(28.25 + x),
+///   m2 = 95 000 + 64.86·(51.34 + x) + 69·(453.25 − x)
+/// (about 127 t and 130 t during the emergency stop at x ≈ 120 m), not back-computed from the
+/// dynamic tensions.
+#[test]
+fn duty_cycle_margins_use_the_hanging_masses() {
+    let d = design();
+    let r = &run_scenes(&d, &["emergency-MID"])[0];
+    let m = r.margins.as_ref().expect("margins");
+    let t = m.at_t_s.expect("the worst instant");
+    let SceneKind::DutyCycle(cycle) = &d.scenes.iter().find(|s| s.name == "emergency-MID").unwrap().kind else {
+        panic!("a duty cycle")
+    };
+    let samples = wrapcalc::model::level4::suspended_ropes(&d, d.hoist.as_ref().unwrap(), cycle).expect("runs");
+    let x = samples.iter().find(|s| s.t_s >= t).expect("a sample at the worst instant").x_m;
+    let m1 = 65_000.0 + 30_000.0 + 64.86 * (463.56 - x) + 69.0 * (28.25 + x);
+    let m2 = 95_000.0 + 64.86 * (51.34 + x) + 69.0 * (453.25 - x);
+    // Sums of six terms of order 1e5 kg: round-off well below 1e-6 kg.
+    assert!((m.m1_kg - m1).abs() < 1e-6 && (m.m2_kg - m2).abs() < 1e-6, "{} {} vs {m1} {m2}", m.m1_kg, m.m2_kg);
+    assert!((120_000.0..135_000.0).contains(&m.m1_kg) && (125_000.0..135_000.0).contains(&m.m2_kg));
+}
+
+/// Gross slip ends a trip: the emergency stop at 3 m/s² slips, the onset (time, ratio just above
+/// e^{μα}) is reported, the history stops there and the gross-slip check fails with a note.
+#[test]
+fn gross_slip_onset_ends_the_trip() {
+    let mut d = design();
+    let scene = d.scenes.iter_mut().find(|s| s.name == "emergency-MID").unwrap();
+    let SceneKind::DutyCycle(cycle) = &mut scene.kind else { panic!("a duty cycle") };
+    cycle.emergency.as_mut().unwrap().decel_m_s2 = 3.0;
+    let r = &run_scenes(&d, &["emergency-MID"])[0];
+    let onset = r.slip_onset.expect("the stop slips");
+    let e = r.classical.euler_limit;
+    assert!(onset.ratio > e && onset.ratio < 1.05 * e, "{} vs {e}", onset.ratio);
+    assert!(onset.t_s > 30.0 && onset.t_s < 31.0, "{}", onset.t_s);
+    let last = r.history.as_ref().unwrap().rows.last().unwrap().t_s;
+    assert!(last <= onset.t_s + 1e-9, "the history ends at the onset: {last} vs {}", onset.t_s);
+    let slip = &r.classical.checks[0];
+    assert!(!slip.pass && slip.note.as_deref().is_some_and(|n| n.contains("not valid")));
+    assert!(!r.checks_pass());
 }

@@ -267,9 +267,36 @@ fn cases() -> Vec<Case> {
             label: "rope bending: modulus missing",
             input: Input::Text(format!(
                 "{}\n[lining]\nshear_stiffness_n_per_m2 = 1e7\n",
-                VALID.replacen("ea_n = 1.0e8\n", "ea_n = 1.0e8\ndiameter_m = 0.054\n", 1)
+                VALID.replacen("ea_n = 1.0e8\n", "ea_n = 1.0e8\ndiameter_m = 0.054\nbending_ratio = 0.001\n", 1)
             )),
             expect: &["rope.modulus_pa", "missing"],
+        },
+        Case {
+            label: "requirements: a limit that is not a number",
+            input: Input::Text(format!("{VALID}\n[requirements]\nrope_safety_factor_min = {{ value = \"high\", source = \"x\" }}\n")),
+            expect: &["requirements.rope_safety_factor_min", "source"],
+        },
+        Case {
+            label: "requirements: emergency window upside down",
+            input: Input::Text(format!(
+                "{VALID}\n[requirements]\nemergency_decel_lift_min_m_s2 = 4.0\nemergency_decel_lift_max_m_s2 = 2.0\n"
+            )),
+            expect: &["requirements.emergency_decel_lift_max_m_s2", "exceeds"],
+        },
+        Case {
+            label: "brake: force missing",
+            input: Input::Text(format!("{VALID}\n[brake]\nidle_time_s = 0.3\nbuild_up_s = 0.2\n")),
+            expect: &["brake.force_n", "missing"],
+        },
+        Case {
+            label: "guide sheave inertia without its side",
+            input: edit("wrap_angle_deg = 180.0\n", "wrap_angle_deg = 180.0\n[pulley.guide]\ndiameter_m = 3.0\nequivalent_mass_kg = 100.0\n"),
+            expect: &["pulley.guide.side", "missing"],
+        },
+        Case {
+            label: "load cases without a hoist",
+            input: Input::Text(format!("{VALID}\n[load_cases]\npayloads_kg = [1000.0]\n")),
+            expect: &["load_cases", "[hoist]"],
         },
         Case {
             label: "history: missing CSV",

@@ -445,3 +445,20 @@ fn lining_keys_sweep_at_level_3_and_need_a_lining() {
     let e = run_sweep(&plain, &s).expect_err("no lining to vary").to_string();
     assert!(e.contains("lining.shear_modulus_pa") && e.contains("[lining]"), "{e}");
 }
+
+/// A sweep runs scenes only: the reference sheet, whose `[load_cases]` needs its `[hoist]`,
+/// sweeps a `loads` scene without the hoist (the matrix is not part of a sweep), and the row is
+/// σ = T_lo(e^{μα} − 1)/(T_hi − T_lo) of max-rest (m1 = 152 015.8, m2 = 129 604.2 kg) at μ = 0.3.
+#[test]
+fn a_sheet_with_a_load_case_matrix_sweeps_its_scenes() {
+    let path = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/tables/guo2020.toml"));
+    let mut s = spec(&["pulley.mu=0.3:0.3:1"]);
+    s.scenes = vec!["max-rest".into()];
+    let file = run_sweep(path, &s).expect("sweep");
+    let r = row(&file, "max-rest", 0.3);
+    let alpha = r.num("wrap_angle_deg").expect("angle").to_radians();
+    let expected = 129_604.2 * ((0.3 * alpha).exp() - 1.0) / (152_015.8 - 129_604.2);
+    let got = r.num("safety_factor").expect("a factor");
+    // The same formula in another order: round-off (1e-12 relative).
+    assert!((got - expected).abs() < 1e-12 * expected, "{got} vs {expected}");
+}

@@ -124,10 +124,19 @@ fn bench_design(name: &str, kind: SceneKind) -> Design {
         title: format!("bench: {name}"),
         g_m_s2: crate::design::STANDARD_GRAVITY_M_S2,
         pulley: Pulley { diameter_m: DIAMETER_M, mu: MU, wrap_angle_rad: alpha_rad(), wrap_source: WrapSource::Given },
-        rope: Rope { count: 6, mass_per_m_kg: MASS_PER_M_KG, ea_n: EA_N, bending_stiffness_n_m2: 0.0 },
+        rope: Rope {
+            count: 6,
+            mass_per_m_kg: MASS_PER_M_KG,
+            ea_n: EA_N,
+            bending_stiffness_n_m2: 0.0,
+            diameter_m: None,
+            min_breaking_force_n: None,
+        },
         requirements: Requirements::default(),
         hoist: None,
         lining: None,
+        machine: crate::design::Machine::default(),
+        load_cases: None,
         // The model levels are timed: the derived margins and fit are left out.
         scenes: vec![Scene {
             name: name.into(),

@@ -51,11 +51,16 @@
 //! dissipation is the physical damping.
 //!
 //! The run starts in static equilibrium at `x = 0` (no start-up transient).
+//!
+//! An emergency stop by the brake ([`braked_stop`]) continues a run from the trip instant with
+//! the pulley as a body: its motion is then an unknown of the same scheme.
 
+mod braked;
 mod profile;
 mod rope;
 mod simulate;
 
+pub use braked::{PulleyBody, braked_stop};
 pub use profile::{AT_REST_M_S, Kinematics, MotionProfile, Stage};
 pub use simulate::{Checkpoint, DynSample, SimOptions, simulate, simulate_resumable, simulate_with};
 
@@ -157,6 +162,8 @@ pub enum DynamicsError {
     TooManySteps { steps: f64, limit: usize },
     #[error("the solution became non-finite at t = {t_s} s")]
     Diverged { t_s: f64 },
+    #[error("the brake does not stop the hoist within {max_s} s of the trip at t = {t_s} s")]
+    NoStop { t_s: f64, max_s: f64 },
 }
 
 fn at_time(t_s: Option<f64>) -> String {

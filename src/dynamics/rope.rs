@@ -46,10 +46,23 @@ impl Coeffs {
     /// `K y` into `out`.
     fn k_times(&self, y: &[f64], out: &mut [f64]) {
         let n = y.len();
-        for i in 0..n {
-            let left = if i == 0 { 0.0 } else { y[i - 1] };
-            out[i] = if i + 1 < n { self.ke * (2.0 * y[i] - left - y[i + 1]) } else { self.ke * (y[i] - left) };
+        let mut left = 0.0;
+        for i in 0..n - 1 {
+            out[i] = self.ke * (2.0 * y[i] - left - y[i + 1]);
+            left = y[i];
         }
+        out[n - 1] = self.ke * (y[n - 1] - left);
+    }
+
+    /// `F − K y` into `out` (the consistent loads minus the elastic forces).
+    fn load_minus_k_times(&self, y: &[f64], out: &mut [f64]) {
+        let n = y.len();
+        let mut left = 0.0;
+        for i in 0..n - 1 {
+            out[i] = self.w_n - self.ke * (2.0 * y[i] - left - y[i + 1]);
+            left = y[i];
+        }
+        out[n - 1] = 0.5 * self.w_n + self.end_load_n - self.ke * (y[n - 1] - left);
     }
 
     /// `F_i`, the consistent load of free node `i + 1`.
@@ -106,18 +119,75 @@ impl Forms {
 /// (row `n−1`) and constant off-diagonal `off` in place (Thomas algorithm; the matrices here are
 /// symmetric positive definite, so no pivoting is needed). `scratch` has length `n`.
 fn solve_tridiag(d_int: f64, d_last: f64, off: f64, rhs: &mut [f64], scratch: &mut [f64]) {
-    let n = rhs.len();
-    let mut denom = if n == 1 { d_last } else { d_int };
-    scratch[0] = off / denom;
-    rhs[0] /= denom;
-    for i in 1..n {
-        let d = if i + 1 < n { d_int } else { d_last };
-        denom = d - off * scratch[i - 1];
-        scratch[i] = off / denom;
-        rhs[i] = (rhs[i] - off * rhs[i - 1]) / denom;
+    solve_tridiag_k([((d_int, d_last, off), rhs, scratch)]);
+}
+
+/// The steps of two sides of equal element count ([`SideState::step`] each), their tridiagonal
+/// solves run side by side: each is a chain of dependent operations, and two independent chains
+/// in one loop keep the processor busy while either waits. The results are those of two
+/// separate steps, bit for bit.
+pub(crate) fn step_pair(sides: [(&mut SideState, &Coeffs, &Coeffs); 2], dt: f64, energy: bool) -> [(f64, f64); 2] {
+    let [(a, a_before, a_c), (b, b_before, b_c)] = sides;
+    if a.q.len() != b.q.len() {
+        return [a.step(a_before, a_c, dt, energy), b.step(b_before, b_c, dt, energy)];
     }
-    for i in (0..n.saturating_sub(1)).rev() {
-        rhs[i] -= scratch[i] * rhs[i + 1];
+    let ma = a.predict(a_c, dt);
+    let mb = b.predict(b_c, dt);
+    solve_tridiag_k([(ma, &mut a.rhs, &mut a.scratch), (mb, &mut b.rhs, &mut b.scratch)]);
+    [a.finish(a_before, a_c, dt, energy), b.finish(b_before, b_c, dt, energy)]
+}
+
+/// One system of [`solve_tridiag_k`]: (interior diagonal, last diagonal, off-diagonal), the
+/// right-hand side (solved in place) and the scratch row.
+type Tridiag<'a> = ((f64, f64, f64), &'a mut [f64], &'a mut [f64]);
+
+/// `K` systems of [`solve_tridiag`] of the same size, row by row together: each is a chain of
+/// dependent operations, and independent chains in one loop keep the processor busy while any
+/// one waits (the same operations on each, so the results are those of separate solves).
+///
+/// The elimination factors `c_i = off/(d_int − off·c_{i−1})` of the constant interior rows
+/// converge geometrically (diagonal dominance); once one repeats to the last bit, every later
+/// one is the same number, so they are not recomputed: the result is bit for bit that of the
+/// full recurrence, with one division per row only until then.
+fn solve_tridiag_k<const K: usize>(mut systems: [Tridiag; K]) {
+    let n = systems.first().map_or(0, |s| s.1.len());
+    if n == 0 {
+        return;
+    }
+    if n == 1 {
+        for ((_, last, _), rhs, _) in systems.iter_mut() {
+            rhs[0] /= *last;
+        }
+        return;
+    }
+    let mut inv = [0.0; K];
+    let mut settled = [false; K];
+    for (k, ((d, _, off), rhs, scratch)) in systems.iter_mut().enumerate() {
+        inv[k] = 1.0 / *d;
+        scratch[0] = *off * inv[k];
+        rhs[0] *= inv[k];
+    }
+    for i in 1..n - 1 {
+        for (k, ((d, _, off), rhs, scratch)) in systems.iter_mut().enumerate() {
+            if settled[k] {
+                scratch[i] = scratch[i - 1];
+            } else {
+                inv[k] = 1.0 / (*d - *off * scratch[i - 1]);
+                scratch[i] = *off * inv[k];
+                settled[k] = scratch[i] == scratch[i - 1];
+            }
+            rhs[i] = (rhs[i] - *off * rhs[i - 1]) * inv[k];
+        }
+    }
+    for ((_, last, off), rhs, scratch) in systems.iter_mut() {
+        let inv_last = 1.0 / (*last - *off * scratch[n - 2]);
+        scratch[n - 1] = *off * inv_last;
+        rhs[n - 1] = (rhs[n - 1] - *off * rhs[n - 2]) * inv_last;
+    }
+    for i in (0..n - 1).rev() {
+        for (_, rhs, scratch) in systems.iter_mut() {
+            rhs[i] -= scratch[i] * rhs[i + 1];
+        }
     }
 }
 
@@ -200,7 +270,7 @@ impl SideState {
     }
 
     /// `M a = F − K(q + βv)`.
-    fn refresh_accel(&mut self, c: &Coeffs) {
+    pub fn refresh_accel(&mut self, c: &Coeffs) {
         let n = self.q.len();
         for i in 0..n {
             self.mid_q[i] = self.q[i] + c.beta_s * self.v[i];
@@ -220,7 +290,16 @@ impl SideState {
     /// Returns the work the changing coefficients did over the step,
     /// `E(c⁺; q̄, v̄) − E(c⁻; q̄, v̄)` at the mid-step state, and the dissipated energy
     /// `dt·v̄ᵀ C̄ v̄`.
-    pub fn step(&mut self, before: &Coeffs, c: &Coeffs, dt: f64) -> (f64, f64) {
+    /// With `energy` false the work and dissipation are not computed (returned as 0).
+    pub fn step(&mut self, before: &Coeffs, c: &Coeffs, dt: f64, energy: bool) -> (f64, f64) {
+        let m = self.predict(c, dt);
+        solve_tridiag(m.0, m.1, m.2, &mut self.rhs, &mut self.scratch);
+        self.finish(before, c, dt, energy)
+    }
+
+    /// The predictor of [`Self::step`] and its right-hand side `F − K(q_pred + β v_pred)` (in
+    /// `rhs`); returns the effective matrix's interior diagonal, last diagonal and off-diagonal.
+    fn predict(&mut self, c: &Coeffs, dt: f64) -> (f64, f64, f64) {
         let n = self.q.len();
         let h2 = 0.25 * dt * dt;
         for i in 0..n {
@@ -230,20 +309,24 @@ impl SideState {
             self.mid_q[i] = qp;
             self.scratch[i] = qp + c.beta_s * vp;
         }
-        // rhs = F − K(q_pred + β v_pred)
-        let (pred, rhs) = (&self.scratch, &mut self.rhs);
-        c.k_times(pred, rhs);
-        for (i, r) in rhs.iter_mut().enumerate() {
-            *r = c.load(i, n) - *r;
-        }
+        c.load_minus_k_times(&self.scratch, &mut self.rhs);
         let gamma = 0.5 * dt * c.beta_s + h2;
-        solve_tridiag(
-            4.0 * c.me + 2.0 * gamma * c.ke,
-            2.0 * c.me + c.end_mass_kg + gamma * c.ke,
-            c.me - gamma * c.ke,
-            &mut self.rhs,
-            &mut self.scratch,
-        );
+        (4.0 * c.me + 2.0 * gamma * c.ke, 2.0 * c.me + c.end_mass_kg + gamma * c.ke, c.me - gamma * c.ke)
+    }
+
+    /// The corrector of [`Self::step`], with the new accelerations in `rhs`.
+    fn finish(&mut self, before: &Coeffs, c: &Coeffs, dt: f64, energy: bool) -> (f64, f64) {
+        let n = self.q.len();
+        let h2 = 0.25 * dt * dt;
+        if !energy {
+            for i in 0..n {
+                let a_new = self.rhs[i];
+                self.v[i] = self.mid_v[i] + 0.5 * dt * a_new;
+                self.q[i] = self.mid_q[i] + h2 * a_new;
+                self.a[i] = a_new;
+            }
+            return (0.0, 0.0);
+        }
         for i in 0..n {
             let a_new = self.rhs[i];
             let v_new = self.mid_v[i] + 0.5 * dt * a_new;

@@ -22,12 +22,14 @@ pub struct SimOptions {
     /// side 2), m, with the static shape of an extra end force (linear along the rope): starts
     /// a free vibration. Zero for the usual start in static equilibrium.
     pub initial_offset_m: [f64; 2],
+    /// Whether to keep the energy balance (`work_j`, `dissipated_j` of the samples; 0 without).
+    pub energy: bool,
 }
 
 impl SimOptions {
-    /// `dt_s`, `elements`, every step recorded, start in equilibrium.
+    /// `dt_s`, `elements`, every step recorded, start in equilibrium, the energy balance kept.
     pub fn new(dt_s: f64, elements: usize) -> Self {
-        Self { dt_s, elements, record_every: 1, initial_offset_m: [0.0; 2] }
+        Self { dt_s, elements, record_every: 1, initial_offset_m: [0.0; 2], energy: true }
     }
 }
 
@@ -76,10 +78,10 @@ pub fn simulate(
 }
 
 #[derive(Debug, Clone)]
-struct Side2 {
-    side: Side,
-    state: SideState,
-    coeffs: Coeffs,
+pub(super) struct Side2 {
+    pub side: Side,
+    pub state: SideState,
+    pub coeffs: Coeffs,
 }
 
 /// The integrator's state after one step of a run. A run over a profile that agrees with the
@@ -89,12 +91,12 @@ struct Side2 {
 #[derive(Debug, Clone)]
 pub struct Checkpoint {
     step: usize,
-    t_s: f64,
-    dt_s: f64,
-    elements: usize,
-    sides: Vec<Side2>,
-    work_j: f64,
-    dissipated_j: f64,
+    pub(super) t_s: f64,
+    pub(super) dt_s: f64,
+    pub(super) elements: usize,
+    pub(super) sides: Vec<Side2>,
+    pub(super) work_j: f64,
+    pub(super) dissipated_j: f64,
 }
 
 impl Checkpoint {
@@ -105,7 +107,14 @@ impl Checkpoint {
 }
 
 /// Coefficients of a side at time `t_s` for the kinematics `x_m`, `accel_m_s2`.
-fn coeffs(p: &HoistParams, side: Side, n: usize, t_s: f64, x_m: f64, accel_m_s2: f64) -> Result<Coeffs, DynamicsError> {
+pub(super) fn coeffs(
+    p: &HoistParams,
+    side: Side,
+    n: usize,
+    t_s: f64,
+    x_m: f64,
+    accel_m_s2: f64,
+) -> Result<Coeffs, DynamicsError> {
     let (length_m, end_mass_kg) = p.side_at(side, x_m, Some(t_s))?;
     // a_s: downward rigid acceleration of the side's rope (a_1 = −ẍ, a_2 = +ẍ)
     let a_s = side.down_sign() * accel_m_s2;
@@ -130,7 +139,8 @@ pub fn simulate_with(
 
 /// [`simulate_with`], starting from `from` (a checkpoint of a run with the same time step and
 /// mesh whose profile agrees with `profile` up to the checkpoint; the samples then start at the
-/// checkpoint's instant) and keeping a checkpoint at the last step strictly before `keep_at_s`.
+/// checkpoint's instant) and keeping a checkpoint at the last step strictly before `keep_at_s`
+/// (at the last step, the end of the profile, when `keep_at_s` is at or beyond it).
 pub fn simulate_resumable(
     p: &HoistParams,
     profile: &MotionProfile,
@@ -176,22 +186,8 @@ pub fn simulate_resumable(
         state.displace(&c, opt.initial_offset_m[k]);
         sides.push(Side2 { side, state, coeffs: c });
     }
-    let energy = |sides: &[Side2]| sides.iter().map(|s| s.coeffs.energy_j(&s.state.q, &s.state.v)).sum::<f64>();
-    let ropes = p.ropes as f64;
-    let sample = |t_s: f64, k: super::Kinematics, sides: &[Side2], work_j: f64, dissipated_j: f64| DynSample {
-        t_s,
-        x_m: k.x_m,
-        speed_m_s: k.speed_m_s,
-        accel_m_s2: k.accel_m_s2,
-        t1_n: sides[0].state.top_tension_n(&sides[0].coeffs) / ropes,
-        t2_n: sides[1].state.top_tension_n(&sides[1].coeffs) / ropes,
-        anchor1_n: sides[0].state.anchor_tension_n(&sides[0].coeffs) / ropes,
-        anchor2_n: sides[1].state.anchor_tension_n(&sides[1].coeffs) / ropes,
-        stretch1_m: sides[0].state.end_stretch_m(),
-        stretch2_m: sides[1].state.end_stretch_m(),
-        energy_j: energy(sides),
-        work_j,
-        dissipated_j,
+    let sample = |t_s: f64, k: super::Kinematics, sides: &[Side2], work_j: f64, dissipated_j: f64| {
+        sample_of(p, t_s, k, sides, work_j, dissipated_j)
     };
 
     let (mut work_j, mut dissipated_j) = (0.0, 0.0);
@@ -204,7 +200,11 @@ pub fn simulate_resumable(
     out.push(sample(t_prev, profile.at(t_prev), &sides, work_j, dissipated_j));
     // The step a checkpoint is kept at: the last one strictly before `keep_at_s` (at that instant
     // a stage that steps in may already act).
-    let keep_step = keep_at_s.filter(|t| t.is_finite() && *t > 0.0 && *t < total_s).map(|t| {
+    // A time at or beyond the end keeps the final state.
+    let keep_step = keep_at_s.filter(|t| !t.is_nan() && *t > 0.0).map(|t| {
+        if t >= total_s {
+            return steps;
+        }
         let mut k = ((t / dt).ceil() as usize).saturating_sub(1);
         while k > 0 && k as f64 * dt >= t {
             k -= 1;
@@ -232,16 +232,9 @@ pub fn simulate_resumable(
             continue;
         }
         let kin = profile.at(t);
-        for s in sides.iter_mut() {
-            let c = coeffs(p, s.side, n, t, kin.x_m, kin.accel_m_s2)?;
-            let (w, d) = s.state.step(&s.coeffs, &c, h);
-            s.coeffs = c;
-            work_j += w;
-            dissipated_j += d;
-            if !s.state.is_finite() {
-                return Err(DynamicsError::Diverged { t_s: t });
-            }
-        }
+        let (w, d) = step_sides(p, &mut sides, t, kin.x_m, kin.accel_m_s2, h, opt.energy)?;
+        work_j += w;
+        dissipated_j += d;
         t_prev = t;
         if step % every == 0 || step == steps {
             out.push(sample(t, kin, &sides, work_j, dissipated_j));
@@ -252,4 +245,58 @@ pub fn simulate_resumable(
     }
     crate::tally::add_increments((steps + 1 - first_step) as u64);
     Ok((out, kept))
+}
+
+/// The recorded sample of the sides' state at `t_s` with the pulley's kinematics `k`.
+pub(super) fn sample_of(
+    p: &HoistParams,
+    t_s: f64,
+    k: super::Kinematics,
+    sides: &[Side2],
+    work_j: f64,
+    dissipated_j: f64,
+) -> DynSample {
+    let ropes = p.ropes as f64;
+    DynSample {
+        t_s,
+        x_m: k.x_m,
+        speed_m_s: k.speed_m_s,
+        accel_m_s2: k.accel_m_s2,
+        t1_n: sides[0].state.top_tension_n(&sides[0].coeffs) / ropes,
+        t2_n: sides[1].state.top_tension_n(&sides[1].coeffs) / ropes,
+        anchor1_n: sides[0].state.anchor_tension_n(&sides[0].coeffs) / ropes,
+        anchor2_n: sides[1].state.anchor_tension_n(&sides[1].coeffs) / ropes,
+        stretch1_m: sides[0].state.end_stretch_m(),
+        stretch2_m: sides[1].state.end_stretch_m(),
+        energy_j: sides.iter().map(|s| s.coeffs.energy_j(&s.state.q, &s.state.v)).sum::<f64>(),
+        work_j,
+        dissipated_j,
+    }
+}
+
+/// Steps both sides by `h` to the coefficients of time `t` at travel `x_m` and rigid acceleration
+/// `accel_m_s2` ([`super::rope::step_pair`]); returns the work and the dissipation of the step
+/// (0 without `energy`).
+pub(super) fn step_sides(
+    p: &HoistParams,
+    sides: &mut [Side2],
+    t: f64,
+    x_m: f64,
+    accel_m_s2: f64,
+    h: f64,
+    energy: bool,
+) -> Result<(f64, f64), DynamicsError> {
+    let [s0, s1] = sides else {
+        return Err(DynamicsError::NoElements);
+    };
+    let n = s0.state.q.len();
+    let c0 = coeffs(p, s0.side, n, t, x_m, accel_m_s2)?;
+    let c1 = coeffs(p, s1.side, n, t, x_m, accel_m_s2)?;
+    let [(w0, d0), (w1, d1)] =
+        super::rope::step_pair([(&mut s0.state, &s0.coeffs, &c0), (&mut s1.state, &s1.coeffs, &c1)], h, energy);
+    (s0.coeffs, s1.coeffs) = (c0, c1);
+    if !(s0.state.is_finite() && s1.state.is_finite()) {
+        return Err(DynamicsError::Diverged { t_s: t });
+    }
+    Ok((w0 + w1, d0 + d1))
 }

@@ -101,39 +101,12 @@ pub fn safety_factor(state: &EndState, euler_limit: f64) -> Option<f64> {
     sf.is_finite().then_some(sf)
 }
 
-/// A number with a name and a unit, as printed in a check.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct Quantity {
-    pub name: String,
-    pub value: f64,
-    pub unit: &'static str,
-}
+use crate::check::q;
+pub use crate::check::{Check, Quantity, Relation, Verdict};
+use crate::design::Limit;
 
-fn q(name: &str, value: f64, unit: &'static str) -> Quantity {
-    Quantity { name: name.to_string(), value, unit }
-}
-
-/// How a check's value compares with its limit.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Relation {
-    AtMost,
-    AtLeast,
-}
-
-/// One design check, with everything needed to redo it by hand.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct Check {
-    pub name: &'static str,
-    pub formula: &'static str,
-    pub inputs: Vec<Quantity>,
-    pub intermediates: Vec<Quantity>,
-    /// `None` for an unbounded safety factor (equal tensions).
-    pub value: Option<f64>,
-    pub relation: Relation,
-    pub limit: f64,
-    pub pass: bool,
-}
+/// Source of the Euler/capstan limit.
+pub const EULER_SOURCE: &str = "Euler/capstan: e^{μα} of the sheet's μ and wrap angle";
 
 /// Everything level 0 gives for one state.
 #[derive(Debug, Clone, PartialEq)]
@@ -161,11 +134,33 @@ impl Classical {
     }
 }
 
-/// Level 0 for a `loads` scene.
+/// Level 0 for a `loads` scene. Mass-loaded scenes add the guide sheave's inertia to its side,
+/// `T1 += m_g1·a/n`, `T2 −= m_g2·a/n` (`m_g = J_g/R_g²`, an equivalent mass without weight).
 pub fn loads(design: &Design, scene: &LoadsScene) -> Classical {
-    let state = EndState::of(scene, design.g_m_s2, &design.rope);
+    let mut state = EndState::of(scene, design.g_m_s2, &design.rope);
+    let guide = design.guide_mass_kg();
+    if let EndLoads::Masses { .. } = scene.ends {
+        let n = f64::from(design.rope.count);
+        state.t1_n += guide[0] * scene.accel_m_s2 / n;
+        state.t2_n -= guide[1] * scene.accel_m_s2 / n;
+    }
     let static_state = EndState::at_rest(scene, design.g_m_s2, &design.rope);
-    classical(design, state, static_state)
+    let mut c = classical(design, state, static_state);
+    if let EndLoads::Masses { m1_kg, m2_kg } = scene.ends {
+        let a = scene.accel_m_s2;
+        c.checks = c
+            .checks
+            .into_iter()
+            .map(|k| {
+                if k.name == "static safety factor" {
+                    k.with_masses([m1_kg, m2_kg], [0.0; 2], 0.0)
+                } else {
+                    k.with_masses([m1_kg, m2_kg], guide, a)
+                }
+            })
+            .collect();
+    }
+    c
 }
 
 /// Level 0 for a given state and its state at rest.
@@ -179,7 +174,7 @@ pub fn classical(design: &Design, state: EndState, static_state: EndState) -> Cl
     let sf = safety_factor(&state, limit);
     let static_sf = safety_factor(&static_state, limit);
     let dynamic_sf = if state.accel_m_s2 != 0.0 { sf } else { None };
-    let req = design.requirements;
+    let req = &design.requirements;
 
     let mut checks = vec![gross_slip_check(&state, mu, alpha)];
     checks.push(safety_check(
@@ -188,7 +183,7 @@ pub fn classical(design: &Design, state: EndState, static_state: EndState) -> Cl
         &static_state,
         limit,
         static_sf,
-        req.static_safety_factor_min,
+        &req.static_limit(),
     ));
     if state.accel_m_s2 != 0.0 {
         checks.push(safety_check(
@@ -197,7 +192,7 @@ pub fn classical(design: &Design, state: EndState, static_state: EndState) -> Cl
             &state,
             limit,
             dynamic_sf,
-            req.dynamic_safety_factor_min,
+            &req.dynamic_limit(),
         ));
     }
 
@@ -219,31 +214,28 @@ pub fn classical(design: &Design, state: EndState, static_state: EndState) -> Cl
     }
 }
 
+/// Name of the Euler/capstan check.
+pub const GROSS_SLIP_CHECK: &str = "gross slip (Euler/capstan)";
+
 /// The Euler/capstan check of one state.
-fn gross_slip_check(state: &EndState, mu: f64, alpha: f64) -> Check {
+pub fn gross_slip_check(state: &EndState, mu: f64, alpha: f64) -> Check {
     let limit = euler_limit(mu, alpha);
     let ratio = state.tension_ratio();
-    Check {
-        name: "gross slip (Euler/capstan)",
-        formula: "(T_hi − m'v²) / (T_lo − m'v²) ≤ e^{μα}",
-        inputs: vec![
+    Check::new(GROSS_SLIP_CHECK, "(T_hi − m'v²) / (T_lo − m'v²) ≤ e^{μα}", Some(ratio), "")
+        .inputs(vec![
             q("T1", state.t1_n, "N"),
             q("T2", state.t2_n, "N"),
             q("m'v²", state.centrifugal_n, "N"),
             q("μ", mu, ""),
             q("α", alpha.to_degrees(), "deg"),
-        ],
-        intermediates: vec![
+        ])
+        .intermediates(vec![
             q("μα", mu * alpha, "rad"),
             q("e^{μα}", limit, ""),
             q("ratio", ratio, ""),
             q("β = ln(ratio)/μ", (ratio.ln() / mu).to_degrees(), "deg"),
-        ],
-        value: Some(ratio),
-        relation: Relation::AtMost,
-        limit,
-        pass: ratio <= limit,
-    }
+        ])
+        .against(Relation::AtMost, Some(&Limit { value: limit, source: EULER_SOURCE.into() }), true)
 }
 
 /// Level 0 over the states of a history, `(t_s, state)`: the summary describes the last state;
@@ -253,7 +245,7 @@ pub fn over_history(design: &Design, states: &[(f64, EndState)]) -> Classical {
     let mu = design.pulley.mu;
     let alpha = design.pulley.wrap_angle_rad;
     let limit = euler_limit(mu, alpha);
-    let req = design.requirements;
+    let req = &design.requirements;
     let (t_last, last) = states
         .last()
         .copied()
@@ -286,7 +278,7 @@ pub fn over_history(design: &Design, states: &[(f64, EndState)]) -> Classical {
                 &s,
                 limit,
                 c.static_safety_factor,
-                req.static_safety_factor_min,
+                &req.static_limit(),
             ),
             t,
         ));
@@ -300,7 +292,7 @@ pub fn over_history(design: &Design, states: &[(f64, EndState)]) -> Classical {
                 &s,
                 limit,
                 c.dynamic_safety_factor,
-                req.dynamic_safety_factor_min,
+                &req.dynamic_limit(),
             ),
             t,
         ));
@@ -321,30 +313,25 @@ pub fn worst_instant(design: &Design, states: &[(f64, EndState)]) -> Option<(f64
     by_sf.or_else(|| states.iter().max_by(|a, b| a.1.tension_ratio().total_cmp(&b.1.tension_ratio())).copied())
 }
 
-fn safety_check(
+/// A safety-factor check of one state against `minimum`.
+pub fn safety_check(
     name: &'static str,
     formula: &'static str,
     state: &EndState,
     euler_limit: f64,
     value: Option<f64>,
-    minimum: f64,
+    minimum: &Limit,
 ) -> Check {
-    Check {
-        name,
-        formula,
-        inputs: vec![
+    Check::new(name, formula, value, "")
+        .inputs(vec![
             q("T1", state.t1_n, "N"),
             q("T2", state.t2_n, "N"),
             q("m'v²", state.centrifugal_n, "N"),
             q("e^{μα}", euler_limit, ""),
-        ],
-        intermediates: vec![
+        ])
+        .intermediates(vec![
             q("T_lo − m'v²", state.t_lo_n() - state.centrifugal_n, "N"),
             q("T_hi − T_lo", state.t_hi_n() - state.t_lo_n(), "N"),
-        ],
-        value,
-        relation: Relation::AtLeast,
-        limit: minimum,
-        pass: value.is_none_or(|v| v >= minimum),
-    }
+        ])
+        .against(Relation::AtLeast, Some(minimum), true)
 }

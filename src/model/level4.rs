@@ -10,10 +10,13 @@
 
 use crate::design::{Design, Direction, DutyCycleScene, EmergencyStop, HistorySample, Hoist};
 use crate::dynamics::{
-    self, AT_REST_M_S, Checkpoint, DynSample, DynamicsError, HoistParams, MotionProfile, Side, SimOptions, Stage,
+    self, AT_REST_M_S, Checkpoint, DynSample, DynamicsError, HoistParams, Kinematics, MotionProfile, Side, SimOptions,
+    Stage,
 };
 use crate::margins::{self, Margin};
+use crate::model::braking::{self, BrakeError};
 use crate::model::level0::{EndState, euler_limit};
+use crate::model::stop;
 use crate::roots::RootStats;
 
 /// Finite elements per side of the suspended ropes (the first mode converges to well under 1 %
@@ -44,6 +47,10 @@ pub enum Level4Error {
         short = slack.centrifugal_n - slack.tension_n
     )]
     SlackRope { slack: Box<SlackRope>, level: u8, advice: String },
+    #[error("an emergency stop by the brake needs the sheet's [brake] section")]
+    NoBrake,
+    #[error(transparent)]
+    Brake(#[from] BrakeError),
 }
 
 /// Interval of the end tensions handed to the wrap (s). The dynamics integrate at the scene's
@@ -57,56 +64,37 @@ pub const WRAP_SAMPLE_S: f64 = 0.005;
 /// starts where the lift ends: side 1 at the top, every hanging length moved by the lift's
 /// travel D (`L1 = L1₀ − D`, `L2 = L2₀ + D`, tails the other way).
 pub fn hoist_params(design: &Design, hoist: &Hoist, scene: &DutyCycleScene) -> HoistParams {
-    let d = match scene.direction {
+    let x0_m = match scene.direction {
         Direction::Lift => 0.0,
         Direction::Lower => lift_travel_m(hoist),
     };
-    HoistParams {
-        ropes: design.rope.count as usize,
-        rope_mass_per_m_kg: design.rope.mass_per_m_kg,
-        rope_ea_n: design.rope.ea_n,
-        damping_ratio: hoist.rope_damping_ratio,
-        tail_ropes: hoist.tail_count as usize,
-        tail_mass_per_m_kg: hoist.tail_mass_per_m_kg,
-        side1_mass_kg: hoist.conveyance1_kg + scene.payload_kg,
-        side2_mass_kg: hoist.conveyance2_kg,
-        side1_length0_m: hoist.side1_length_m - d,
-        side2_length0_m: hoist.side2_length_m + d,
-        tail1_length0_m: hoist.tail1_length_m + d,
-        tail2_length0_m: hoist.tail2_length_m - d,
-        g_m_s2: design.g_m_s2,
-    }
+    stop::params_at(design, hoist, scene.payload_kg, x0_m)
 }
 
 /// Travel of the pulley surface over the `[hoist]` profile as given (a lift), m.
-fn lift_travel_m(hoist: &Hoist) -> f64 {
-    hoist_profile(hoist, Direction::Lift).map_or(0.0, |p| p.at(p.duration_s()).x_m)
+pub fn lift_travel_m(hoist: &Hoist) -> f64 {
+    MotionProfile::new(&stages(hoist, Direction::Lift)).map_or(0.0, |p| p.at(p.duration_s()).x_m)
 }
 
-/// The hoist's motion profile for a duty cycle run in `direction`: its stages as given when
-/// lifting side 1, mirrored (every acceleration negated) when lowering it.
-pub fn hoist_profile(hoist: &Hoist, direction: Direction) -> Result<MotionProfile, DynamicsError> {
-    MotionProfile::new(&hoist_stages(hoist, direction))
-}
-
-/// The stages of a trip run in `direction`, and with `return_after_s` a rest of that long and
-/// the same trip back the other way (a round trip).
+/// The stages of a scene's trip: the hoist's stages in its direction, and for a round trip
+/// (`return_after_s`) a rest of that long and the same trip back the other way.
 pub fn trip_stages(hoist: &Hoist, direction: Direction, return_after_s: Option<f64>) -> Vec<Stage> {
-    let mut stages = hoist_stages(hoist, direction);
+    let mut out = stages(hoist, direction);
     if let Some(rest_s) = return_after_s {
         if rest_s > 0.0 {
-            stages.push(Stage { duration_s: Some(rest_s), accel_end_m_s2: 0.0, step: true });
+            out.push(Stage { duration_s: Some(rest_s), accel_end_m_s2: 0.0, step: true });
         }
         let back = match direction {
             Direction::Lift => Direction::Lower,
             Direction::Lower => Direction::Lift,
         };
-        stages.extend(hoist_stages(hoist, back));
+        out.extend(stages(hoist, back));
     }
-    stages
+    out
 }
 
-fn hoist_stages(hoist: &Hoist, direction: Direction) -> Vec<Stage> {
+/// The hoist's stages for a direction of travel (mirrored when lowering side 1).
+pub fn stages(hoist: &Hoist, direction: Direction) -> Vec<Stage> {
     let sign = direction.sign();
     hoist
         .stages
@@ -115,42 +103,72 @@ fn hoist_stages(hoist: &Hoist, direction: Direction) -> Vec<Stage> {
         .collect()
 }
 
-/// The scene's motion profile: the hoist's stages (mirrored when lowering side 1), cut at the
-/// emergency stop and followed by constant braking to rest when the scene has one.
-pub fn motion_profile(hoist: &Hoist, scene: &DutyCycleScene) -> Result<MotionProfile, Level4Error> {
-    let stages = trip_stages(hoist, scene.direction, scene.return_after_s);
-    let Some(stop) = scene.emergency else {
-        return Ok(MotionProfile::new(&stages)?);
-    };
-    let full = MotionProfile::new(&stages)?;
-    if stop.at_s >= full.duration_s() {
-        return Err(Level4Error::EmergencyAfterEnd { at_s: stop.at_s, duration_s: full.duration_s() });
+/// The profile of `stages` up to the trip instant `at_s` ([`stages_until`]). The hoist must be
+/// moving then.
+pub fn profile_until(stages: &[Stage], at_s: f64) -> Result<MotionProfile, Level4Error> {
+    Ok(MotionProfile::new(&stages_until(stages, at_s)?)?)
+}
+
+/// The stages up to `at_s`: the stage it falls in ends there, at the acceleration the profile has
+/// at that instant. An error when `at_s` is not before the end or the hoist is at rest then.
+fn stages_until(stages: &[Stage], at_s: f64) -> Result<Vec<Stage>, Level4Error> {
+    let full = MotionProfile::new(stages)?;
+    if at_s >= full.duration_s() {
+        return Err(Level4Error::EmergencyAfterEnd { at_s, duration_s: full.duration_s() });
     }
-    // The stages up to the stop; the stage it falls in ends there, at the acceleration the
-    // profile has at that instant.
+    let at = full.at(at_s);
+    if at.speed_m_s.abs() <= AT_REST_M_S {
+        return Err(Level4Error::EmergencyAtRest { at_s });
+    }
     let mut cut = Vec::new();
     let mut t = 0.0;
-    for s in &stages {
+    for s in stages {
         let d = s.duration_s.unwrap_or(f64::INFINITY);
-        if t + d >= stop.at_s {
-            let accel = full.at(stop.at_s).accel_m_s2;
-            cut.push(Stage { duration_s: Some(stop.at_s - t), accel_end_m_s2: accel, step: s.step });
+        if t + d >= at_s {
+            cut.push(Stage { duration_s: Some(at_s - t), accel_end_m_s2: at.accel_m_s2, step: s.step });
             break;
         }
         cut.push(*s);
         t += d;
     }
-    let v = full.at(stop.at_s).speed_m_s;
-    if v.abs() <= AT_REST_M_S {
-        return Err(Level4Error::EmergencyAtRest { at_s: stop.at_s });
+    Ok(cut)
+}
+
+/// The scene's motion profile: the hoist's stages (mirrored when lowering side 1), cut at the
+/// emergency stop and followed by constant braking to rest when the scene has an imposed
+/// deceleration; cut at the trip when the `[brake]` stops it (the stop then follows from the
+/// pulley as a body, [`crate::model::stop`]).
+pub fn motion_profile(hoist: &Hoist, scene: &DutyCycleScene) -> Result<MotionProfile, Level4Error> {
+    let stages = trip_stages(hoist, scene.direction, scene.return_after_s);
+    if let Some(at_s) = scene.brake_stop_s {
+        return profile_until(&stages, at_s);
     }
-    cut.push(Stage::step_until_stop(-v.signum() * stop.decel_m_s2));
+    match scene.emergency {
+        None => Ok(MotionProfile::new(&stages)?),
+        Some(stop) => imposed_stop_profile(&stages, stop.at_s, stop.decel_m_s2),
+    }
+}
+
+/// `stages` up to `at_s`, then a step to the deceleration `decel_m_s2` against the motion, held
+/// until the hoist stops.
+pub fn imposed_stop_profile(stages: &[Stage], at_s: f64, decel_m_s2: f64) -> Result<MotionProfile, Level4Error> {
+    let mut cut = stages_until(stages, at_s)?;
+    let v = MotionProfile::new(stages)?.at(at_s).speed_m_s;
+    cut.push(Stage::step_until_stop(-v.signum() * decel_m_s2));
     Ok(MotionProfile::new(&cut)?)
 }
 
 /// Runs the suspended ropes through the scene and returns their samples (one every
-/// [`WRAP_SAMPLE_S`]).
+/// [`WRAP_SAMPLE_S`]), tensions at the friction pulley (the guide sheave's inertia included). A
+/// stop by the `[brake]` continues with the pulley as a body ([`stop::braked_ropes`]).
 pub fn suspended_ropes(design: &Design, hoist: &Hoist, scene: &DutyCycleScene) -> Result<Vec<DynSample>, Level4Error> {
+    if let Some(at_s) = scene.brake_stop_s {
+        let brake = design.machine.brake.ok_or(Level4Error::NoBrake)?;
+        let params = hoist_params(design, hoist, scene);
+        let stages = trip_stages(hoist, scene.direction, scene.return_after_s);
+        let mut trips = stop::braked_ropes(design, &params, &stages, &[at_s], scene.time_step_s, &brake)?;
+        return Ok(trips.pop().unwrap_or_default());
+    }
     Ok(resumable_ropes(design, hoist, scene, None, None)?.0)
 }
 
@@ -165,43 +183,59 @@ fn resumable_ropes(
     let params = hoist_params(design, hoist, scene);
     let profile = motion_profile(hoist, scene)?;
     let record_every = ((WRAP_SAMPLE_S / scene.time_step_s).round() as usize).max(1);
-    let options = SimOptions { record_every, ..SimOptions::new(scene.time_step_s, ELEMENTS_PER_SIDE) };
-    Ok(dynamics::simulate_resumable(&params, &profile, &options, from, keep_at_s)?)
+    let options = SimOptions { record_every, energy: false, ..SimOptions::new(scene.time_step_s, ELEMENTS_PER_SIDE) };
+    let (mut samples, cp) = dynamics::simulate_resumable(&params, &profile, &options, from, keep_at_s)?;
+    stop::with_guide(design, &mut samples);
+    Ok((samples, cp))
 }
 
 /// The end tensions of the classical design check (level 0 of a duty cycle): rigid ropes, so
 /// everything hanging below each tangent point moves with the conveyance:
 ///
-/// `T1 = T1s(x)·(g + a)/g`, `T2 = T2s(x)·(g − a)/g`, with `T1s, T2s` the static tensions at the
-/// travel x ([`dynamics::static_tensions_n`]: conveyance, payload, hoisting and tail ropes),
+/// `T1 = T1s(x)·(g + a)/g + m_g1·a/n`, `T2 = T2s(x)·(g − a)/g − m_g2·a/n`, with `T1s, T2s` the
+/// static tensions at the travel x ([`dynamics::static_tensions_n`]: conveyance, payload,
+/// hoisting and tail ropes) and `m_g` the guide sheave's `J_g/R_g²` on its side,
 ///
-/// sampled along the motion profile every `output_step_s` and at its end. Returns the samples and
-/// the acceleration at each. No rope stretch, no oscillation: the level-4 tensions swing about
-/// these values with the ropes' first longitudinal mode.
+/// sampled along the motion profile every `output_step_s` and at its end ([`rigid_kinematics`]).
+/// Returns the samples and the acceleration at each. No rope stretch, no oscillation: the
+/// level-4 tensions swing about these values with the ropes' first longitudinal mode.
 pub fn rigid_ropes(
     design: &Design,
     hoist: &Hoist,
     scene: &DutyCycleScene,
 ) -> Result<(Vec<HistorySample>, Vec<f64>), Level4Error> {
     let params = hoist_params(design, hoist, scene);
-    let profile = motion_profile(hoist, scene)?;
-    let g = design.g_m_s2;
-    let steps = (profile.duration_s() / scene.output_step_s).ceil() as usize;
-    let mut samples = Vec::with_capacity(steps + 1);
-    let mut accel = Vec::with_capacity(steps + 1);
-    for i in 0..=steps {
-        let t_s = (i as f64 * scene.output_step_s).min(profile.duration_s());
-        let k = profile.at(t_s);
-        let (t1s, t2s) = dynamics::static_tensions_n(&params, k.x_m)?;
-        samples.push(HistorySample {
-            t_s,
-            t1_n: t1s * (g + k.accel_m_s2) / g,
-            t2_n: t2s * (g - k.accel_m_s2) / g,
-            speed_m_s: at_rest_snapped(k.speed_m_s),
-        });
-        accel.push(k.accel_m_s2);
-    }
-    Ok((samples, accel))
+    let kin = rigid_kinematics(design, hoist, scene, &params)?;
+    let samples = stop::rigid_samples(design, &params, &kin)?;
+    Ok((samples, kin.iter().map(|(_, k)| k.accel_m_s2).collect()))
+}
+
+/// The pulley's motion of a scene on rigid ropes, every `output_step_s` and at the end: the
+/// motion profile, or up to the trip and then the `[brake]`'s stop of the pulley as a body
+/// ([`crate::model::braking::rigid_stop`], whose 1 ms steps are thinned to the output step).
+pub fn rigid_kinematics(
+    design: &Design,
+    hoist: &Hoist,
+    scene: &DutyCycleScene,
+    params: &HoistParams,
+) -> Result<Vec<(f64, Kinematics)>, Level4Error> {
+    let step = scene.output_step_s;
+    let on_grid = |profile: &MotionProfile, until_s: f64| -> Vec<(f64, Kinematics)> {
+        let steps = (until_s / step).ceil() as usize;
+        (0..=steps).map(|i| (i as f64 * step).min(until_s)).map(|t| (t, profile.at(t))).collect()
+    };
+    let Some(at_s) = scene.brake_stop_s else {
+        let profile = motion_profile(hoist, scene)?;
+        return Ok(on_grid(&profile, profile.duration_s()));
+    };
+    let brake = design.machine.brake.ok_or(Level4Error::NoBrake)?;
+    let stages = trip_stages(hoist, scene.direction, scene.return_after_s);
+    let (profile, stop) = stop::rigid_braked_kinematics(design, params, &stages, at_s, &brake)?;
+    let mut kin: Vec<(f64, Kinematics)> = on_grid(&profile, at_s).into_iter().filter(|(t, _)| *t < at_s).collect();
+    let every = ((step / braking::STOP_STEP_S).round() as usize).max(1);
+    let last = stop.len().saturating_sub(1);
+    kin.extend(stop.iter().enumerate().filter(|(i, _)| i % every == 0 || *i == last).map(|(_, k)| *k));
+    Ok(kin)
 }
 
 /// Speeds below 1 nm/s are round-off of a profile that has come to rest: exactly 0.

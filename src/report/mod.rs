@@ -7,6 +7,7 @@
 //! wrapcalc wrote itself is ever replaced ([`target`]).
 
 pub mod csv_out;
+pub mod matrix;
 pub mod plot;
 pub mod plot_bench;
 pub mod plot_history;
@@ -82,6 +83,12 @@ fn write_into(dir: &Path, summary: &Summary, run: &RunResult, options: ReportOpt
     let f = File::create(&csv_path).map_err(io(&csv_path))?;
     csv_out::write_summary(BufWriter::new(f), summary)
         .map_err(|source| ReportError::Csv { path: csv_path.display().to_string(), source })?;
+    if let Some(m) = run.design.as_ref().and_then(|d| d.matrix.as_ref()) {
+        let path = dir.join("matrix.csv");
+        let f = File::create(&path).map_err(io(&path))?;
+        matrix::write_matrix_csv(BufWriter::new(f), m)
+            .map_err(|source| ReportError::Csv { path: path.display().to_string(), source })?;
+    }
     run.scenes.par_iter().try_for_each(|scene| write_scene(dir, summary, scene, options))
 }
 
@@ -118,7 +125,8 @@ fn write_scene(dir: &Path, summary: &Summary, scene: &SceneResult, options: Repo
                 summary.requirements.static_safety_factor_min
             };
             let title = format!("{} — history, level {}", scene.name, scene.plan.level);
-            plot_history::plot_history(&scene_dir.join("history.png"), &title, &history.rows, &history.anchors_n, min)?;
+            let path = scene_dir.join("history.png");
+            plot_history::plot_history(&path, &title, &history.rows, &history.anchors_n, min, &history.code_sf)?;
             let times: Vec<f64> = history.rows.iter().map(|r| r.t_s).collect();
             let jdp: Vec<Option<f64>> = history.rows.iter().map(|r| r.jdp_deg).collect();
             let title = format!("{} — friction utilization over the wrap (θ–t)", scene.name);

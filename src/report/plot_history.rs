@@ -24,15 +24,18 @@ const MAP_MAX_COLUMNS: usize = 900;
 
 /// history.png: end tensions, speed and acceleration, JDP and arcs, safety factor over time.
 /// `anchors_n`: tension per rope at the conveyance anchors per row (duty cycles; else empty),
-/// drawn thin beside T1 and T2.
+/// drawn thin beside T1 and T2. `code_sf`: the code's safety factor on rigid ropes over time,
+/// `(t, σ)` (duty cycles with the ropes' dynamics, whose rows then carry the level-4 value;
+/// else empty).
 pub fn plot_history(
     path: &Path,
     title: &str,
     rows: &[HistoryRow],
     anchors_n: &[[f64; 2]],
     safety_factor_min: f64,
+    code_sf: &[(f64, f64)],
 ) -> Result<(), PlotError> {
-    render(path, (1200, 1300), title, |body| draw_history(body, rows, anchors_n, safety_factor_min))
+    render(path, (1200, 1300), title, |body| draw_history(body, rows, anchors_n, safety_factor_min, code_sf))
 }
 
 fn time_range(times: impl Iterator<Item = f64>) -> (f64, f64) {
@@ -45,6 +48,22 @@ fn time_range(times: impl Iterator<Item = f64>) -> (f64, f64) {
     } else {
         (0.0, 1.0)
     }
+}
+
+/// A line of a panel: label, colour, points, drawn as points (else a line).
+type Series<'a> = (&'a str, RGBColor, Vec<(f64, f64)>, bool);
+
+/// The safety-factor panel's lines: the rows' value, labelled by what it is, and the code value
+/// on rigid ropes beside it when given.
+fn sf_series(sf: Vec<(f64, f64)>, code_sf: &[(f64, f64)]) -> Vec<Series<'static>> {
+    if code_sf.is_empty() {
+        return vec![("safety factor (this instant)", T1, sf, false)];
+    }
+    let code: Vec<(f64, f64)> = code_sf.iter().copied().filter(|p| p.1.is_finite()).collect();
+    vec![
+        ("safety factor with rope dynamics (level 4)", T1, sf, false),
+        ("code value: rigid ropes (level 0)", T2, code, false),
+    ]
 }
 
 /// Intervals of time where gross slip was reported.
@@ -61,13 +80,18 @@ fn slip_intervals(rows: &[HistoryRow]) -> Vec<(f64, f64)> {
     out
 }
 
-fn draw_history(body: &Area, rows: &[HistoryRow], anchors_n: &[[f64; 2]], sf_min: f64) -> Result<(), String> {
+fn draw_history(
+    body: &Area,
+    rows: &[HistoryRow],
+    anchors_n: &[[f64; 2]],
+    sf_min: f64,
+    code_sf: &[(f64, f64)],
+) -> Result<(), String> {
     let panels = body.split_evenly((4, 1));
     let x = time_range(rows.iter().map(|r| r.t_s));
     let slips = slip_intervals(rows);
     let kn = |v: f64| v / 1e3;
 
-    type Series<'a> = (&'a str, RGBColor, Vec<(f64, f64)>, bool);
     let series = |f: &dyn Fn(&HistoryRow) -> Option<f64>| -> Vec<(f64, f64)> {
         rows.iter().filter_map(|r| f(r).filter(|v| v.is_finite()).map(|v| (r.t_s, v))).collect()
     };
@@ -115,7 +139,7 @@ fn draw_history(body: &Area, rows: &[HistoryRow], anchors_n: &[[f64; 2]], sf_min
                     * 1.08,
             )),
         ),
-        ("safety factor σ", vec![("safety factor (this instant)", T1, sf.clone(), false)], Some((0.0, sf_top))),
+        ("safety factor σ", sf_series(sf.clone(), code_sf), Some((0.0, sf_top))),
     ];
     for (i, (area, (y_desc, lines, fixed))) in panels.iter().zip(panels_spec).enumerate() {
         let y = fixed.unwrap_or_else(|| padded_range(lines.iter().flat_map(|l| l.2.iter().map(|p| p.1)), 0.01));

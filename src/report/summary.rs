@@ -1,11 +1,13 @@
 //! The scalar summary of a run, as written to summary.json and summary.csv (INTERFACE.md).
 
+use crate::check::Check;
 use crate::cost::Estimate;
 use crate::design::{Design, Requirements};
 use crate::fit::CreepFit;
+use crate::load_cases::MatrixResult;
 use crate::margins::Margins;
-use crate::model::level0::Check;
 use crate::model::level2::StepStats;
+use crate::model::stop::StopReport;
 use crate::roots::RootStats;
 use crate::run::{RunResult, SceneResult};
 use serde::Serialize;
@@ -58,6 +60,20 @@ pub struct SceneSummary {
     /// residual relative to the range of T over the wrap (0: exactly the classical picture).
     pub fit_active_arc_deg: Option<f64>,
     pub fit_rms_residual_rel: Option<f64>,
+    /// Extension (duty cycles with the ropes' dynamics): the lowest dynamic safety factor in
+    /// motion with them; `dynamic_safety_factor` is then the code value, on rigid ropes.
+    pub rope_dynamics_safety_factor: Option<f64>,
+    /// Extension (duty cycles): the onset of gross slip, where the trip ends (time, ratio).
+    pub slip_onset_t_s: Option<f64>,
+    pub slip_onset_ratio: Option<f64>,
+    /// Extension (duty cycles with an emergency stop): the deceleration reached (mean from full
+    /// brake force to standstill), its peak, the slip-limited deceleration on rigid ropes, the
+    /// stopping time from the trip and the stopping distance.
+    pub emergency_decel_m_s2: Option<f64>,
+    pub emergency_peak_decel_m_s2: Option<f64>,
+    pub slip_limited_decel_m_s2: Option<f64>,
+    pub stopping_time_s: Option<f64>,
+    pub stopping_distance_m: Option<f64>,
 }
 
 impl SceneSummary {
@@ -106,6 +122,14 @@ impl SceneSummary {
             braking_margin_sf_m_s2: m.and_then(|m| m.braking_to_min_safety_factor_m_s2.value),
             fit_active_arc_deg: r.fit.as_ref().map(|f| f.active_arc_deg),
             fit_rms_residual_rel: r.fit.as_ref().map(|f| f.rms_residual_rel),
+            rope_dynamics_safety_factor: r.rope_dynamics_safety_factor,
+            slip_onset_t_s: r.slip_onset.map(|o| o.t_s),
+            slip_onset_ratio: r.slip_onset.map(|o| o.ratio),
+            emergency_decel_m_s2: r.stop.map(|s| s.decel_m_s2),
+            emergency_peak_decel_m_s2: r.stop.map(|s| s.peak_decel_m_s2),
+            slip_limited_decel_m_s2: r.stop.map(|s| s.slip_limited_decel_m_s2),
+            stopping_time_s: r.stop.map(|s| s.stop_s - s.trip_s),
+            stopping_distance_m: r.stop.map(|s| s.distance_m),
         }
     }
 }
@@ -125,6 +149,8 @@ pub struct SceneJson {
     pub fit: Option<CreepFit>,
     /// The cost estimated before the scene ran: work per stage and seconds on one core.
     pub cost: Option<Estimate>,
+    /// Duty cycles with an emergency stop: what it reached, with its masses.
+    pub stop: Option<StopReport>,
 }
 
 /// The whole summary.json document.
@@ -135,9 +161,14 @@ pub struct Summary {
     pub version: &'static str,
     pub all_checks_pass: bool,
     pub runtime_ms: f64,
-    /// Extension: the minimum safety factors the checks used.
+    /// Extension: the limits the checks used, each with its source.
     pub requirements: Requirements,
     pub scenes: Vec<SceneJson>,
+    /// Extension (a whole sheet run): the checks of the design as a whole — beside anti-slip,
+    /// then the load-case matrix's — each with its governing case.
+    pub design_checks: Option<Vec<Check>>,
+    /// Extension (a sheet with `[load_cases]`): the load-case matrix, every case.
+    pub load_cases: Option<MatrixResult>,
 }
 
 impl Summary {
@@ -148,7 +179,7 @@ impl Summary {
             version: env!("CARGO_PKG_VERSION"),
             all_checks_pass: run.all_checks_pass(),
             runtime_ms: run.runtime_ms,
-            requirements: design.requirements,
+            requirements: design.requirements.clone(),
             scenes: run
                 .scenes
                 .iter()
@@ -160,8 +191,11 @@ impl Summary {
                     margins: s.margins.clone(),
                     fit: s.fit.clone(),
                     cost: s.cost.clone(),
+                    stop: s.stop,
                 })
                 .collect(),
+            design_checks: run.design.as_ref().map(|d| d.checks.clone()),
+            load_cases: run.design.as_ref().and_then(|d| d.matrix.clone()),
         }
     }
 

@@ -1,8 +1,9 @@
 //! The human report on the terminal: a table of scenes, then every check with its formula,
 //! inputs and intermediate values so that it can be redone by hand.
 
+use crate::check::{Check, Quantity, Verdict};
 use crate::margins::{Margin, Margins};
-use crate::model::level0::{Check, DYNAMIC_CHECK, EndState, Relation};
+use crate::model::level0::{DYNAMIC_CHECK, EndState};
 use crate::run::RunResult;
 use std::fmt::Write;
 
@@ -13,6 +14,20 @@ pub struct Style {
 }
 
 impl Style {
+    /// A check's verdict word, coloured on a terminal.
+    pub fn verdict_of(&self, verdict: Verdict) -> String {
+        match (verdict, self.color) {
+            (Verdict::Pass, _) | (Verdict::Fail, _) => self.verdict(verdict == Verdict::Pass),
+            (Verdict::Warning, true) => "\x1b[1;33mWARNING\x1b[0m".into(),
+            (v, _) => v.label().into(),
+        }
+    }
+
+    /// PASS / FAIL.
+    pub fn verdict_pass(&self, pass: bool) -> String {
+        self.verdict(pass)
+    }
+
     fn verdict(&self, pass: bool) -> String {
         match (pass, self.color) {
             (true, true) => "\x1b[32mPASS\x1b[0m".into(),
@@ -63,15 +78,15 @@ pub fn render(title: &str, sheet: &str, run: &RunResult, style: Style) -> String
     let name_w = run.scenes.iter().map(|s| s.name.len()).max().unwrap_or(5).max(5);
     let _ = writeln!(
         out,
-        "{:<name_w$}  lvl  {:>9}  {:>9}  {:>7}  {:>7}  {:>7}  {:>7}  {:>7}  {:>7}  {:>7}  {:>7}  {:>7}  verdict",
-        "scene", "T1 kN", "T2 kN", "ratio", "e^μα", "σ", "σ_s", "σ_d", "β °", "pos °", "rev °", "JDP °"
+        "{:<name_w$}  lvl  {:>9}  {:>9}  {:>7}  {:>7}  {:>7}  {:>7}  {:>7}  {:>7}  {:>7}  {:>7}  {:>7}  {:>7}  verdict",
+        "scene", "T1 kN", "T2 kN", "ratio", "e^μα", "σ", "σ_s", "σ_d", "σ_ropes", "β °", "pos °", "rev °", "JDP °"
     );
     for s in &run.scenes {
         let c = &s.classical;
         let w = s.wrap.as_ref().map(|w| &w.summary);
         let _ = writeln!(
             out,
-            "{:<name_w$}  {:>3}  {:>9.2}  {:>9.2}  {:>7.4}  {:>7.4}  {:>7}  {:>7}  {:>7}  {:>7.2}  {:>7}  {:>7}  {:>7}  {}{}",
+            "{:<name_w$}  {:>3}  {:>9.2}  {:>9.2}  {:>7.4}  {:>7.4}  {:>7}  {:>7}  {:>7}  {:>7}  {:>7.2}  {:>7}  {:>7}  {:>7}  {}{}",
             s.name,
             s.plan.level,
             c.state.t1_n / 1e3,
@@ -87,15 +102,26 @@ pub fn render(title: &str, sheet: &str, run: &RunResult, style: Style) -> String
             } else {
                 "—".into()
             },
+            // The level-4 value beside the code value (duty cycles with the ropes' dynamics).
+            s.rope_dynamics_safety_factor.map_or_else(|| "—".into(), |v| format!("{v:.3}")),
             c.dynamic_angle_rad.to_degrees(),
             opt(w.map(|w| w.positive_arc_rad.to_degrees()), 2),
             opt(w.map(|w| w.reverse_arc_rad.to_degrees()), 2),
             opt(w.and_then(|w| w.jdp_rad.map(f64::to_degrees)), 2),
             style.verdict(s.checks_pass()),
-            if c.gross_slip { "  GROSS SLIP" } else { "" },
+            match (&s.slip_onset, c.gross_slip) {
+                (Some(o), _) =>
+                    format!("  GROSS SLIP from t = {:.3} s (ratio {:.4}): the trip ends there", o.t_s, o.ratio),
+                (None, true) => "  GROSS SLIP".into(),
+                (None, false) => String::new(),
+            },
         );
     }
     let _ = writeln!(out);
+    let _ = writeln!(
+        out,
+        "σ_d: the code's dynamic safety factor (rigid ropes, T = m(g ± a)/n); σ_ropes: with the suspended ropes' dynamics (level 4)."
+    );
     let _ = writeln!(out, "Checks (per rope; σ = ∞ when T1 = T2):");
     for s in &run.scenes {
         let _ = writeln!(
@@ -122,6 +148,12 @@ pub fn render(title: &str, sheet: &str, run: &RunResult, style: Style) -> String
             );
         }
     }
+    if let Some(d) = &run.design {
+        if let Some(m) = &d.matrix {
+            super::matrix::render_matrix(&mut out, m, style);
+        }
+        super::matrix::render_design_checks(&mut out, d, style);
+    }
     let _ = writeln!(
         out,
         "\n{} — {} scene(s) in {:.2} ms",
@@ -132,43 +164,54 @@ pub fn render(title: &str, sheet: &str, run: &RunResult, style: Style) -> String
     out
 }
 
-fn render_check(out: &mut String, check: &Check, style: Style) {
-    let rel = match check.relation {
-        Relation::AtMost => "≤",
-        Relation::AtLeast => "≥",
+/// One check: value, relation, limit and verdict, then its formula, inputs, intermediate values,
+/// the limit's source and the case that governs it.
+pub(crate) fn render_check(out: &mut String, check: &Check, style: Style) {
+    let value = match (check.value, check.verdict) {
+        (_, Verdict::NotEvaluated) => "—".to_string(),
+        (Some(v), _) => format!("{}{}", number(v), unit_suffix(check.unit)),
+        (None, _) => "∞".into(),
     };
-    let _ = writeln!(
-        out,
-        "  {:<28} {} {} {:.4}  {}",
-        check.name,
-        factor(check.value),
-        rel,
-        check.limit,
-        style.verdict(check.pass)
-    );
+    let limit = check
+        .limit
+        .map_or_else(String::new, |l| format!(" {} {}{}", check.relation.symbol(), number(l), unit_suffix(check.unit)));
+    let _ = writeln!(out, "  {:<44} {value}{limit}  {}", check.name, style.verdict_of(check.verdict));
     let _ = writeln!(out, "      formula: {}", check.formula);
-    let fmt_q = |qs: &[crate::model::level0::Quantity]| {
-        qs.iter()
-            .map(|q| match q.unit {
-                "" => format!("{} = {:.6}", q.name, q.value),
-                "N" => format!("{} = {:.1} N", q.name, q.value),
-                unit => format!("{} = {:.4} {}", q.name, q.value, unit),
-            })
-            .collect::<Vec<_>>()
-            .join(", ")
-    };
-    let _ = writeln!(out, "      inputs:  {}", fmt_q(&check.inputs));
-    let _ = writeln!(out, "      values:  {}", fmt_q(&check.intermediates));
+    let fmt_q = |qs: &[Quantity]| qs.iter().map(Quantity::display).collect::<Vec<_>>().join(", ");
+    if !check.inputs.is_empty() {
+        let _ = writeln!(out, "      inputs:  {}", fmt_q(&check.inputs));
+    }
+    if !check.intermediates.is_empty() {
+        let _ = writeln!(out, "      values:  {}", fmt_q(&check.intermediates));
+    }
+    if let Some(source) = &check.limit_source {
+        let _ = writeln!(out, "      limit:   {source}");
+    }
+    if let Some(case) = &check.governing_case {
+        let _ = writeln!(out, "      governing case: {case}");
+    }
+    if let Some(note) = &check.note {
+        let _ = writeln!(out, "      note:    {note}");
+    }
+}
+
+/// A check's value or limit: 4 decimals below 1000, else 5 significant digits.
+fn number(v: f64) -> String {
+    if v.abs() >= 1e4 { format!("{v:.4e}") } else { format!("{v:.4}") }
+}
+
+fn unit_suffix(unit: &str) -> String {
+    if unit.is_empty() { String::new() } else { format!(" {unit}") }
 }
 
 /// The margins of a scene, one line each with its rigid-rope formula.
 fn render_margins(out: &mut String, m: &Margins) {
-    let at = m.at_t_s.map_or_else(String::new, |t| format!(" (from the worst instant, t = {t} s)"));
-    let _ = writeln!(
-        out,
-        "  margins{at}, by Brent root finding; rigid ropes, m1 = T1·n/(g + a) = {:.1} kg, m2 = T2·n/(g − a) = {:.1} kg:",
-        m.m1_kg, m.m2_kg
-    );
+    let at = m.at_t_s.map_or_else(String::new, |t| format!(" (from the worst instant, t = {t:.3} s)"));
+    let masses = match m.masses_source {
+        "hanging" => format!("the masses hanging then, m1 = {:.1} kg, m2 = {:.1} kg", m.m1_kg, m.m2_kg),
+        _ => format!("m1 = T1·n/(g + a) = {:.1} kg, m2 = T2·n/(g − a) = {:.1} kg", m.m1_kg, m.m2_kg),
+    };
+    let _ = writeln!(out, "  margins{at}, by Brent root finding; rigid ropes, {masses}:");
     let line = |out: &mut String, name: &str, formula: &str, margin: &Margin, unit: &str, digits: usize| {
         let value = match margin.value {
             Some(v) => format!("{v:.digits$} {unit}"),

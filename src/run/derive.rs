@@ -5,6 +5,7 @@ use super::{RunError, SceneResult};
 use crate::design::{Design, Direction, Output, Scene, SceneKind};
 use crate::fit;
 use crate::margins;
+use crate::model::level0::EndState;
 use crate::model::level4;
 
 /// The answers derived from a scene's result that it asks for: margins from its state (a time
@@ -15,7 +16,17 @@ pub(super) fn derive_answers(design: &Design, scene: &Scene, result: &mut SceneR
             Some((t, s)) => (Some(t), s),
             None => (None, result.classical.state),
         };
-        let mut m = margins::of(design, &state, at_t_s);
+        let mut m = match result.hanging_kg {
+            // The masses that hang there (from the [hoist] or the scene), with rigid ropes at the
+            // state's acceleration: T1 = (m1(g + a) + m_g1·a)/n, T2 = (m2(g − a) − m_g2·a)/n.
+            Some([m1, m2]) => {
+                let (g, n, a) = (design.g_m_s2, f64::from(design.rope.count), state.accel_m_s2);
+                let [g1, g2] = design.guide_mass_kg();
+                let rigid = EndState { t1_n: (m1 * (g + a) + g1 * a) / n, t2_n: (m2 * (g - a) - g2 * a) / n, ..state };
+                margins::of_masses(design, &rigid, at_t_s, [m1, m2], [g1, g2])
+            }
+            None => margins::of(design, &state, at_t_s),
+        };
         // An emergency stop with the ropes' dynamics (level 4): each trial runs the ropes.
         if let (SceneKind::DutyCycle(cycle), Some(hoist), 4) = (&scene.kind, &design.hoist, result.plan.level)
             && let Some((slip, sf)) = level4::emergency_margins(design, hoist, cycle, &mut m.root_finding)

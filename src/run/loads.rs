@@ -3,7 +3,7 @@
 use super::time::{Initial, wrap_history};
 use super::{Options, RunError, SceneResult, WrapResult, empty};
 use crate::derived;
-use crate::design::{Design, Direction, HistorySample, LoadsScene, Scene};
+use crate::design::{Design, Direction, EndLoads, HistorySample, LoadsScene, Scene};
 use crate::model::level0::{self, EndState};
 use crate::model::level1;
 use crate::model::level2;
@@ -19,6 +19,9 @@ pub(super) fn run_loads(
 ) -> Result<SceneResult, RunError> {
     let classical = level0::loads(design, loads);
     let mut result = empty(scene, plan, classical);
+    if let EndLoads::Masses { m1_kg, m2_kg } = loads.ends {
+        result.hanging_kg = Some([m1_kg, m2_kg]);
+    }
     match result.plan.level {
         0 => {}
         1 => {

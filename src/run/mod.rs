@@ -6,8 +6,13 @@
 //! from the result ([`derive`]: margins, creep-theory fit, every number finite).
 
 mod derive;
+mod design_checks;
 mod loads;
 mod time;
+mod trip;
+
+pub use design_checks::DesignResult;
+pub use trip::ROPE_DYNAMICS_CHECK;
 
 use derive::{derive_answers, ensure_finite};
 use loads::run_loads;
@@ -22,6 +27,7 @@ use crate::model::level0::{Classical, EndState};
 use crate::model::level2::{HistoryRow, Level2Error, Params, Solver, StepStats};
 use crate::model::level3::Level3Error;
 use crate::model::level4::Level4Error;
+use crate::model::stop::{SlipOnset, StopReport};
 use crate::planner::{self, Plan, PlanError, Request};
 use crate::roots::RootError;
 use crate::wrap::Distribution;
@@ -104,6 +110,9 @@ pub struct HistoryOutput {
     /// Duty cycles: tension per rope at the side-1 and side-2 conveyance anchors at each row's
     /// time (N); empty for other scenes.
     pub anchors_n: Vec<[f64; 2]>,
+    /// Duty cycles with the ropes' dynamics: the code's safety factor on rigid ropes over time,
+    /// `(t, σ)`, beside the rows' level-4 value; empty otherwise.
+    pub code_sf: Vec<(f64, f64)>,
 }
 
 #[derive(Debug, Clone, PartialEq)]
@@ -130,6 +139,16 @@ pub struct SceneResult {
     pub runtime_ms: f64,
     /// The run time estimated before the scene ran, and the work it stands for.
     pub cost: Option<Estimate>,
+    /// Duty cycles with an emergency stop: what the stop reached.
+    pub stop: Option<StopReport>,
+    /// Duty cycles: the onset of gross slip, where the trip ends (the rest is not valid).
+    pub slip_onset: Option<SlipOnset>,
+    /// Duty cycles with the ropes' dynamics (level 4): the lowest dynamic safety factor in motion
+    /// with them, beside the code value on rigid ropes (`classical.dynamic_safety_factor`).
+    pub rope_dynamics_safety_factor: Option<f64>,
+    /// The masses hanging below the tangent points at the state the margins are measured from
+    /// (kg, all ropes): a mass-loaded scene's, a duty cycle's at its worst instant.
+    pub hanging_kg: Option<[f64; 2]>,
 }
 
 impl SceneResult {
@@ -141,12 +160,14 @@ impl SceneResult {
 #[derive(Debug, Clone, PartialEq)]
 pub struct RunResult {
     pub scenes: Vec<SceneResult>,
+    /// The design as a whole ([`run_all`]): the load-case matrix and the checks beside anti-slip.
+    pub design: Option<DesignResult>,
     pub runtime_ms: f64,
 }
 
 impl RunResult {
     pub fn all_checks_pass(&self) -> bool {
-        self.scenes.iter().all(SceneResult::checks_pass)
+        self.scenes.iter().all(SceneResult::checks_pass) && self.design.as_ref().is_none_or(DesignResult::checks_pass)
     }
 }
 
@@ -198,7 +219,30 @@ pub fn run_with_progress(
             result
         })
         .collect::<Result<Vec<_>, _>>()?;
-    Ok(RunResult { scenes, runtime_ms: start.elapsed().as_secs_f64() * 1e3 })
+    Ok(RunResult { scenes, design: None, runtime_ms: start.elapsed().as_secs_f64() * 1e3 })
+}
+
+/// [`run`], then the design as a whole: the load-case matrix of `[load_cases]` (with its level-4
+/// cases unless only the checks are asked for) and the checks beside anti-slip over the matrix's
+/// and the scenes' static states.
+pub fn run_all(design: &Design, scenes: &[&Scene], options: Options) -> Result<RunResult, RunError> {
+    run_all_with_progress(design, scenes, options, &|_| {})
+}
+
+/// [`run_all`] with [`run_with_progress`]'s progress calls.
+pub fn run_all_with_progress(
+    design: &Design,
+    scenes: &[&Scene],
+    options: Options,
+    progress: &(dyn Fn(f64) + Sync),
+) -> Result<RunResult, RunError> {
+    let start = Instant::now();
+    let mut result = run_with_progress(design, scenes, options, progress)?;
+    let rope_dynamics =
+        !matches!(options.request, planner::Request::ChecksOnly | planner::Request::Full { forced_level: Some(0) });
+    result.design = Some(design_checks::evaluate(design, &result.scenes, rope_dynamics)?);
+    result.runtime_ms = start.elapsed().as_secs_f64() * 1e3;
+    Ok(result)
 }
 
 fn run_scene(design: &Design, scene: &Scene, options: Options) -> Result<SceneResult, RunError> {
@@ -231,6 +275,10 @@ fn empty(scene: &Scene, plan: Plan, classical: Classical) -> SceneResult {
         nodes: None,
         runtime_ms: 0.0,
         cost: None,
+        stop: None,
+        slip_onset: None,
+        rope_dynamics_safety_factor: None,
+        hanging_kg: None,
     }
 }
 

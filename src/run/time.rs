@@ -3,13 +3,16 @@
 //! through them at level 2 or 3.
 
 use super::loads::steady_run;
+use super::trip::{self, Trip};
 use super::{HistoryOutput, Options, RunError, SceneResult, WrapResult, empty, params};
 use crate::design::{Design, Direction, DutyCycleScene, HistorySample, HistoryScene, Hoist, Scene};
+use crate::dynamics::Kinematics;
 use crate::model::level0::{self, EndState};
 use crate::model::level1;
 use crate::model::level2::{self, Profile};
 use crate::model::level3;
 use crate::model::level4::{self, Level4Error};
+use crate::model::stop;
 use crate::planner::{self, Plan, PlanError};
 
 pub(super) fn run_history(
@@ -25,7 +28,9 @@ pub(super) fn run_history(
 }
 
 /// A duty cycle: the suspended ropes give the end tensions, which then run as a history. The
-/// wrap starts in the state the previous trip (the other way) left it in.
+/// wrap starts in the state the previous trip (the other way) left it in. The trip ends at the
+/// onset of gross slip, if any (the rest is not valid); its dynamic safety factor is the code's,
+/// on rigid ropes, with the level-4 value beside it ([`trip::code_and_rope_dynamics`]).
 pub(super) fn run_duty_cycle(
     design: &Design,
     scene: &Scene,
@@ -41,23 +46,40 @@ pub(super) fn run_duty_cycle(
         Direction::Lift => Direction::Lower,
         Direction::Lower => Direction::Lift,
     };
-    let output =
-        level2::Output { snapshots_s: &cycle.snapshots_s, step_s: Some(cycle.output_step_s), sample_rows: false };
-    if plan.level == 0 {
-        // The classical check: rigid ropes along the motion profile; no dynamics, no wrap.
-        let (samples, accel) = level4::rigid_ropes(design, hoist, cycle).map_err(err)?;
-        refuse_slack(design, hoist, cycle, &samples, plan.level).map_err(err)?;
-        let input = Samples { samples: &samples, accel_m_s2: Some(&accel), direction_before: before, output };
-        return run_samples(design, scene, input, plan, options);
-    }
-    let dynamics = level4::suspended_ropes(design, hoist, cycle).map_err(err)?;
-    let samples = level4::end_history(&dynamics);
-    refuse_slack(design, hoist, cycle, &samples, plan.level).map_err(err)?;
-    let accel: Vec<f64> = dynamics.iter().map(|s| s.accel_m_s2).collect();
-    let input = Samples { samples: &samples, accel_m_s2: Some(&accel), direction_before: before, output };
+    let params = level4::hoist_params(design, hoist, cycle);
+    // The classical check: rigid ropes along the motion (and the brake's stop).
+    let kin = level4::rigid_kinematics(design, hoist, cycle, &params).map_err(err)?;
+    let rigid_samples = stop::rigid_samples(design, &params, &kin).map_err(|e| err(e.into()))?;
+    let rigid = Trip::valid_part(design, rigid_samples, kin.into_iter().map(|(_, k)| k).collect());
+    let (trip, dynamics) = if plan.level == 0 {
+        (rigid, None)
+    } else {
+        let dynamics = level4::suspended_ropes(design, hoist, cycle).map_err(err)?;
+        let kin = dynamics.iter().map(|s| Kinematics { x_m: s.x_m, speed_m_s: s.speed_m_s, accel_m_s2: s.accel_m_s2 });
+        (Trip::valid_part(design, level4::end_history(&dynamics), kin.collect()), Some((dynamics, rigid)))
+    };
+    refuse_slack(design, hoist, cycle, &trip.samples, plan.level).map_err(err)?;
+    let accel = trip.accel();
+    // Snapshots after the end of a trip that slipped grossly are not valid.
+    let end_s = trip.samples.last().map_or(0.0, |s| s.t_s);
+    let snapshots_s: Vec<f64> = cycle.snapshots_s.iter().copied().filter(|t| *t <= end_s).collect();
+    let output = level2::Output { snapshots_s: &snapshots_s, step_s: Some(cycle.output_step_s), sample_rows: false };
+    let input = Samples { samples: &trip.samples, accel_m_s2: Some(&accel), direction_before: before, output };
     let mut result = run_samples(design, scene, input, plan, options)?;
-    if let Some(history) = &mut result.history {
-        history.anchors_n = history.rows.iter().map(|r| level4::anchors_at(&dynamics, r.t_s)).collect();
+    if let Some((dynamics, rigid)) = &dynamics {
+        let code = trip::code_classical(design, rigid);
+        result.rope_dynamics_safety_factor = trip::code_and_rope_dynamics(design, &mut result.classical, &code);
+        if let Some(history) = &mut result.history {
+            history.anchors_n = history.rows.iter().map(|r| level4::anchors_at(dynamics, r.t_s)).collect();
+            history.code_sf = trip::code_series(design, rigid);
+        }
+    }
+    trip::mark_onset(&mut result.classical, &trip);
+    result.slip_onset = trip.onset;
+    result.hanging_kg = result.worst.and_then(|(t, _)| trip.hanging_kg(&params, t));
+    result.stop = trip.stop_report(design, &params, cycle);
+    if let Some(stop) = &result.stop {
+        trip::push_stop_checks(design, &mut result.classical, stop, &trip, &scene.name);
     }
     Ok(result)
 }
@@ -143,10 +165,16 @@ fn run_samples(
     if run.rows.iter().any(|r| r.gross_slip) {
         result.classical.gross_slip = true;
         if let Some(check) = result.classical.checks.first_mut() {
-            check.pass = false;
+            check.fail();
         }
     }
-    result.history = Some(HistoryOutput { rows: run.rows, map: run.map, stats: run.stats, anchors_n: Vec::new() });
+    result.history = Some(HistoryOutput {
+        rows: run.rows,
+        map: run.map,
+        stats: run.stats,
+        anchors_n: Vec::new(),
+        code_sf: Vec::new(),
+    });
     result.nodes = Some(options.nodes);
     Ok(result)
 }

@@ -126,8 +126,15 @@ fn stage(c: &mut Collector, i: usize, s: &Spanned<RawStage>) -> Option<MotionSta
 }
 
 /// A duty-cycle scene; `hoist` is `None` when the `[hoist]` section is missing or failed (the
-/// scene's own keys are still checked).
-pub(super) fn duty_cycle(c: &mut Collector, at: At, raw: &RawScene, hoist: Option<&Hoist>) -> Option<DutyCycleScene> {
+/// scene's own keys are still checked); `brake`: whether the sheet has a `[brake]`, which stops
+/// a scene that gives `emergency_stop_s` without `emergency_decel_m_s2`.
+pub(super) fn duty_cycle(
+    c: &mut Collector,
+    at: At,
+    raw: &RawScene,
+    hoist: Option<&Hoist>,
+    brake: bool,
+) -> Option<DutyCycleScene> {
     let span_of = |v: &Option<Spanned<toml::Value>>| v.as_ref().map(|v| v.span());
     let foreign_ok = foreign_keys(
         c,
@@ -149,8 +156,13 @@ pub(super) fn duty_cycle(c: &mut Collector, at: At, raw: &RawScene, hoist: Optio
         None => Some(Direction::Lift),
         Some(d) => direction_keyword(c, at, d),
     };
+    let mut brake_stop_s = Some(None);
     let emergency = match (&raw.emergency_stop_s, &raw.emergency_decel_m_s2) {
         (None, None) => Some(None),
+        (Some(t), None) if brake => {
+            brake_stop_s = checked(c, at, "emergency_stop_s", t, NON_NEGATIVE).map(Some);
+            Some(None)
+        }
         (Some(t), Some(d)) => {
             let at_s = checked(c, at, "emergency_stop_s", t, NON_NEGATIVE);
             let decel = in_range(
@@ -168,7 +180,7 @@ pub(super) fn duty_cycle(c: &mut Collector, at: At, raw: &RawScene, hoist: Optio
                 Some(t.span()),
                 at.scene,
                 &at.key("emergency_decel_m_s2"),
-                "missing; emergency braking needs both emergency_stop_s and emergency_decel_m_s2 (m/s², > 0)",
+                "missing; an emergency stop needs emergency_decel_m_s2 (an imposed deceleration, m/s² > 0), or a [brake] section that stops the pulley",
             );
             None
         }
@@ -219,6 +231,7 @@ pub(super) fn duty_cycle(c: &mut Collector, at: At, raw: &RawScene, hoist: Optio
         direction: direction?,
         return_after_s: return_after_s?,
         emergency: emergency?,
+        brake_stop_s: brake_stop_s?,
         snapshots_s: snapshots_s?,
         output_step_s: output_step_s?,
         time_step_s: time_step_s?,
@@ -229,7 +242,8 @@ pub(super) fn duty_cycle(c: &mut Collector, at: At, raw: &RawScene, hoist: Optio
 /// intervals in which the hoist's motion profile moves. `None` when it moves then, or when the
 /// profile itself cannot be built (the run reports that).
 fn emergency_at_rest(hoist: &Hoist, at_s: f64, return_after_s: Option<f64>) -> Option<String> {
-    let profile = crate::dynamics::MotionProfile::new(&level4::trip_stages(hoist, Direction::Lift, return_after_s)).ok()?;
+    let profile =
+        crate::dynamics::MotionProfile::new(&level4::trip_stages(hoist, Direction::Lift, return_after_s)).ok()?;
     let moving = profile.moving_intervals();
     if moving.iter().any(|&(a, b)| a < at_s && at_s < b) {
         return None;

@@ -27,7 +27,7 @@ pub(super) fn lining_section(
             && rope.bending_stiffness_n_m2 > 0.0
         {
             let span =
-                r.get_ref().bending_stiffness_n_m2.as_ref().or(r.get_ref().diameter_m.as_ref()).map(|v| v.span());
+                r.get_ref().bending_stiffness_n_m2.as_ref().or(r.get_ref().modulus_pa.as_ref()).map(|v| v.span());
             c.push(
                 span,
                 None,
@@ -71,15 +71,16 @@ pub(super) fn lining_section(
     Some(Some(Lining { shear_stiffness_n_per_m2: k_s?, rope_inertia }))
 }
 
-/// The rope's EI from `[rope]`: `bending_stiffness_n_m2`, or `diameter_m` + `modulus_pa`
-/// (+ `bending_ratio`, default 0.001) as `ratio · E π d⁴ / 64`; 0 when none is given.
+/// The rope's EI from `[rope]`: `bending_stiffness_n_m2`, or `modulus_pa` + `diameter_m`
+/// (+ `bending_ratio`, default 0.001) as `ratio · E π d⁴ / 64`; 0 when none is given. A
+/// `diameter_m` alone is the rope's diameter for the D/d and pressure checks, not a bending key.
 pub(super) fn bending_stiffness(c: &mut Collector, at: At, r: &RawRope) -> Option<f64> {
-    let derived = [&r.diameter_m, &r.modulus_pa, &r.bending_ratio];
+    let derived = [&r.modulus_pa, &r.bending_ratio];
     match (&r.bending_stiffness_n_m2, derived.iter().any(|v| v.is_some())) {
         (None, false) => Some(0.0),
         (Some(ei), false) => checked(c, at, "bending_stiffness_n_m2", ei, NON_NEGATIVE),
         (Some(ei), true) => {
-            let msg = "give either bending_stiffness_n_m2 or diameter_m, modulus_pa (and bending_ratio), not both";
+            let msg = "give either bending_stiffness_n_m2 or modulus_pa with diameter_m (and bending_ratio), not both";
             c.push(Some(ei.span()), None, "rope.bending_stiffness_n_m2", msg);
             None
         }

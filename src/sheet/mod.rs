@@ -1,7 +1,7 @@
 //! Design sheets: TOML in, a validated [`Design`] out, or every problem found.
 //!
 //! The document is parsed once with spans; each section (`[pulley]`, `[rope]`,
-//! `[requirements]`, `[hoist]`, `[lining]`, every `[[scene]]`) is deserialized on its own so that an error in one does
+//! `[requirements]`, `[hoist]`, `[lining]`, `[brake]`, `[load_cases]`, every `[[scene]]`) is deserialized on its own so that an error in one does
 //! not hide errors in the others; then every value is checked (finite, in range, consistent).
 //! Each diagnostic names the file, line:column, scene, key path, the bad value and what is allowed.
 
@@ -9,8 +9,11 @@ mod diag;
 mod history;
 mod hoist;
 mod lining;
+mod load_cases;
+mod machine;
 mod outputs;
 mod raw;
+mod requirements;
 mod validate;
 
 pub use diag::{Diagnostic, SheetError};
@@ -24,7 +27,8 @@ use toml::Spanned;
 use toml::de::{DeTable, DeValue};
 
 /// Top-level keys a sheet may have.
-const TOP_LEVEL_KEYS: &[&str] = &["title", "g_m_s2", "pulley", "rope", "requirements", "hoist", "scene", "lining"];
+const TOP_LEVEL_KEYS: &[&str] =
+    &["title", "g_m_s2", "pulley", "rope", "requirements", "hoist", "scene", "lining", "brake", "load_cases"];
 
 /// Reads and validates a sheet file.
 pub fn load(path: &Path) -> Result<Design, SheetError> {
@@ -86,6 +90,14 @@ pub fn parse(file: &str, text: &str) -> Result<Design, SheetError> {
             "lining" => {
                 sections.present.push("lining");
                 sections.lining = section(&mut c, value, "lining");
+            }
+            "brake" => {
+                sections.present.push("brake");
+                sections.brake = section(&mut c, value, "brake");
+            }
+            "load_cases" => {
+                sections.present.push("load_cases");
+                sections.load_cases = section(&mut c, value, "load_cases");
             }
             other => c.push(
                 Some(key_span),

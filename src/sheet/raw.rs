@@ -11,6 +11,9 @@ pub struct RawPulley {
     pub mu: Option<Spanned<f64>>,
     pub wrap_angle_deg: Option<Spanned<f64>>,
     pub guide: Option<Spanned<RawGuide>>,
+    /// The friction pulley with motor and gear about its axis: J (kg·m²) or J/R² (kg).
+    pub inertia_kg_m2: Option<Spanned<f64>>,
+    pub equivalent_mass_kg: Option<Spanned<f64>>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -19,6 +22,10 @@ pub struct RawGuide {
     pub diameter_m: Option<Spanned<f64>>,
     pub vertical_m: Option<Spanned<f64>>,
     pub horizontal_m: Option<Spanned<f64>>,
+    /// The guide sheave as a body: the side it deflects, J_g (kg·m²) or J_g/R_g² (kg).
+    pub side: Option<Spanned<i64>>,
+    pub inertia_kg_m2: Option<Spanned<f64>>,
+    pub equivalent_mass_kg: Option<Spanned<f64>>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -31,13 +38,51 @@ pub struct RawRope {
     pub diameter_m: Option<Spanned<f64>>,
     pub modulus_pa: Option<Spanned<f64>>,
     pub bending_ratio: Option<Spanned<f64>>,
+    pub min_breaking_force_n: Option<Spanned<f64>>,
 }
 
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RawRequirements {
-    pub static_safety_factor_min: Option<Spanned<f64>>,
-    pub dynamic_safety_factor_min: Option<Spanned<f64>>,
+    /// Each limit is a number or `{ value = …, source = "…" }`.
+    pub static_safety_factor_min: Option<Spanned<toml::Value>>,
+    pub dynamic_safety_factor_min: Option<Spanned<toml::Value>>,
+    pub dynamic_safety_factor_basis: Option<Spanned<String>>,
+    pub rope_safety_factor_min: Option<Spanned<toml::Value>>,
+    pub pulley_d_ratio_min: Option<Spanned<toml::Value>>,
+    pub guide_d_ratio_min: Option<Spanned<toml::Value>>,
+    pub lining_pressure_max_pa: Option<Spanned<toml::Value>>,
+    pub lining_peak_pressure_max_pa: Option<Spanned<toml::Value>>,
+    pub mu_design_max: Option<Spanned<toml::Value>>,
+    pub static_tension_max_n: Option<Spanned<toml::Value>>,
+    pub static_tension_difference_max_n: Option<Spanned<toml::Value>>,
+    pub emergency_decel_lift_min_m_s2: Option<Spanned<toml::Value>>,
+    pub emergency_decel_lift_max_m_s2: Option<Spanned<toml::Value>>,
+    pub emergency_decel_lower_min_m_s2: Option<Spanned<toml::Value>>,
+    pub emergency_decel_lower_max_m_s2: Option<Spanned<toml::Value>>,
+}
+
+/// The `[brake]` table: the safety brake that stops the pulley in an emergency.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawBrake {
+    pub force_n: Option<Spanned<f64>>,
+    pub torque_n_m: Option<Spanned<f64>>,
+    pub idle_time_s: Option<Spanned<f64>>,
+    pub build_up_s: Option<Spanned<f64>>,
+}
+
+/// The `[load_cases]` table: the load-case matrix of the `[hoist]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawLoadCases {
+    pub payloads_kg: Option<Spanned<Vec<f64>>>,
+    pub directions: Option<Spanned<Vec<Spanned<String>>>>,
+    pub positions: Option<Spanned<Vec<f64>>>,
+    pub rope_dynamics: Option<Spanned<Vec<Spanned<String>>>>,
+    pub rope_dynamics_stops: Option<Spanned<Vec<f64>>>,
+    pub emergency_decel_m_s2: Option<Spanned<f64>>,
+    pub time_step_s: Option<Spanned<f64>>,
 }
 
 /// A `[[scene]]` table. The keys of every kind are accepted here; validation rejects those

@@ -1,10 +1,9 @@
 //! Checks every value of a deserialized sheet and builds the [`Design`].
 
 use super::diag::{Collector, join_key};
-use super::raw::{RawGuide, RawHoist, RawPulley, RawRequirements, RawRope, RawScene};
+use super::raw::{RawBrake, RawGuide, RawHoist, RawLoadCases, RawPulley, RawRequirements, RawRope, RawScene};
 use crate::design::{
-    Design, Direction, EndLoads, LoadsScene, Pulley, Requirements, Rope, STANDARD_GRAVITY_M_S2, Scene, SceneKind,
-    WrapSource,
+    Design, Direction, EndLoads, LoadsScene, Pulley, Rope, STANDARD_GRAVITY_M_S2, Scene, SceneKind, WrapSource,
 };
 use crate::geometry::wrap_angle_from_guide_rad;
 use std::collections::HashMap;
@@ -34,6 +33,8 @@ pub struct Sections {
     pub hoist: Option<Spanned<RawHoist>>,
     pub scenes: Option<Vec<SceneSlot>>,
     pub lining: Option<Spanned<super::raw::RawLining>>,
+    pub brake: Option<Spanned<RawBrake>>,
+    pub load_cases: Option<Spanned<RawLoadCases>>,
 }
 
 /// One `[[scene]]` table: its label (`scene[i]`) and contents when they deserialized.
@@ -153,7 +154,16 @@ pub fn design(c: &mut Collector, s: Sections) -> Option<Design> {
             None
         }
     };
-    let requirements = s.requirements.as_ref().map_or(Some(Requirements::default()), |r| requirements(c, r));
+    let requirements = super::requirements::requirements(c, &s.requirements);
+    let machine = super::machine::machine(c, &s.pulley, &s.brake, pulley.as_ref().map(|p| p.diameter_m));
+    let machine = if s.present.contains(&"brake") && s.brake.is_none() { None } else { machine };
+    let load_cases = super::load_cases::load_cases(
+        c,
+        &s.load_cases,
+        s.present.contains(&"load_cases"),
+        s.present.contains(&"hoist"),
+        s.present.contains(&"brake"),
+    );
     let hoist = match &s.hoist {
         Some(h) => super::hoist::hoist(c, h).map(Some),
         None if s.present.contains(&"hoist") => None,
@@ -161,7 +171,8 @@ pub fn design(c: &mut Collector, s: Sections) -> Option<Design> {
     };
     let scenes = match &s.scenes {
         Some(slots) if !slots.is_empty() => {
-            scenes(c, slots, g_m_s2, rope.as_ref(), hoist.as_ref().map(Option::as_ref), s.present.contains(&"hoist"))
+            let present = (s.present.contains(&"hoist"), s.present.contains(&"brake"));
+            scenes(c, slots, g_m_s2, rope.as_ref(), hoist.as_ref().map(Option::as_ref), present)
         }
         _ => {
             c.push_at(Some(s.doc_span.clone()), None, "scene", "no [[scene]]: a sheet needs at least one scene");
@@ -179,6 +190,8 @@ pub fn design(c: &mut Collector, s: Sections) -> Option<Design> {
         hoist: hoist?,
         scenes: scenes?,
         lining: lining?,
+        machine: machine?,
+        load_cases: load_cases?,
     })
 }
 
@@ -195,12 +208,17 @@ fn pulley(c: &mut Collector, p: &Spanned<RawPulley>) -> Option<Pulley> {
         }
     };
     let wrap = match (&p.wrap_angle_deg, &p.guide) {
+        // A guide sheave without its geometry (kept for D/d and its inertia) beside a given wrap.
+        (Some(a), Some(g)) if g.get_ref().vertical_m.is_none() && g.get_ref().horizontal_m.is_none() => {
+            in_range(c, at, "wrap_angle_deg", a, |a| a > 0.0 && a <= WRAP_ANGLE_MAX_DEG, "a wrap angle 0 < α ≤ 540°")
+                .map(|deg| (deg.to_radians(), WrapSource::Given))
+        }
         (Some(_), Some(g)) => {
             c.push(
                 Some(g.span()),
                 None,
                 "pulley.guide",
-                "give either pulley.wrap_angle_deg or the [pulley.guide] geometry, not both",
+                "give either pulley.wrap_angle_deg or the [pulley.guide] geometry (vertical_m, horizontal_m), not both",
             );
             None
         }
@@ -272,30 +290,15 @@ fn rope(c: &mut Collector, r: &Spanned<RawRope>) -> Option<Rope> {
     let mass_per_m_kg = required(c, at, "mass_per_m_kg", &r.mass_per_m_kg, POSITIVE);
     let ea_n = required(c, at, "ea_n", &r.ea_n, POSITIVE);
     let bending_stiffness_n_m2 = super::lining::bending_stiffness(c, at, r);
+    let (diameter_m, min_breaking_force_n) = super::machine::rope_data(c, at, r)?;
     Some(Rope {
         count: count?,
         mass_per_m_kg: mass_per_m_kg?,
         ea_n: ea_n?,
         bending_stiffness_n_m2: bending_stiffness_n_m2?,
+        diameter_m,
+        min_breaking_force_n,
     })
-}
-
-fn requirements(c: &mut Collector, r: &Spanned<RawRequirements>) -> Option<Requirements> {
-    let span = r.span();
-    let at = At { scene: None, section: "requirements", table_span: &span };
-    let r = r.get_ref();
-    let d = Requirements::default();
-    let s =
-        optional(c, at, "static_safety_factor_min", &r.static_safety_factor_min, POSITIVE, d.static_safety_factor_min);
-    let dy = optional(
-        c,
-        at,
-        "dynamic_safety_factor_min",
-        &r.dynamic_safety_factor_min,
-        POSITIVE,
-        d.dynamic_safety_factor_min,
-    );
-    Some(Requirements { static_safety_factor_min: s?, dynamic_safety_factor_min: dy? })
 }
 
 /// A `direction` value: `"lift"` or `"lower"`.
@@ -318,14 +321,15 @@ fn valid_scene_name(name: &str) -> bool {
         && name.chars().all(|ch| ch.is_ascii_alphanumeric() || matches!(ch, '-' | '_' | '.'))
 }
 
-/// `hoist`: `None` when the `[hoist]` section failed, `Some(None)` when the sheet has none.
+/// `hoist`: `None` when the `[hoist]` section failed, `Some(None)` when the sheet has none;
+/// `(hoist_present, brake_present)`: whether the sheet has these sections.
 fn scenes(
     c: &mut Collector,
     slots: &[SceneSlot],
     g_m_s2: Option<f64>,
     rope: Option<&Rope>,
     hoist: Option<Option<&crate::design::Hoist>>,
-    hoist_present: bool,
+    (hoist_present, brake_present): (bool, bool),
 ) -> Option<Vec<Scene>> {
     let mut seen: HashMap<String, usize> = HashMap::new();
     let mut out = Vec::with_capacity(slots.len());
@@ -388,7 +392,7 @@ fn scenes(
                         None
                     }
                 };
-                super::hoist::duty_cycle(c, at, raw, hoist).map(SceneKind::DutyCycle)
+                super::hoist::duty_cycle(c, at, raw, hoist, brake_present).map(SceneKind::DutyCycle)
             }
             Some(k) => {
                 c.push(

@@ -26,7 +26,8 @@ pub struct Template {
 impl Template {
     /// Validates the sheet as written, then keeps the part of its document the sweep runs: the
     /// selected scenes (`scenes`, empty: all; each must exist), and the `[hoist]` only when a
-    /// duty-cycle scene runs it or a `hoist.*` key is varied. Checks the keys of `varies`.
+    /// duty-cycle scene runs it or a `hoist.*` key is varied (never the `[load_cases]`: a sweep
+    /// runs scenes). Checks the keys of `varies`.
     pub fn new(file: &str, text: &str, scenes: &[String], varies: &[Vary]) -> Result<Self, SweepError> {
         let design = sheet::parse(file, text)?;
         let selected = design
@@ -69,6 +70,8 @@ impl Template {
         if !hoist_used {
             template.doc.remove("hoist");
         }
+        // A sweep runs scenes: the load-case matrix is not part of it.
+        template.doc.remove("load_cases");
         Ok(template)
     }
 

@@ -1,0 +1,111 @@
+//! The emergency stop's checks: the deceleration reached against the sheet's window (a minimum
+//! and a maximum for lifting and for lowering side 1), and against the slip-limited deceleration.
+
+use super::{Check, Relation, q};
+use crate::design::{Design, Direction, Limit};
+use crate::model::braking;
+use crate::model::stop::{SlipOnset, StopReport};
+
+/// Names of the braking checks: the window when lifting and when lowering side 1, and the slip
+/// limit.
+pub const DECEL_LIFT_MIN_CHECK: &str = "emergency deceleration lifting, minimum";
+pub const DECEL_LIFT_MAX_CHECK: &str = "emergency deceleration lifting, maximum";
+pub const DECEL_LOWER_MIN_CHECK: &str = "emergency deceleration lowering, minimum";
+pub const DECEL_LOWER_MAX_CHECK: &str = "emergency deceleration lowering, maximum";
+pub const SLIP_LIMIT_CHECK: &str = "emergency deceleration below the slip limit";
+
+/// Source of the slip-limited deceleration.
+pub const SLIP_LIMIT_SOURCE: &str =
+    "computed: rigid ropes at e^{μα} with the stop's masses (T_rise − m'v² = e^{μα}(T_fall − m'v²))";
+
+/// The checks of one stop; `onset`: gross slip during the trip, which leaves the stop's
+/// deceleration unknown (not evaluated).
+pub fn stop_checks(design: &Design, stop: &StopReport, onset: Option<&SlipOnset>, case: &str) -> Vec<Check> {
+    let (lo, hi) = design.requirements.emergency_window(stop.lifting);
+    let (min_name, max_name) = if stop.lifting {
+        (DECEL_LIFT_MIN_CHECK, DECEL_LIFT_MAX_CHECK)
+    } else {
+        (DECEL_LOWER_MIN_CHECK, DECEL_LOWER_MAX_CHECK)
+    };
+    let inputs = stop_inputs(design, stop);
+    let way = if stop.lifting { "lifting side 1" } else { "lowering side 1" };
+    let formula_window = if stop.timed {
+        "d = v(t_full)/(t_stop − t_full): mean from full brake force to standstill"
+    } else if stop.mode == "brake" {
+        "d = (F_b ± (m1 − m2)g)/M: the full brake force at this position, rigid ropes"
+    } else {
+        "d: the imposed deceleration"
+    };
+    let decel = Some(stop.decel_m_s2);
+    let intermediates = vec![
+        q("d reached", stop.decel_m_s2, "m/s²"),
+        q("peak deceleration", stop.peak_decel_m_s2, "m/s²"),
+        q("stopping distance", stop.distance_m, "m"),
+        q("d_slip", stop.slip_limited_decel_m_s2, "m/s²"),
+    ];
+    let mut checks = vec![
+        Check::new(min_name, formula_window, decel, "m/s²")
+            .inputs(inputs.clone())
+            .intermediates(intermediates.clone())
+            .against(Relation::AtLeast, lo, true),
+        Check::new(max_name, formula_window, decel, "m/s²")
+            .inputs(inputs.clone())
+            .intermediates(intermediates.clone())
+            .against(Relation::AtMost, hi, true),
+        Check::new(
+            SLIP_LIMIT_CHECK,
+            "d ≤ d_slip = [e^{μα}(W_fall − n·m'v²) − (W_rise − n·m'v²)] / [m_rise + e^{μα}·m_fall]",
+            decel,
+            "m/s²",
+        )
+        .inputs(inputs)
+        .intermediates(intermediates)
+        .against(
+            Relation::AtMost,
+            Some(&Limit { value: stop.slip_limited_decel_m_s2, source: SLIP_LIMIT_SOURCE.into() }),
+            true,
+        ),
+    ];
+    for c in &mut checks {
+        c.governing_case = Some(format!("{case} ({way})"));
+        if let Some(o) = onset {
+            *c = c.clone().not_evaluated(format!(
+                "the rope slips grossly at t = {:.3} s (ratio {:.4}): the stop after it is not valid",
+                o.t_s, o.ratio
+            ));
+        }
+    }
+    checks
+}
+
+/// What a stop's checks print as inputs: the stop, the brake and the masses.
+fn stop_inputs(design: &Design, stop: &StopReport) -> Vec<super::Quantity> {
+    let m = &stop.masses;
+    let mut inputs = if stop.timed {
+        vec![
+            q("t_trip", stop.trip_s, "s"),
+            q("v at the trip", stop.speed_at_trip_m_s, "m/s"),
+            q("t_stop", stop.stop_s, "s"),
+        ]
+    } else {
+        vec![q("v", stop.speed_at_trip_m_s, "m/s")]
+    };
+    inputs.extend([
+        q("m1", m.m1_kg, "kg"),
+        q("m2", m.m2_kg, "kg"),
+        q("m_g1 = J_g/R_g² (side 1)", m.guide_kg[0], "kg"),
+        q("m_g2 = J_g/R_g² (side 2)", m.guide_kg[1], "kg"),
+        q("J/R² + n·m'·R·α", m.pulley_kg, "kg"),
+        q("M", m.total_kg(), "kg"),
+    ]);
+    if let (Some(b), "brake") = (design.machine.brake, stop.mode) {
+        let direction = if stop.lifting { Direction::Lift } else { Direction::Lower };
+        inputs.extend([
+            q("F_b", b.force_n, "N"),
+            q("idle time", b.idle_time_s, "s"),
+            q("build-up time", b.build_up_s, "s"),
+            q("(F_b ± (m1 − m2)g)/M", braking::brake_decel_m_s2(m, design.g_m_s2, b.force_n, direction), "m/s²"),
+        ]);
+    }
+    inputs
+}

@@ -1,0 +1,219 @@
+//! Design checks as data: every check wrapcalc makes (the anti-slip checks of level 0, the checks
+//! beside them, the braking checks) is one [`Check`] record: its name, formula, inputs and
+//! intermediate values with units, value, limit, the limit's source and a typed [`Verdict`].
+//! The terminal table, summary.json and any other export render these same records.
+//!
+//! * [`design`]: rope safety factor, D/d of the pulleys, specific pressure on the lining, the
+//!   design cap on μ and the machine ratings, each over the static states of a design;
+//! * [`braking`]: the emergency stop's deceleration against the sheet's window and against the
+//!   slip-limited deceleration.
+
+pub mod braking;
+pub mod design;
+
+use crate::design::Limit;
+use serde::Serialize;
+
+/// A number with a name and a unit, as printed in a check.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Quantity {
+    pub name: String,
+    pub value: f64,
+    pub unit: &'static str,
+}
+
+/// A [`Quantity`].
+pub fn q(name: &str, value: f64, unit: &'static str) -> Quantity {
+    Quantity { name: name.to_string(), value, unit }
+}
+
+impl Quantity {
+    /// `name = value unit`, with as many digits as the unit needs to be redone by hand.
+    pub fn display(&self) -> String {
+        match self.unit {
+            "" => format!("{} = {:.6}", self.name, self.value),
+            "N" | "kg" => format!("{} = {:.1} {}", self.name, self.value, self.unit),
+            "Pa" => format!("{} = {:.4} MPa", self.name, self.value / 1e6),
+            unit => format!("{} = {:.4} {}", self.name, self.value, unit),
+        }
+    }
+}
+
+/// How a check's value compares with its limit.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Relation {
+    AtMost,
+    AtLeast,
+}
+
+impl Relation {
+    pub fn symbol(self) -> &'static str {
+        match self {
+            Relation::AtMost => "≤",
+            Relation::AtLeast => "≥",
+        }
+    }
+
+    /// Whether `value` satisfies the relation to `limit`.
+    pub fn holds(self, value: f64, limit: f64) -> bool {
+        match self {
+            Relation::AtMost => value <= limit,
+            Relation::AtLeast => value >= limit,
+        }
+    }
+}
+
+/// The outcome of a check.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Verdict {
+    /// The value meets its limit.
+    Pass,
+    /// The value violates a binding limit: the design fails (exit status 2).
+    Fail,
+    /// The value violates a limit that does not decide the design (a design cap such as μ, or a
+    /// figure reported beside the binding one); the design still passes.
+    Warning,
+    /// The sheet gives no limit for this check: the value is reported, nothing is judged.
+    NoRequirement,
+    /// An input the check needs is missing from the sheet (the note says which).
+    NotEvaluated,
+}
+
+impl Verdict {
+    /// Whether the verdict lets the design pass.
+    pub fn passes(self) -> bool {
+        self != Verdict::Fail
+    }
+
+    /// The word printed in the table.
+    pub fn label(self) -> &'static str {
+        match self {
+            Verdict::Pass => "PASS",
+            Verdict::Fail => "FAIL",
+            Verdict::Warning => "WARNING",
+            Verdict::NoRequirement => "no requirement given",
+            Verdict::NotEvaluated => "not evaluated",
+        }
+    }
+}
+
+/// One design check, with everything needed to redo it by hand.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Check {
+    pub name: &'static str,
+    pub formula: &'static str,
+    pub inputs: Vec<Quantity>,
+    pub intermediates: Vec<Quantity>,
+    /// `None` for an unbounded safety factor (equal tensions), or when not evaluated.
+    pub value: Option<f64>,
+    /// Unit of the value and the limit ("" for a ratio).
+    pub unit: &'static str,
+    pub relation: Relation,
+    /// `None` when the sheet gives no limit for this check.
+    pub limit: Option<f64>,
+    /// Where the limit comes from, as the sheet states it.
+    pub limit_source: Option<String>,
+    /// Whether the check lets the design pass (`verdict != fail`).
+    pub pass: bool,
+    pub verdict: Verdict,
+    /// The case (scene, load case or instant) that governs the check, where it is taken over
+    /// several.
+    pub governing_case: Option<String>,
+    /// Why a check is not evaluated or what its verdict rests on, when that needs saying.
+    pub note: Option<String>,
+}
+
+impl Check {
+    /// A check of `value` against an optional limit: `Pass`/`Fail` against a binding limit,
+    /// `NoRequirement` without one. An unbounded value (`None`) passes any lower bound.
+    pub fn new(name: &'static str, formula: &'static str, value: Option<f64>, unit: &'static str) -> Self {
+        Self {
+            name,
+            formula,
+            inputs: Vec::new(),
+            intermediates: Vec::new(),
+            value,
+            unit,
+            relation: Relation::AtLeast,
+            limit: None,
+            limit_source: None,
+            pass: true,
+            verdict: Verdict::NoRequirement,
+            governing_case: None,
+            note: None,
+        }
+    }
+
+    pub fn inputs(mut self, inputs: Vec<Quantity>) -> Self {
+        self.inputs = inputs;
+        self
+    }
+
+    pub fn intermediates(mut self, intermediates: Vec<Quantity>) -> Self {
+        self.intermediates = intermediates;
+        self
+    }
+
+    /// Adds the masses behind rigid-rope tensions to the inputs: m1, m2 (all ropes), the guide
+    /// sheave's J_g/R_g² on each side where there is one, and the acceleration a, so that
+    /// T1 = (m1(g + a) + m_g1·a)/n, T2 = (m2(g − a) − m_g2·a)/n can be redone by hand.
+    pub fn with_masses(mut self, masses_kg: [f64; 2], guide_kg: [f64; 2], accel_m_s2: f64) -> Self {
+        self.inputs.extend([q("m1", masses_kg[0], "kg"), q("m2", masses_kg[1], "kg")]);
+        for (i, g) in guide_kg.iter().enumerate().filter(|(_, g)| **g > 0.0) {
+            self.inputs.push(q(if i == 0 { "m_g1 = J_g/R_g²" } else { "m_g2 = J_g/R_g²" }, *g, "kg"));
+        }
+        self.inputs.push(q("a", accel_m_s2, "m/s²"));
+        self
+    }
+
+    pub fn governed_by(mut self, case: impl Into<String>) -> Self {
+        self.governing_case = Some(case.into());
+        self
+    }
+
+    pub fn with_note(mut self, note: impl Into<String>) -> Self {
+        self.note = Some(note.into());
+        self
+    }
+
+    /// Judges the value against `limit` (`relation`); without a limit the verdict is
+    /// `NoRequirement`. A binding limit fails the design when violated, a non-binding one warns.
+    pub fn against(mut self, relation: Relation, limit: Option<&Limit>, binding: bool) -> Self {
+        self.relation = relation;
+        self.limit = limit.map(|l| l.value);
+        self.limit_source = limit.map(|l| l.source.clone());
+        self.verdict = match (limit, self.value) {
+            (None, _) => Verdict::NoRequirement,
+            // An unbounded safety factor meets any minimum.
+            (Some(_), None) if relation == Relation::AtLeast => Verdict::Pass,
+            (Some(_), None) => Verdict::NotEvaluated,
+            (Some(l), Some(v)) if relation.holds(v, l.value) => Verdict::Pass,
+            (Some(_), Some(_)) if binding => Verdict::Fail,
+            (Some(_), Some(_)) => Verdict::Warning,
+        };
+        self.pass = self.verdict.passes();
+        self
+    }
+
+    /// A check that cannot be evaluated: `note` says which input is missing.
+    pub fn not_evaluated(mut self, note: impl Into<String>) -> Self {
+        self.value = None;
+        self.verdict = Verdict::NotEvaluated;
+        self.pass = true;
+        self.note = Some(note.into());
+        self
+    }
+
+    /// Marks the check failed whatever its value says (e.g. gross slip found by the wrap model).
+    pub fn fail(&mut self) {
+        self.verdict = Verdict::Fail;
+        self.pass = false;
+    }
+}
+
+/// Whether every check lets the design pass.
+pub fn all_pass(checks: &[Check]) -> bool {
+    checks.iter().all(|c| c.pass)
+}

@@ -1,0 +1,95 @@
+//! The limits a design is checked against (`[requirements]`), each with where it comes from.
+
+/// A limit and where it comes from, as the sheet states it.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct Limit {
+    pub value: f64,
+    pub source: String,
+}
+
+/// Which dynamic safety factor decides the verdict of a duty cycle run with the ropes' dynamics.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum SafetyFactorBasis {
+    /// The code value: rigid-rope tensions m(g ± a)/n, on which the minimum is calibrated.
+    Code,
+    /// The value with the suspended ropes' dynamics (level 4).
+    RopeDynamics,
+}
+
+/// The `[requirements]`: the anti-slip minimums (with defaults) and the limits of the checks
+/// beside them, each present only when the sheet gives it (no defaults: no invented limits).
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct Requirements {
+    pub static_safety_factor_min: f64,
+    pub dynamic_safety_factor_min: f64,
+    pub static_safety_factor_source: String,
+    pub dynamic_safety_factor_source: String,
+    pub dynamic_safety_factor_basis: SafetyFactorBasis,
+    /// n·F_min over the largest static load of the rope set.
+    pub rope_safety_factor_min: Option<Limit>,
+    /// D/d of the friction pulley and of the guide sheave.
+    pub pulley_d_ratio_min: Option<Limit>,
+    pub guide_d_ratio_min: Option<Limit>,
+    /// Allowed specific pressure (T1 + T2)/(D·d) and local peak n(θ)/(R·d) on the lining (Pa).
+    pub lining_pressure_max_pa: Option<Limit>,
+    pub lining_peak_pressure_max_pa: Option<Limit>,
+    /// Design cap on the friction coefficient (a warning above it).
+    pub mu_design_max: Option<Limit>,
+    /// Machine ratings: largest static tension and tension difference, all ropes (N).
+    pub static_tension_max_n: Option<Limit>,
+    pub static_tension_difference_max_n: Option<Limit>,
+    /// The emergency deceleration's window, lifting and lowering side 1 (m/s²).
+    pub emergency_decel_lift_min_m_s2: Option<Limit>,
+    pub emergency_decel_lift_max_m_s2: Option<Limit>,
+    pub emergency_decel_lower_min_m_s2: Option<Limit>,
+    pub emergency_decel_lower_max_m_s2: Option<Limit>,
+}
+
+/// Source of the two anti-slip minimums when the sheet does not give them.
+pub const DEFAULT_SAFETY_FACTOR_SOURCE: &str = "wrapcalc default: coal-mine design practice for friction hoists";
+
+impl Default for Requirements {
+    /// Coal-mine design practice: 1.75 static, 1.25 dynamic; no other limit.
+    fn default() -> Self {
+        Self {
+            static_safety_factor_min: 1.75,
+            dynamic_safety_factor_min: 1.25,
+            static_safety_factor_source: DEFAULT_SAFETY_FACTOR_SOURCE.into(),
+            dynamic_safety_factor_source: DEFAULT_SAFETY_FACTOR_SOURCE.into(),
+            dynamic_safety_factor_basis: SafetyFactorBasis::Code,
+            rope_safety_factor_min: None,
+            pulley_d_ratio_min: None,
+            guide_d_ratio_min: None,
+            lining_pressure_max_pa: None,
+            lining_peak_pressure_max_pa: None,
+            mu_design_max: None,
+            static_tension_max_n: None,
+            static_tension_difference_max_n: None,
+            emergency_decel_lift_min_m_s2: None,
+            emergency_decel_lift_max_m_s2: None,
+            emergency_decel_lower_min_m_s2: None,
+            emergency_decel_lower_max_m_s2: None,
+        }
+    }
+}
+
+impl Requirements {
+    pub fn static_limit(&self) -> Limit {
+        Limit { value: self.static_safety_factor_min, source: self.static_safety_factor_source.clone() }
+    }
+
+    pub fn dynamic_limit(&self) -> Limit {
+        Limit { value: self.dynamic_safety_factor_min, source: self.dynamic_safety_factor_source.clone() }
+    }
+
+    /// The emergency deceleration's `(minimum, maximum)` when lifting side 1 (`lifting`) or
+    /// lowering it.
+    pub fn emergency_window(&self, lifting: bool) -> (Option<&Limit>, Option<&Limit>) {
+        if lifting {
+            (self.emergency_decel_lift_min_m_s2.as_ref(), self.emergency_decel_lift_max_m_s2.as_ref())
+        } else {
+            (self.emergency_decel_lower_min_m_s2.as_ref(), self.emergency_decel_lower_max_m_s2.as_ref())
+        }
+    }
+}

@@ -1,0 +1,150 @@
+//! The `[requirements]` section: the anti-slip minimums (defaults 1.75 / 1.25) and the limits of
+//! the checks beside them, which have no defaults. Each limit is a number or
+//! `{ value = …, source = "…" }`; the source is printed with the check.
+
+use super::diag::Collector;
+use super::raw::RawRequirements;
+use crate::design::{DEFAULT_SAFETY_FACTOR_SOURCE, Limit, Requirements, SafetyFactorBasis};
+use toml::Spanned;
+
+/// Source of a limit given as a bare number.
+pub const UNSOURCED: &str = "the sheet (no source given)";
+
+/// The section, or the defaults when the sheet has none.
+pub(super) fn requirements(c: &mut Collector, r: &Option<Spanned<RawRequirements>>) -> Option<Requirements> {
+    let Some(r) = r else { return Some(Requirements::default()) };
+    let r = r.get_ref();
+    let d = Requirements::default();
+    let mut ok = true;
+    let mut limit = |key: &str, value: &Option<Spanned<toml::Value>>, allowed: Allowed| -> Option<Limit> {
+        let parsed = value.as_ref().map(|v| parse_limit(c, key, v, allowed));
+        match parsed {
+            Some(None) => {
+                ok = false;
+                None
+            }
+            Some(l) => l,
+            None => None,
+        }
+    };
+    let static_sf = limit("static_safety_factor_min", &r.static_safety_factor_min, POSITIVE);
+    let dynamic_sf = limit("dynamic_safety_factor_min", &r.dynamic_safety_factor_min, POSITIVE);
+    let mut out = Requirements {
+        static_safety_factor_min: static_sf.as_ref().map_or(d.static_safety_factor_min, |l| l.value),
+        static_safety_factor_source: static_sf.map_or_else(|| DEFAULT_SAFETY_FACTOR_SOURCE.into(), |l| l.source),
+        dynamic_safety_factor_min: dynamic_sf.as_ref().map_or(d.dynamic_safety_factor_min, |l| l.value),
+        dynamic_safety_factor_source: dynamic_sf.map_or_else(|| DEFAULT_SAFETY_FACTOR_SOURCE.into(), |l| l.source),
+        rope_safety_factor_min: limit("rope_safety_factor_min", &r.rope_safety_factor_min, POSITIVE),
+        pulley_d_ratio_min: limit("pulley_d_ratio_min", &r.pulley_d_ratio_min, POSITIVE),
+        guide_d_ratio_min: limit("guide_d_ratio_min", &r.guide_d_ratio_min, POSITIVE),
+        lining_pressure_max_pa: limit("lining_pressure_max_pa", &r.lining_pressure_max_pa, POSITIVE),
+        lining_peak_pressure_max_pa: limit("lining_peak_pressure_max_pa", &r.lining_peak_pressure_max_pa, POSITIVE),
+        mu_design_max: limit("mu_design_max", &r.mu_design_max, POSITIVE),
+        static_tension_max_n: limit("static_tension_max_n", &r.static_tension_max_n, POSITIVE),
+        static_tension_difference_max_n: limit(
+            "static_tension_difference_max_n",
+            &r.static_tension_difference_max_n,
+            POSITIVE,
+        ),
+        emergency_decel_lift_min_m_s2: limit("emergency_decel_lift_min_m_s2", &r.emergency_decel_lift_min_m_s2, DECEL),
+        emergency_decel_lift_max_m_s2: limit("emergency_decel_lift_max_m_s2", &r.emergency_decel_lift_max_m_s2, DECEL),
+        emergency_decel_lower_min_m_s2: limit(
+            "emergency_decel_lower_min_m_s2",
+            &r.emergency_decel_lower_min_m_s2,
+            DECEL,
+        ),
+        emergency_decel_lower_max_m_s2: limit(
+            "emergency_decel_lower_max_m_s2",
+            &r.emergency_decel_lower_max_m_s2,
+            DECEL,
+        ),
+        dynamic_safety_factor_basis: SafetyFactorBasis::Code,
+    };
+    if let Some(b) = &r.dynamic_safety_factor_basis {
+        match b.get_ref().as_str() {
+            "code" => {}
+            "rope-dynamics" => out.dynamic_safety_factor_basis = SafetyFactorBasis::RopeDynamics,
+            _ => {
+                ok = false;
+                c.push(
+                    Some(b.span()),
+                    None,
+                    "requirements.dynamic_safety_factor_basis",
+                    "expected \"code\" (rigid-rope tensions, the default) or \"rope-dynamics\" (level 4)",
+                );
+            }
+        }
+    }
+    for (key, lo, hi, raw_hi) in [
+        (
+            "emergency_decel_lift",
+            &out.emergency_decel_lift_min_m_s2,
+            &out.emergency_decel_lift_max_m_s2,
+            &r.emergency_decel_lift_max_m_s2,
+        ),
+        (
+            "emergency_decel_lower",
+            &out.emergency_decel_lower_min_m_s2,
+            &out.emergency_decel_lower_max_m_s2,
+            &r.emergency_decel_lower_max_m_s2,
+        ),
+    ] {
+        if let (Some(lo), Some(hi)) = (lo, hi)
+            && lo.value > hi.value
+        {
+            ok = false;
+            let span = raw_hi.as_ref().map(|v| v.span());
+            let msg = format!("the window's minimum {} m/s² exceeds its maximum {} m/s²", lo.value, hi.value);
+            c.push(span, None, &format!("requirements.{key}_max_m_s2"), msg);
+        }
+    }
+    ok.then_some(out)
+}
+
+/// What a limit's value may be.
+#[derive(Clone, Copy)]
+struct Allowed {
+    ok: fn(f64) -> bool,
+    what: &'static str,
+}
+
+const POSITIVE: Allowed = Allowed { ok: |x| x > 0.0, what: "a finite number > 0" };
+const DECEL: Allowed = Allowed { ok: |x| x > 0.0 && x <= 30.0, what: "a deceleration 0 < d ≤ 30 m/s²" };
+
+/// A number, or a table `{ value = number, source = "text" }`.
+fn parse_limit(c: &mut Collector, key: &str, v: &Spanned<toml::Value>, allowed: Allowed) -> Option<Limit> {
+    let path = format!("requirements.{key}");
+    let expected =
+        format!("expected {} or {{ value = {}, source = \"where the limit comes from\" }}", allowed.what, allowed.what);
+    let number = |x: &toml::Value| match x {
+        toml::Value::Float(f) => Some(*f),
+        toml::Value::Integer(i) => Some(*i as f64),
+        _ => None,
+    };
+    let (value, source) = match v.get_ref() {
+        toml::Value::Table(t) => {
+            let unknown = t.keys().find(|k| *k != "value" && *k != "source");
+            if let Some(k) = unknown {
+                c.push(Some(v.span()), None, &format!("{path}.{k}"), format!("unknown key; {expected}"));
+                return None;
+            }
+            let source = match t.get("source") {
+                None => UNSOURCED.to_string(),
+                Some(toml::Value::String(s)) if !s.trim().is_empty() => s.trim().to_string(),
+                Some(_) => {
+                    c.push(Some(v.span()), None, &format!("{path}.source"), "expected a non-empty text");
+                    return None;
+                }
+            };
+            (t.get("value").and_then(number), source)
+        }
+        other => (number(other), UNSOURCED.to_string()),
+    };
+    match value {
+        Some(x) if x.is_finite() && (allowed.ok)(x) => Some(Limit { value: x, source }),
+        _ => {
+            c.push(Some(v.span()), None, &path, expected);
+            None
+        }
+    }
+}
