@@ -11,6 +11,8 @@ pub struct Design {
     /// The sheet's file name as given on the command line (for messages and reports).
     pub sheet: String,
     pub title: String,
+    /// The report's title block (the `[document]` section; every field optional).
+    pub document: Document,
     pub g_m_s2: f64,
     pub pulley: Pulley,
     pub rope: Rope,
@@ -25,6 +27,17 @@ pub struct Design {
     pub machine: Machine,
     /// The load-case matrix of the `[load_cases]` section, when the sheet has one.
     pub load_cases: Option<LoadCases>,
+}
+
+/// The title block of the calculation report, echoed as the sheet gives it.
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct Document {
+    pub project: Option<String>,
+    pub title: Option<String>,
+    pub revision: Option<String>,
+    pub author: Option<String>,
+    pub checker: Option<String>,
+    pub date: Option<String>,
 }
 
 /// A `--scene` name the sheet does not have.

@@ -75,6 +75,9 @@ struct RunArgs {
     /// Do not draw the PNG plots.
     #[arg(long)]
     no_plots: bool,
+    /// Do not write the calculation report (report.html) and the checks' workbook (checks.xlsx).
+    #[arg(long)]
+    no_report: bool,
     /// Print nothing but errors (and the JSON with --format json).
     #[arg(long)]
     quiet: bool,
@@ -371,7 +374,10 @@ fn run_command(args: RunArgs) -> anyhow::Result<bool> {
     bar.finish_and_clear();
     let result = result.map_err(in_sheet)?;
     let summary = Summary::of(&design, &result);
-    report::write(&out_dir, &summary, &result, report::ReportOptions { plots: !args.no_plots })?;
+    let provenance = report::html::Provenance::of(&args.sheet, std::env::args().collect())
+        .map_err(|e| anyhow::anyhow!("{}: cannot read the sheet again for its SHA-256: {e}", design.sheet))?;
+    let document = (!args.no_report).then_some((&design, &provenance));
+    report::write(&out_dir, &summary, &result, report::ReportOptions { plots: !args.no_plots, document })?;
     print_result(&design, &result, args.format, args.quiet);
     if !args.quiet && args.format == Format::Table {
         println!("report written to {}", out_dir.display());

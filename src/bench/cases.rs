@@ -122,6 +122,7 @@ fn bench_design(name: &str, kind: SceneKind) -> Design {
     Design {
         sheet: "bench".into(),
         title: format!("bench: {name}"),
+        document: crate::design::Document::default(),
         g_m_s2: crate::design::STANDARD_GRAVITY_M_S2,
         pulley: Pulley { diameter_m: DIAMETER_M, mu: MU, wrap_angle_rad: alpha_rad(), wrap_source: WrapSource::Given },
         rope: Rope {

@@ -13,7 +13,7 @@ fn opt(v: Option<f64>, digits: usize) -> String {
 }
 
 /// The position column: "50 %", "t = 12.34 s", "stop 50 %".
-fn position(c: &CaseResult) -> String {
+pub(crate) fn position(c: &CaseResult) -> String {
     match c.position {
         Position::Travel { fraction } => format!("{:.0} % travel", fraction * 100.0),
         Position::WorstInstant { t_s } => format!("worst t={t_s:.2}s"),

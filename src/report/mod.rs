@@ -6,7 +6,10 @@
 //! place, so a failure never leaves a half-written or half-overwritten report. Only a report
 //! wrapcalc wrote itself is ever replaced ([`target`]).
 
+pub mod accuracy;
+pub mod checklist;
 pub mod csv_out;
+pub mod html;
 pub mod matrix;
 pub mod plot;
 pub mod plot_bench;
@@ -15,6 +18,7 @@ pub mod plot_sweep;
 pub mod summary;
 pub mod table;
 pub mod target;
+pub mod xlsx;
 
 use crate::run::{RunResult, SceneResult};
 use rayon::prelude::*;
@@ -32,6 +36,8 @@ pub enum ReportError {
     Csv { path: String, source: csv::Error },
     #[error(transparent)]
     Plot(#[from] plot::PlotError),
+    #[error("cannot write {path}: {source}")]
+    Xlsx { path: String, source: rust_xlsxwriter::XlsxError },
     #[error(
         "{path}: not written, and left as it is: {reason}. wrapcalc replaces only a report it wrote itself \
          (a directory holding a {marker} file); give --out a new or an empty directory, or move this one away",
@@ -45,13 +51,15 @@ pub(crate) fn io(path: &Path) -> impl FnOnce(std::io::Error) -> ReportError + '_
 }
 
 /// What to write besides the summary.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct ReportOptions {
+#[derive(Clone, Copy)]
+pub struct ReportOptions<'a> {
     pub plots: bool,
+    /// The calculation report (`report.html`, `checks.xlsx`) of this design, when wanted.
+    pub document: Option<(&'a crate::design::Design, &'a html::Provenance)>,
 }
 
 /// Writes the complete report for `run` to `dir`, atomically.
-pub fn write(dir: &Path, summary: &Summary, run: &RunResult, options: ReportOptions) -> Result<(), ReportError> {
+pub fn write(dir: &Path, summary: &Summary, run: &RunResult, options: ReportOptions<'_>) -> Result<(), ReportError> {
     write_dir(dir, ReportKind::Run, |staged| write_into(staged, summary, run, options))
 }
 
@@ -76,7 +84,7 @@ pub fn write_dir(
     swap_into_place(staging, &dir, &parent)
 }
 
-fn write_into(dir: &Path, summary: &Summary, run: &RunResult, options: ReportOptions) -> Result<(), ReportError> {
+fn write_into(dir: &Path, summary: &Summary, run: &RunResult, options: ReportOptions<'_>) -> Result<(), ReportError> {
     let json_path = dir.join("summary.json");
     fs::write(&json_path, summary.to_json() + "\n").map_err(io(&json_path))?;
     let csv_path = dir.join("summary.csv");
@@ -89,11 +97,34 @@ fn write_into(dir: &Path, summary: &Summary, run: &RunResult, options: ReportOpt
         matrix::write_matrix_csv(BufWriter::new(f), m)
             .map_err(|source| ReportError::Csv { path: path.display().to_string(), source })?;
     }
-    run.scenes.par_iter().try_for_each(|scene| write_scene(dir, summary, scene, options))
+    run.scenes.par_iter().try_for_each(|scene| write_scene(dir, summary, scene, options))?;
+    if let Some((design, provenance)) = options.document {
+        write_document(dir, design, provenance, run)?;
+    }
+    Ok(())
+}
+
+/// The calculation report (after the figures it embeds) and the checks' workbook.
+fn write_document(
+    dir: &Path,
+    design: &crate::design::Design,
+    provenance: &html::Provenance,
+    run: &RunResult,
+) -> Result<(), ReportError> {
+    let path = dir.join("report.html");
+    html::write(&path, &html::Context { design, run, provenance, dir }).map_err(io(&path))?;
+    let path = dir.join("checks.xlsx");
+    xlsx::write_checks(&path, &design.title, run)
+        .map_err(|source| ReportError::Xlsx { path: path.display().to_string(), source })
 }
 
 /// A scene's folder: distribution (and history) CSV and plots.
-fn write_scene(dir: &Path, summary: &Summary, scene: &SceneResult, options: ReportOptions) -> Result<(), ReportError> {
+fn write_scene(
+    dir: &Path,
+    summary: &Summary,
+    scene: &SceneResult,
+    options: ReportOptions<'_>,
+) -> Result<(), ReportError> {
     let Some(wrap) = &scene.wrap else { return Ok(()) };
     let scene_dir = dir.join(&scene.name);
     fs::create_dir_all(&scene_dir).map_err(io(&scene_dir))?;

@@ -196,11 +196,11 @@ pub(crate) fn render_check(out: &mut String, check: &Check, style: Style) {
 }
 
 /// A check's value or limit: 4 decimals below 1000, else 5 significant digits.
-fn number(v: f64) -> String {
+pub(crate) fn number(v: f64) -> String {
     if v.abs() >= 1e4 { format!("{v:.4e}") } else { format!("{v:.4}") }
 }
 
-fn unit_suffix(unit: &str) -> String {
+pub(crate) fn unit_suffix(unit: &str) -> String {
     if unit.is_empty() { String::new() } else { format!(" {unit}") }
 }
 

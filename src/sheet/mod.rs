@@ -6,6 +6,7 @@
 //! Each diagnostic names the file, line:column, scene, key path, the bad value and what is allowed.
 
 mod diag;
+mod document;
 mod history;
 mod hoist;
 mod lining;
@@ -27,8 +28,19 @@ use toml::Spanned;
 use toml::de::{DeTable, DeValue};
 
 /// Top-level keys a sheet may have.
-const TOP_LEVEL_KEYS: &[&str] =
-    &["title", "g_m_s2", "pulley", "rope", "requirements", "hoist", "scene", "lining", "brake", "load_cases"];
+const TOP_LEVEL_KEYS: &[&str] = &[
+    "title",
+    "g_m_s2",
+    "pulley",
+    "rope",
+    "requirements",
+    "hoist",
+    "scene",
+    "lining",
+    "brake",
+    "load_cases",
+    "document",
+];
 
 /// Reads and validates a sheet file.
 pub fn load(path: &Path) -> Result<Design, SheetError> {
@@ -82,6 +94,7 @@ pub fn parse(file: &str, text: &str) -> Result<Design, SheetError> {
                 sections.rope = section(&mut c, value, "rope");
             }
             "requirements" => sections.requirements = section(&mut c, value, "requirements"),
+            "document" => sections.document = section(&mut c, value, "document"),
             "hoist" => {
                 sections.present.push("hoist");
                 sections.hoist = section(&mut c, value, "hoist");

@@ -35,6 +35,7 @@ pub struct Sections {
     pub lining: Option<Spanned<super::raw::RawLining>>,
     pub brake: Option<Spanned<RawBrake>>,
     pub load_cases: Option<Spanned<RawLoadCases>>,
+    pub document: Option<Spanned<super::document::RawDocument>>,
 }
 
 /// One `[[scene]]` table: its label (`scene[i]`) and contents when they deserialized.
@@ -180,9 +181,11 @@ pub fn design(c: &mut Collector, s: Sections) -> Option<Design> {
         }
     };
     let lining = super::lining::lining_section(c, &s.lining, &s.present, &s.rope, rope.as_ref());
+    let document = super::document::document(c, &s.document);
     Some(Design {
         sheet: c.file.to_string(),
         title,
+        document,
         g_m_s2: g_m_s2?,
         pulley: pulley?,
         rope: rope?,

@@ -1,0 +1,122 @@
+//! Sections 1, 2 and 4: the title block, the requirements with their sources, and the
+//! assumptions and limits of the model levels the run used.
+
+use super::{Context, esc, table};
+use crate::design::Limit;
+use crate::requirements::SafetyFactorBasis;
+use std::collections::BTreeSet;
+use std::fmt::Write;
+use std::io;
+
+/// 1. Project and revision: the `[document]` section as the sheet gives it.
+pub fn project(out: &mut String, ctx: &Context) -> io::Result<()> {
+    let d = &ctx.design.document;
+    let fields = [
+        ("project", &d.project),
+        ("title", &d.title),
+        ("revision", &d.revision),
+        ("author", &d.author),
+        ("checker", &d.checker),
+        ("date", &d.date),
+    ];
+    let given: Vec<Vec<String>> =
+        fields.iter().filter_map(|(k, v)| v.as_ref().map(|v| vec![(*k).to_string(), esc(v)])).collect();
+    if given.is_empty() {
+        out.push_str("<p class=\"note\">The sheet has no <code>[document]</code> section (project, title, revision, author, checker, date).</p>\n");
+    } else {
+        table(out, "", &["field", "as given in [document]"], given);
+    }
+    let _ = writeln!(
+        out,
+        "<p>Design sheet: <code>{}</code>; sheet title: {}.</p>",
+        esc(&ctx.design.sheet),
+        esc(&ctx.design.title)
+    );
+    Ok(())
+}
+
+/// 2. Basis: every requirement the checks are judged against, with its source as the sheet states it.
+pub fn basis(out: &mut String, ctx: &Context) -> io::Result<()> {
+    let r = &ctx.design.requirements;
+    let basis = match r.dynamic_safety_factor_basis {
+        SafetyFactorBasis::Code => "the code value (rigid-rope tensions m(g ± a)/n)",
+        SafetyFactorBasis::RopeDynamics => "the value with the suspended ropes' dynamics (level 4)",
+    };
+    let fixed = [
+        ("static anti-slip safety factor σ_s", "≥", r.static_safety_factor_min, "", &r.static_safety_factor_source),
+        ("dynamic anti-slip safety factor σ_d", "≥", r.dynamic_safety_factor_min, "", &r.dynamic_safety_factor_source),
+    ];
+    let mut rows: Vec<Vec<String>> =
+        fixed.iter().map(|(n, rel, v, u, s)| vec![esc(n), format!("{rel} {v} {u}"), esc(s)]).collect();
+    let optional: [(&str, &str, &Option<Limit>, &str); 12] = [
+        ("rope safety factor", "≥", &r.rope_safety_factor_min, ""),
+        ("D/d of the friction pulley", "≥", &r.pulley_d_ratio_min, ""),
+        ("D/d of the guide sheave", "≥", &r.guide_d_ratio_min, ""),
+        ("specific pressure on the lining", "≤", &r.lining_pressure_max_pa, "Pa"),
+        ("peak pressure on the lining", "≤", &r.lining_peak_pressure_max_pa, "Pa"),
+        ("design cap on μ (a warning above it)", "≤", &r.mu_design_max, ""),
+        ("largest static tension, all ropes", "≤", &r.static_tension_max_n, "N"),
+        ("largest static tension difference, all ropes", "≤", &r.static_tension_difference_max_n, "N"),
+        ("emergency deceleration lifting", "≥", &r.emergency_decel_lift_min_m_s2, "m/s²"),
+        ("emergency deceleration lifting", "≤", &r.emergency_decel_lift_max_m_s2, "m/s²"),
+        ("emergency deceleration lowering", "≥", &r.emergency_decel_lower_min_m_s2, "m/s²"),
+        ("emergency deceleration lowering", "≤", &r.emergency_decel_lower_max_m_s2, "m/s²"),
+    ];
+    rows.extend(optional.iter().map(|(n, rel, l, u)| match l {
+        Some(l) => vec![esc(n), format!("{rel} {} {u}", l.value), esc(&l.source)],
+        None => {
+            vec![esc(n), "—".into(), "<span class=\"note\">no requirement given: reported, not judged</span>".into()]
+        }
+    }));
+    table(out, "", &["requirement", "limit", "source (as the sheet states it)"], rows);
+    let _ = writeln!(
+        out,
+        "<p>The dynamic minimum is checked against {basis}. The gross-slip limit e<sup>μα</sup> is computed (Euler/capstan), not a requirement.</p>"
+    );
+    Ok(())
+}
+
+/// What each level assumes and where it stops being valid.
+fn level_text(level: u8) -> &'static str {
+    match level {
+        0 => {
+            "Closed-form checks (Euler/capstan): rope as a string on a rigid pulley, Coulomb friction with one \
+              μ, tension ratio (T_hi − m'v²)/(T_lo − m'v²) against e^{μα}; says whether the rope slips grossly, \
+              not where friction acts over the wrap."
+        }
+        1 => {
+            "Creep theory of steady rolling: constant end tensions and speed; an idle arc at the entry tension, \
+              then an active arc β = ln(ratio)/μ at the exit where the tension falls exponentially. Exact for a \
+              steady state; no load history."
+        }
+        2 => {
+            "Discrete stick–slip model on a rigid lining: the rope sticks where |q| < μn and slips at the \
+              Coulomb bound; the load history is carried by the pulley. Exact exponential pieces between knots; \
+              no lining elasticity, no rope bending, rope inertia only through m'v²."
+        }
+        3 => {
+            "Elastic lining: a shear foundation k_s under an extensible rope (EA), increments solved as a \
+              convex program with |q| ≤ μn; the segment length Rα/N should stay well below λ = √(EA/k_s)."
+        }
+        _ => {
+            "Duty cycle: the suspended ropes as finite elements (axial stiffness, damping) driven by the \
+              motion profile give the end tensions; the wrap takes them every 5 ms. Arcs and JDP converge \
+              slowly with the node count (indicative below N = 1440)."
+        }
+    }
+}
+
+/// 4. Assumptions and limits of the levels the run used.
+pub fn assumptions(out: &mut String, ctx: &Context) -> io::Result<()> {
+    let levels: BTreeSet<u8> = ctx.run.scenes.iter().map(|s| s.plan.level).collect();
+    out.push_str("<p>Common to every level: tensions per rope, θ from the side-1 tangent point (0) to the side-2 tangent point (α); Coulomb's law |q| ≤ μn holds at every output point.</p>\n");
+    let rows = levels.iter().map(|l| {
+        let scenes: Vec<&str> = ctx.run.scenes.iter().filter(|s| s.plan.level == *l).map(|s| s.name.as_str()).collect();
+        vec![format!("{l}"), esc(level_text(*l)), esc(&scenes.join(", "))]
+    });
+    table(out, "", &["level", "assumptions and limits", "scenes"], rows);
+    let reasons = ctx.run.scenes.iter().map(|s| vec![esc(&s.name), format!("{}", s.plan.level), esc(&s.plan.reason)]);
+    out.push_str("<h3>Why each scene runs at its level</h3>\n");
+    table(out, "small", &["scene", "level", "planner's reason"], reasons);
+    Ok(())
+}

@@ -1,0 +1,41 @@
+//! The report's stylesheet: screen and print (A4, page numbers in the page margin where the
+//! browser supports CSS margin boxes, each major section on a new page, no row split across
+//! pages).
+
+pub const CSS: &str = r#"
+body { font-family: "DejaVu Sans", "Liberation Sans", Arial, sans-serif; font-size: 10pt; line-height: 1.35;
+       max-width: 60em; margin: 2em auto; padding: 0 1em; color: #111; }
+header { border-bottom: 2px solid #333; margin-bottom: 1em; }
+.kicker { color: #555; margin: 0; }
+h1 { font-size: 18pt; margin: 0.2em 0; }
+h2 { font-size: 13pt; border-bottom: 1px solid #999; margin-top: 1.6em; }
+h3 { font-size: 11pt; margin: 1.2em 0 0.3em; }
+code, .mono { font-family: "DejaVu Sans Mono", "Liberation Mono", monospace; font-size: 9pt; }
+table { border-collapse: collapse; margin: 0.5em 0 1em; width: 100%; }
+th, td { border: 1px solid #bbb; padding: 2px 5px; text-align: left; vertical-align: top; }
+th { background: #eee; }
+td.num { text-align: right; font-variant-numeric: tabular-nums; white-space: nowrap; }
+table.small { font-size: 8pt; }
+.overall { font-weight: bold; font-size: 12pt; }
+.pass { color: #146c2e; } .fail { color: #b00020; } .warning { color: #8a5a00; }
+.verdict { font-weight: bold; white-space: nowrap; }
+.check { border: 1px solid #ccc; padding: 0.3em 0.7em; margin: 0.6em 0; break-inside: avoid; }
+.check dl { display: grid; grid-template-columns: 9em 1fr; margin: 0.2em 0; gap: 0 0.5em; }
+.check dt { color: #555; } .check dd { margin: 0; }
+figure { margin: 1em 0; break-inside: avoid; text-align: center; }
+figure img { max-width: 100%; height: auto; border: 1px solid #ddd; }
+figcaption { font-size: 9pt; color: #333; text-align: left; margin-top: 0.3em; }
+.note { color: #444; font-size: 9pt; }
+nav ol { columns: 2; }
+@page { size: A4; margin: 16mm 14mm 18mm;
+        @bottom-right { content: "page " counter(page) " of " counter(pages); font-size: 8pt; color: #555; }
+        @bottom-left { content: "wrapcalc calculation report"; font-size: 8pt; color: #555; } }
+@media print {
+  body { max-width: none; margin: 0; padding: 0; font-size: 9pt; }
+  nav { break-after: page; }
+  section#load-cases, section#checks, section#figures, section#software { break-before: page; }
+  tr, .check, figure { break-inside: avoid; }
+  thead { display: table-header-group; }
+  a { color: inherit; text-decoration: none; }
+}
+"#;

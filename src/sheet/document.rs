@@ -1,0 +1,45 @@
+//! The `[document]` section: the title block of the calculation report (project, title,
+//! revision, author, checker, date). Every key is optional text; a TOML date (`date =
+//! 2024-05-01`) is taken as written.
+
+use super::diag::Collector;
+use crate::design::Document;
+use serde::Deserialize;
+use toml::Spanned;
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawDocument {
+    pub project: Option<Spanned<toml::Value>>,
+    pub title: Option<Spanned<toml::Value>>,
+    pub revision: Option<Spanned<toml::Value>>,
+    pub author: Option<Spanned<toml::Value>>,
+    pub checker: Option<Spanned<toml::Value>>,
+    pub date: Option<Spanned<toml::Value>>,
+}
+
+/// The validated title block (empty when the sheet has no `[document]`).
+pub fn document(c: &mut Collector, raw: &Option<Spanned<RawDocument>>) -> Document {
+    let Some(raw) = raw.as_ref().map(Spanned::get_ref) else { return Document::default() };
+    let mut text = |key: &str, v: &Option<Spanned<toml::Value>>| -> Option<String> {
+        let v = v.as_ref()?;
+        match v.get_ref() {
+            toml::Value::String(s) => Some(s.clone()),
+            toml::Value::Datetime(d) if key == "date" => Some(d.to_string()),
+            toml::Value::Integer(i) if key == "revision" => Some(i.to_string()),
+            _ => {
+                let allowed = if key == "date" { "a text or a TOML date" } else { "a text in quotes" };
+                c.push(Some(v.span()), None, &format!("document.{key}"), format!("expected {allowed}"));
+                None
+            }
+        }
+    };
+    Document {
+        project: text("project", &raw.project),
+        title: text("title", &raw.title),
+        revision: text("revision", &raw.revision),
+        author: text("author", &raw.author),
+        checker: text("checker", &raw.checker),
+        date: text("date", &raw.date),
+    }
+}
