@@ -136,7 +136,7 @@ proptest! {
             for k in (1..20).filter(|_| gap > 1e-9) {
                 let th = ja + (back - ja) * k as f64 / 20.0;
                 let piece = a.piece_at(th, &law);
-                prop_assert!(law.utilization(&piece, th) < 1e-3 + 1e-9, "friction inside the stick gap at {}", th);
+                prop_assert!(law.utilization(piece, th) < 1e-3 + 1e-9, "friction inside the stick gap at {}", th);
             }
         }
     }
@@ -224,7 +224,7 @@ fn sign_changes(field: &TensionField, mu: f64, c: f64) -> usize {
     for i in 0..=2000 {
         let th = alpha * i as f64 / 2000.0;
         let p = field.piece_at(th, &law);
-        if law.utilization(&p, th) < 1e-3 {
+        if law.utilization(p, th) < 1e-3 {
             continue;
         }
         let s = p.friction_n_per_rad(th).signum();

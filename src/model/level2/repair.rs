@@ -107,10 +107,11 @@ impl Zone {
         let left_inside = self.p > profile.piece(i).theta0_rad;
         let right_inside = self.r < profile.piece(j).theta1_rad;
         let (left_ok, right_ok) = (left_stuck || left_inside, right_stuck || right_inside);
-        if left_ok && right_ok {
-            if let Some(zone) = self.compatible(profile) {
-                return zone;
-            }
+        if left_ok
+            && right_ok
+            && let Some(zone) = self.compatible(profile)
+        {
+            return zone;
         }
         let alpha = profile.wrap_angle_rad();
         let from_left = match (left_ok, right_ok) {
