@@ -303,9 +303,11 @@ impl<'a> Simulation<'a> {
             e => e,
         })?;
         self.stats.increments += 1;
+        // Gross slip holds or not over the whole increment (its crossings are cuts); the end
+        // instant decides too, so a ratio just beyond the limit at a sample is gross slip there.
         let mid = 0.5 * (a + b);
         let (n1, n2) = (input.t1_n(mid) - self.centrifugal_n, input.t2_n(mid) - self.centrifugal_n);
-        if crate::contact::slips_grossly(n1, n2, p.mu, p.wrap_angle_rad) {
+        if crate::contact::slips_grossly(n1, n2, p.mu, p.wrap_angle_rad) || !env.admissible() {
             clamp::slide(&mut self.profile, &env);
             self.gross_slip = true;
             self.stats.gross_slip_increments += 1;
