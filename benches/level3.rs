@@ -1,6 +1,7 @@
 //! Level 3 run time: one rolling increment with both solvers (the active set, and clarabel
-//! with its fixed point on the contact forces) at N = 90 and 360; and the reference hoist's MID
-//! lifting cycle on an elastic lining
+//! with its fixed point on the contact forces) at N = 90 and 360; the rolling case at the
+//! Coulomb bound (`wrapcalc bench`'s bound-rolling: 1 m/s for 10 s after the run-in) at N = 720
+//! with the active set; and the reference hoist's MID lifting cycle on an elastic lining
 //! (`tables/guo2020-lining.toml`, wrap at level 3) at N = 90, 180 and 360 with the active set
 //! and at N = 90 with clarabel on every increment.
 
@@ -58,6 +59,10 @@ fn bench(c: &mut Criterion) {
             })
         });
     }
+    let bound = wrapcalc::bench::bound::rolling_design("bound-rolling");
+    group.bench_function("bound_rolling_n720_fast", |b| {
+        b.iter(|| run::run(&bound, &[&bound.scenes[0]], Options { nodes: 720, ..Options::default() }).expect("runs"))
+    });
     let design =
         sheet::load(Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/tables/guo2020-lining.toml"))).expect("loads");
     let scene = design.scenes.iter().find(|s| s.name == "duty-MID").expect("duty-MID");
