@@ -10,22 +10,24 @@
 //!
 //! ```text
 //! x_j = x°_j + v_j − v_{j−1}                  (cut tensions / s, j = 1 … N − 1; x_0, x_N the ends)
-//! f_k = clamp(f°_k − v_k/ρ, −b_k, b_k)        (lining force / s: the elastic trial, cut at Coulomb)
+//! f_k = clamp(f°_k − w_k v_k/ρ, −b_k, b_k)    (lining force / s: the elastic trial, cut at Coulomb)
 //! r_k = x_k − x_{k+1} − f_k + ι = 0           (equilibrium of segment k, ι = m' R h a / s)
 //! ```
 //!
-//! with `ρ = EA/(k_s R² h²)` and `b_k = μ N_k(x_k, x_{k+1})/s` ([`super::normal`]). For fixed
+//! with `ρ = EA/(k_s R² h²)`, `w_k` the share of the segment's lining under the rope (1, less at
+//! a lift-off point, 0 where the rope is lifted off) and `b_k = μ N_k(x_k, x_{k+1})/s`
+//! ([`super::normal`]). For fixed
 //! `b`, `r` is the gradient of a strictly convex, piecewise quadratic function (the bar's
 //! strain energy plus a Huber function of each segment's displacement: quadratic while the lining
 //! sticks, linear where it slides), the dual of the program; its minimiser is the program's
-//! solution and `s_k = (R h s/EA)(v_k − ρ (f°_k − f_k))` is the slip of segment k (nonzero only at
+//! solution and `s_k = (R h s/EA)(v_k − ρ (f°_k − f_k)/w_k)` is the slip of segment k (nonzero only at
 //! the bound, opposite to the friction). Where `b` follows the tensions the same equations are
 //! the fixed point on the contact forces.
 //!
 //! # The method
 //!
 //! Newton's method on `r(v) = 0` with the generalized Jacobian of the clamp: a segment inside
-//! its bound contributes `1/ρ` to the diagonal, a segment at its bound the derivative of
+//! its bound contributes `w_k/ρ` to the diagonal, a segment at its bound the derivative of
 //! `±b_k` with respect to its two cut tensions. Each row couples only `v_{k−1}, v_k, v_{k+1}`,
 //! so a Newton step is one tridiagonal solve (Thomas algorithm, O(N)). A segment at its bound
 //! has a row summing to zero with off-diagonal products `(1 − ε)(1 + ε)` < 1, so the
@@ -180,7 +182,9 @@ impl ActiveSet {
         for k in 0..n {
             let nk = p.normal(k, self.x[k], self.x[k + 1]);
             let bound = p.mu * nk;
-            let trial = p.f_old[k] - self.v[k] / p.rho;
+            // The lining shears only where the rope touches it (its stiffness k_s R h times the share).
+            let share = p.grid.lining_share(k);
+            let trial = p.f_old[k] - share * self.v[k] / p.rho;
             let (f, sign) = if trial > bound {
                 (bound, 1.0)
             } else if trial < -bound {
@@ -205,7 +209,7 @@ impl ActiveSet {
             let (left, right) = (k >= 1, k + 1 < n);
             self.lower[k] = if left { -(1.0 - ga) } else { 0.0 };
             self.upper[k] = if right { -(1.0 + gb) } else { 0.0 };
-            let stick = if sign == 0.0 { 1.0 / p.rho } else { 0.0 };
+            let stick = if sign == 0.0 { share / p.rho } else { 0.0 };
             self.diag[k] = if left { 1.0 - ga } else { 0.0 } + if right { 1.0 + gb } else { 0.0 } + stick;
             if sign != 0.0 {
                 self.active += 1;

@@ -23,7 +23,8 @@
 //!
 //! On the segment lattice the lifted arc removes the string pressure from the segments (and the
 //! fractions of segments) before the lift-off point, and the spread force is integrated exactly
-//! over the segments after it.
+//! over the segments after it. The lining of a segment shears only where the rope touches it:
+//! its stiffness is scaled by the fraction in contact ([`ContactGrid::lining_share`]).
 
 /// The boundary layer at one tangent point.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -117,6 +118,10 @@ impl Bending {
     }
 }
 
+/// The least share of a segment's lining counted under the rope where the rope touches it: a
+/// sliver of contact keeps a finite shear stiffness (and the program a bounded condition).
+pub const MIN_LINING_SHARE: f64 = 0.01;
+
 /// Where the contact arc starts and ends on the segment lattice (segments `first ..= last`
 /// touch the lining, `first` from the fraction `first_from` of its pitch on, `last` up to the
 /// fraction `last_to`), and the spread lift-off forces on the segments from each end (N).
@@ -136,6 +141,13 @@ impl ContactGrid {
     /// No bending: the whole of every segment in contact.
     pub fn flexible(segments: usize) -> Self {
         Bending::none(1.0).on_lattice(segments)
+    }
+
+    /// The share of segment `k`'s lining under the rope, which scales its shear stiffness: the
+    /// fraction of the segment in contact, at least [`MIN_LINING_SHARE`] where it touches, 0
+    /// where the rope is lifted off.
+    pub fn lining_share(&self, k: usize) -> f64 {
+        self.segment(k).0.map_or(0.0, |(s0, s1)| (s1 - s0).max(MIN_LINING_SHARE))
     }
 
     /// The fraction `[s0, s1]` of segment `k` in contact (`None` when it is lifted off), and the

@@ -113,6 +113,9 @@ pub struct Program {
     radius_m: f64,
     solver: Option<DefaultSolver<f64>>,
     settings: DefaultSettings<f64>,
+    /// `ρ_k = ρ / w_k`, the lining term's weight on each segment (`w_k` its lining's share
+    /// under the rope; 1 where the rope is lifted off, whose friction the bound holds at 0).
+    weights: Vec<f64>,
     q: Vec<f64>,
     b: Vec<f64>,
 }
@@ -151,7 +154,8 @@ impl Program {
             .iterative_refinement_max_iter(50)
             .build()
             .map_err(|e| SolveError::Setup(format!("settings: {e:?}")))?;
-        Ok(Self { segments, rho, ea_n, radius_m, solver: None, settings, q: Vec::new(), b: Vec::new() })
+        let weights = vec![rho; segments];
+        Ok(Self { segments, rho, ea_n, radius_m, solver: None, settings, weights, q: Vec::new(), b: Vec::new() })
     }
 
     /// `(λ/Rh)²`: the lining's shear-lag length over the segment length, squared.
@@ -159,22 +163,32 @@ impl Program {
         self.rho
     }
 
+    /// The nonzeros of P's upper triangle, column by column: column j (cut j + 1, in segments j
+    /// and j + 1) holds (j − 1, j) = −ρ_j and (j, j) = 1 + ρ_j + ρ_{j+1}; scaled.
+    fn p_values(&self) -> Vec<f64> {
+        let w = &self.weights;
+        let mut nzval = Vec::with_capacity(2 * self.segments);
+        for j in 0..self.segments - 1 {
+            if j > 0 {
+                nzval.push(-w[j] * OBJECTIVE_SCALE);
+            }
+            nzval.push((1.0 + w[j] + w[j + 1]) * OBJECTIVE_SCALE);
+        }
+        nzval
+    }
+
     fn build(&self) -> Result<DefaultSolver<f64>, SolveError> {
         let n = self.segments;
         let m = n - 1;
-        let rho = self.rho;
-        // P upper triangle: column j holds (j−1, j) = −ρ and (j, j) = 1 + 2ρ.
-        let (mut colptr, mut rowval, mut nzval) = (vec![0usize], Vec::new(), Vec::new());
+        let (mut colptr, mut rowval) = (vec![0usize], Vec::new());
         for j in 0..m {
             if j > 0 {
                 rowval.push(j - 1);
-                nzval.push(-rho * OBJECTIVE_SCALE);
             }
             rowval.push(j);
-            nzval.push((1.0 + 2.0 * rho) * OBJECTIVE_SCALE);
             colptr.push(rowval.len());
         }
-        let p = CscMatrix::new(m, m, colptr, rowval, nzval);
+        let p = CscMatrix::new(m, m, colptr, rowval, self.p_values());
         // A = [D; −D]: variable j (cut j + 1) enters segment j with +1 and segment j + 1 with −1.
         let (mut rows, mut cols, mut vals) = (Vec::new(), Vec::new(), Vec::new());
         for j in 0..m {
@@ -192,39 +206,50 @@ impl Program {
     }
 
     /// The linear term `q` of the objective for the increment from `state` (old tensions and
-    /// shear) to `loads`: `q = −x° + ρ Dᵀ(d − f°)`.
+    /// shear) to `loads`: `q = −x° + Dᵀ W (d − f°)`, W = diag(ρ_k).
     fn linear_term(&mut self, state: &State, loads: &Loads) {
         let n = self.segments;
         let s = loads.t1_n.max(loads.t2_n);
-        let rho = self.rho;
+        let w = &self.weights;
         self.q.clear();
         for j in 0..n - 1 {
             // Variable j is cut j + 1: +1 in segment j + 1, −1 in segment j.
             let y = |k: usize| end_term(loads, n, k) - state.friction_n[k] / s;
-            self.q.push(-state.tension_n[j + 1] / s + rho * (y(j + 1) - y(j)));
+            self.q.push(-state.tension_n[j + 1] / s + w[j + 1] * y(j + 1) - w[j] * y(j));
         }
     }
 
     /// Solves the increment from `state` (its tensions and shear are the old values; its ends
-    /// are replaced by the loads) with the contact forces `normal_n` in Coulomb's bound.
-    /// On success the state holds the new tensions, friction and slip.
-    pub fn solve(&mut self, state: &mut State, loads: &Loads, normal_n: &[f64]) -> Result<Verdict, SolveError> {
+    /// are replaced by the loads) with the contact forces `normal_n` in Coulomb's bound and
+    /// `lining_share[k]` of each segment's lining under the rope. On success the state holds
+    /// the new tensions, friction and slip.
+    pub fn solve(
+        &mut self,
+        state: &mut State,
+        loads: &Loads,
+        normal_n: &[f64],
+        lining_share: &[f64],
+    ) -> Result<Verdict, SolveError> {
         let n = self.segments;
         let s = loads.t1_n.max(loads.t2_n);
         let d = |k: usize| end_term(loads, n, k);
+        let weights: Vec<f64> =
+            lining_share.iter().map(|&share| if share > 0.0 { self.rho / share } else { self.rho }).collect();
+        let weights_changed = weights != self.weights;
+        self.weights = weights;
         self.linear_term(state, loads);
         // The unknowns are the changes y = x − x° (an increment moves little, so the optimum's
         // objective is small and clarabel's tolerances act on the change itself):
         // q_y = q + P x°, and A y ≤ b − A x° with (A x°)_k = ±(D x°)_k.
         let old = |j: usize| state.tension_n[j + 1] / s;
-        let rho = self.rho;
+        let w = &self.weights;
         for (j, qj) in self.q.iter_mut().enumerate() {
-            let mut px = (1.0 + 2.0 * rho) * old(j);
+            let mut px = (1.0 + w[j] + w[j + 1]) * old(j);
             if j > 0 {
-                px -= rho * old(j - 1);
+                px -= w[j] * old(j - 1);
             }
             if j + 2 < n {
-                px -= rho * old(j + 1);
+                px -= w[j + 1] * old(j + 1);
             }
             *qj = (*qj + px) * OBJECTIVE_SCALE;
         }
@@ -236,8 +261,12 @@ impl Program {
         self.b.clear();
         self.b.extend(normal_n.iter().enumerate().map(|(k, nk)| loads.mu * nk / s - d(k) - dx_old(k)));
         self.b.extend(normal_n.iter().enumerate().map(|(k, nk)| loads.mu * nk / s + d(k) + dx_old(k)));
+        let p_values = weights_changed.then(|| self.p_values());
         match &mut self.solver {
             Some(solver) => {
+                if let Some(values) = &p_values {
+                    solver.update_P(values).map_err(|e| SolveError::Setup(format!("data update: {e:?}")))?;
+                }
                 solver.update_q(&self.q).map_err(|e| SolveError::Setup(format!("data update: {e:?}")))?;
                 solver.update_b(&self.b).map_err(|e| SolveError::Setup(format!("data update: {e:?}")))?;
             }

@@ -197,6 +197,7 @@ impl<'a> Simulation<'a> {
             grid: bending.on_lattice(n),
             scale_n: s.t1_n.max(s.t2_n),
         };
+        self.state.touch_lining(|k| step.grid.lining_share(k));
         self.gross_slip = false;
         match p.wrap.solver {
             Solver::Fast => self.solve_fast(&step, s.t_s, pitches)?,
@@ -252,11 +253,15 @@ impl<'a> Simulation<'a> {
         let converged = termination == Termination::Converged;
         if converged || slide.is_some() {
             let s = step.scale_n;
-            // Slip of each lining slider, s_k = (R h s/EA)(v_k − ρ (f°_k − f_k)).
-            let slip =
-                solver.v.iter().zip(&self.f_old).zip(&solver.f).map(|((v, fo), f)| rh * s / ea * (v - rho * (fo - f)));
-            for (out, sk) in self.state.slip_m.iter_mut().zip(slip) {
-                *out = if converged { sk } else { 0.0 };
+            // Slip of each lining slider, s_k = (R h s/EA)(v_k − ρ (f°_k − f_k)/w_k); none where the
+            // rope is off the lining.
+            for (k, out) in self.state.slip_m.iter_mut().enumerate() {
+                let share = step.grid.lining_share(k);
+                *out = if converged && share > 0.0 {
+                    rh * s / ea * (solver.v[k] - rho * (self.f_old[k] - solver.f[k]) / share)
+                } else {
+                    0.0
+                };
             }
             self.state.set_scaled(s, &solver.x, &solver.normal, &solver.f);
             if converged && solver.active == 0 {
@@ -287,6 +292,7 @@ impl<'a> Simulation<'a> {
         let mut used = std::mem::take(&mut self.state.normal_n);
         let mut next = std::mem::take(&mut self.scratch);
         normal::normal_forces(&self.state.tension_n, c, h, &step.grid, &mut used);
+        let shares: Vec<f64> = (0..self.state.segments()).map(|k| step.grid.lining_share(k)).collect();
         for pass in 1.. {
             if pass > MAX_NORMAL_PASSES {
                 return Err(Level3Error::NormalForces { t_s });
@@ -297,7 +303,7 @@ impl<'a> Simulation<'a> {
             self.state.friction_n.copy_from_slice(&self.old_friction);
             let verdict = self
                 .program
-                .solve(&mut self.state, &step.loads, &used)
+                .solve(&mut self.state, &step.loads, &used, &shares)
                 .map_err(|source| Level3Error::Solve { t_s, source })?;
             self.level3.clarabel.record(verdict);
             match verdict {

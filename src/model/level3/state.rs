@@ -22,6 +22,9 @@ pub struct State {
     pub normal_n: Vec<f64>,
     /// Rope slip relative to the lining over the last increment, per segment (m, +θ).
     pub slip_m: Vec<f64>,
+    /// Share of each segment's lining the rope touched in the last increment (1 but at the
+    /// lift-off points of a stiff rope; 0 for lining that has not entered the wrap).
+    pub lining_share: Vec<f64>,
     /// Pulley travel since the lattice last moved by a pitch, in (−h/2, h/2] (rad).
     pub offset_rad: f64,
 }
@@ -41,6 +44,7 @@ impl State {
             friction_n,
             normal_n: vec![0.0; n],
             slip_m: vec![0.0; n],
+            lining_share: vec![1.0; n],
             offset_rad: 0.0,
         }
     }
@@ -94,6 +98,20 @@ impl State {
         }
     }
 
+    /// Takes the lining's share under the rope for this increment (`share_of(k)`): where the
+    /// rope has lifted off part of a segment's lining since the last increment, that part's shear
+    /// springs back, and the segment keeps the fraction `new/old` of its force; lining coming into
+    /// contact comes in unsheared (the force stays).
+    pub fn touch_lining(&mut self, share_of: impl Fn(usize) -> f64) {
+        for (k, (f, old)) in self.friction_n.iter_mut().zip(self.lining_share.iter_mut()).enumerate() {
+            let new = share_of(k);
+            if new < *old {
+                *f *= new / *old;
+            }
+            *old = new;
+        }
+    }
+
     /// Moves the pulley by `delta_rad` (+: towards θ = α), rounded to the nearest pitch (the
     /// carried state is within h/2 of its true position). Each pitch shifts tension and shear one
     /// segment downstream; the rope entering the wrap comes in at the end tension of its free
@@ -123,6 +141,8 @@ impl State {
             self.tension_n.copy_within(0..=n - m, m);
             self.friction_n.copy_within(0..n - m, m);
             self.friction_n[..m].fill(0.0);
+            self.lining_share.copy_within(0..n - m, m);
+            self.lining_share[..m].fill(0.0);
             for j in 0..fresh {
                 self.tension_n[j] = entry(j);
             }
@@ -130,6 +150,8 @@ impl State {
             self.tension_n.copy_within(m..=n, 0);
             self.friction_n.copy_within(m..n, 0);
             self.friction_n[n - m..].fill(0.0);
+            self.lining_share.copy_within(m..n, 0);
+            self.lining_share[n - m..].fill(0.0);
             for j in 0..fresh {
                 self.tension_n[n - j] = entry(j);
             }
