@@ -113,6 +113,7 @@ impl Case {
 
 /// Which error a point reports.
 pub const TENSION_METRIC: &str = "max |T - T_exact| / T_ref over the output grid";
+pub const WINDOW_METRIC: &str = "max |T - T_exact| / T_ref over the output grid from 5 to 175 deg";
 pub const CHECKS_METRIC: &str = "max relative error of the tension ratio and e^(mu alpha) against hand arithmetic";
 pub const DUTY_METRIC: &str =
     "RMS over history rows of the positive and reverse arc differences from the finest run (deg)";

@@ -424,6 +424,7 @@ fn row_of(
         (Case::RollingWalk, _) => "none (scaling only)",
         (Case::DutyMid, _) => cases::DUTY_METRIC,
         (_, 0) => cases::CHECKS_METRIC,
+        (Case::BoundStep | Case::BoundRolling, _) => cases::WINDOW_METRIC,
         _ => cases::TENSION_METRIC,
     };
     let time_step_s = match spec.case {
