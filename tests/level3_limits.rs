@@ -112,8 +112,8 @@ fn tensions(s: &SceneResult) -> Vec<f64> {
 
 /// A creeping state at 0.92 of the Euler limit (T1/T2 = 8.7, −0.1 m/s) and its mirror: the
 /// active-set solver converges on every increment of the run-in without handing over to
-/// clarabel, and gives clarabel's state (1e-7 of the tension per increment, carried over the
-/// run-in's few hundred increments: 1e-6) and its mirror.
+/// clarabel, and gives clarabel's state (the twins' 1e-7 of the tension; measured 2.5e-11 after
+/// the run-in's 182 increments) and its mirror.
 #[test]
 fn the_fast_path_converges_near_the_limit_in_both_directions() {
     let text = near_limit_sheet(8.7, -0.1);
@@ -128,7 +128,11 @@ fn the_fast_path_converges_near_the_limit_in_both_directions() {
         assert!(qs.clarabel.solved >= qs.increments && qs.active_set.converged == 0, "{qs:?}");
         let (a, b) = (tensions(f), tensions(q));
         let gap = a.iter().zip(&b).map(|(x, y)| (x - y).abs()).fold(0.0, f64::max) / 217.5e3;
-        assert!(gap < 1e-6, "{}: fast and clarabel differ by {gap} of the tension", f.name);
+        eprintln!(
+            "{}: {} increments, {} Newton steps (at most {}), fast − clarabel {gap:.1e} of T1",
+            f.name, stats.increments, stats.newton_steps, stats.max_newton_steps
+        );
+        assert!(gap < 1e-7, "{}: fast and clarabel differ by {gap} of the tension", f.name);
         let w = f.wrap.as_ref().unwrap();
         assert!(
             !w.distribution.gross_slip && w.summary.max_utilization > 0.999,
