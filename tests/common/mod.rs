@@ -66,3 +66,13 @@ pub fn mirror_gap(a: &State, b: &State, scale: f64) -> f64 {
     let n = a.segments();
     (0..=n).map(|j| (a.tension_n[j] - b.tension_n[n - j]).abs()).fold(0.0, f64::max) / scale
 }
+
+/// Property-test settings: `cases` random cases from a fixed seed, so that every run (and CI)
+/// draws the same cases (after the saved regressions) and a failure is reproducible; `PROPTEST_RNG_SEED` and
+/// `PROPTEST_CASES` draw others (for a longer search, run with a new seed and more cases).
+pub fn proptest_config(cases: u32) -> proptest::test_runner::Config {
+    use proptest::test_runner::{Config, RngSeed};
+    let seed = std::env::var("PROPTEST_RNG_SEED").ok().and_then(|s| s.parse().ok()).unwrap_or(0x0057_1C4E_D0E5);
+    let cases = std::env::var("PROPTEST_CASES").ok().and_then(|s| s.parse().ok()).unwrap_or(cases);
+    Config { cases, rng_seed: RngSeed::Fixed(seed), ..Config::default() }
+}

@@ -409,7 +409,9 @@ fn entered(input: &Linear, a: f64, delta_rad: f64, alpha: f64) -> Piece {
         theta_a_rad: entry_theta + delta_rad,
         tension_n: tension,
         slope_n_per_s: slope,
-        omega_per_s: input.omega_per_s(a),
+        // The motion over the increment is one-way, along `delta_rad`; at a start from rest ω(a)
+        // is zero, not a rounding residue of the other sign (which would pick the wrong root).
+        omega_per_s: if input.omega_per_s(a) * delta_rad > 0.0 { input.omega_per_s(a) } else { 0.0 },
         alpha_per_s2: input.omega_slope_per_s2,
     };
     Piece::entry(lo, hi, ramp)
