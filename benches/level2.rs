@@ -1,11 +1,12 @@
-//! Level 2 run time: a 10 000-sample history on the fast path (N = 720; history rows once a
-//! second, and at every sample), and one increment
-//! in clarabel (N = 90, 360) against the same increment on the fast path.
+//! Level 2 run time: a 10 000-sample history (history rows once a second, and at every
+//! sample), and one clamp of a profile with a slip zone at each end on the fast path against the
+//! same increment solved in clarabel.
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
-use wrapcalc::model::level2::update::{self, Ends};
-use wrapcalc::model::level2::{HistorySample, Output, Params, Solver, WrapState, qp, run_history};
+use wrapcalc::model::level2::envelope::Envelopes;
+use wrapcalc::model::level2::{HistorySample, Output, Params, Profile, Solver, clamp, qp, run_history};
+use wrapcalc::roots::RootStats;
 
 const MU: f64 = 0.25;
 
@@ -29,17 +30,16 @@ fn bench(c: &mut Criterion) {
     group.sample_size(10);
     // The stepping itself: history rows once a second (100 rows), as a duty cycle reports.
     let sparse = Output { snapshots_s: &[], step_s: Some(1.0), sample_rows: false };
-    for (name, output) in [
-        ("history_10k_samples_n720_fast", sparse),
-        ("history_10k_samples_n720_fast_row_every_sample", Output::default()),
-    ] {
+    for (name, output) in
+        [("history_10k_samples_fast", sparse), ("history_10k_samples_fast_row_every_sample", Output::default())]
+    {
         group.bench_function(name, |b| {
             b.iter(|| {
                 run_history(
                     params(Solver::Fast),
                     black_box(&samples),
                     output,
-                    WrapState::uniform(alpha(), 720, 2.0e5),
+                    Profile::uniform(alpha(), 2.0e5, MU),
                     180,
                 )
                 .expect("runs")
@@ -47,23 +47,24 @@ fn bench(c: &mut Criterion) {
         });
     }
     // One increment from a state with a positive zone at θ = 0 and a reverse zone at θ = α.
-    for nodes in [90, 360] {
-        let mut state = WrapState::uniform(alpha(), nodes, 2.0e5);
-        update::update(&mut state, &Ends { t1_n: 2.3e5, t2_n: 2.0e5, centrifugal_n: 0.0, mu: MU });
-        let ends = Ends { t1_n: 2.2e5, t2_n: 2.25e5, centrifugal_n: 0.0, mu: MU };
-        group.bench_function(format!("increment_clarabel_n{nodes}"), |b| {
-            b.iter(|| {
-                let mut s = state.clone();
-                qp::update(&mut s, black_box(&ends)).expect("solves")
-            })
-        });
-        group.bench_function(format!("increment_fast_n{nodes}"), |b| {
-            b.iter(|| {
-                let mut s = state.clone();
-                update::update(&mut s, black_box(&ends))
-            })
-        });
-    }
+    let mut state = Profile::uniform(alpha(), 2.0e5, MU);
+    let (mut stats, mut scratch) = (RootStats::default(), clamp::Scratch::default());
+    clamp::clamp(&mut state, &Envelopes::new(2.3e5, 2.0e5, 0.0, MU, alpha()), &mut stats, &mut scratch);
+    clamp::clamp(&mut state, &Envelopes::new(2.3e5, 2.1e5, 0.0, MU, alpha()), &mut stats, &mut scratch);
+    let env = Envelopes::new(2.2e5, 2.25e5, 0.0, MU, alpha());
+    group.bench_function("increment_clarabel", |b| {
+        b.iter(|| {
+            let mut s = state.clone();
+            qp::clamp(&mut s, black_box(&env), &mut RootStats::default(), &mut clamp::Scratch::default())
+                .expect("solves")
+        })
+    });
+    group.bench_function("increment_fast", |b| {
+        b.iter(|| {
+            let mut s = state.clone();
+            clamp::clamp(&mut s, black_box(&env), &mut RootStats::default(), &mut clamp::Scratch::default())
+        })
+    });
     group.finish();
 }
 

@@ -1,8 +1,9 @@
-//! Level 3 run time: one increment (elastic lining, clarabel, fixed point on the contact
-//! forces) at N = 90 and 360, and the reference hoist's MID lifting cycle on an elastic lining
-//! (`tables/guo2020-lining.toml`, wrap at level 3) at N = 90, 180 and 360 with the fast path
-//! (elastic minimiser, clarabel where a bound is reached) and at N = 90 with clarabel on every
-//! increment.
+//! Level 3 run time: one rolling increment with both solvers (the active set, and clarabel
+//! with its fixed point on the contact forces) at N = 90 and 360; the rolling case at the
+//! Coulomb bound (`wrapcalc bench`'s bound-rolling: 1 m/s for 10 s after the run-in) at N = 720
+//! with the active set; and the reference hoist's MID lifting cycle on an elastic lining
+//! (`tables/guo2020-lining.toml`, wrap at level 3) at N = 90, 180 and 360 with the active set
+//! and at N = 90 with clarabel on every increment.
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
@@ -26,6 +27,7 @@ fn params() -> Params {
         bending_stiffness_n_m2: 48.0,
         rope_inertia: true,
         max_iter: level3::MAX_ITER,
+        travel_step_rad: level3::TRAVEL_STEP_RAD,
     }
 }
 
@@ -33,15 +35,21 @@ fn bench(c: &mut Criterion) {
     let mut group = c.benchmark_group("level3");
     group.sample_size(10);
     let samples = [HistorySample { t_s: 0.0, t1_n: 2.0e5, t2_n: 2.0e5, speed_m_s: 1.0 }];
-    for nodes in [90, 360] {
-        let p = params();
+    for (nodes, solver, name) in [
+        (90, Solver::Fast, "fast"),
+        (360, Solver::Fast, "fast"),
+        (90, Solver::Clarabel, "clarabel"),
+        (360, Solver::Clarabel, "clarabel"),
+    ] {
+        let mut p = params();
+        p.wrap.solver = solver;
         let mut sim =
             Simulation::new(p, &samples, State::uniform(p.wrap.wrap_angle_rad, nodes, 2.0e5)).expect("builds");
         sim.settle().expect("settles");
         // Rolling at 1 m/s with the ends swinging ±10 kN: every increment moves the rope and
         // changes the friction over the whole wrap.
         let mut k = 0u64;
-        group.bench_function(format!("increment_n{nodes}"), |b| {
+        group.bench_function(format!("increment_n{nodes}_{name}"), |b| {
             b.iter(|| {
                 k += 1;
                 let swing = 1.0e4 * (0.1 * k as f64).sin();
@@ -51,6 +59,10 @@ fn bench(c: &mut Criterion) {
             })
         });
     }
+    let bound = wrapcalc::bench::bound::rolling_design("bound-rolling");
+    group.bench_function("bound_rolling_n720_fast", |b| {
+        b.iter(|| run::run(&bound, &[&bound.scenes[0]], Options { nodes: 720, ..Options::default() }).expect("runs"))
+    });
     let design =
         sheet::load(Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/tables/guo2020-lining.toml"))).expect("loads");
     let scene = design.scenes.iter().find(|s| s.name == "duty-MID").expect("duty-MID");

@@ -47,6 +47,9 @@ struct BenchArgs {
     /// The reference sheet whose duty-MID scene is benched.
     #[arg(long, default_value = "tables/guo2020.toml")]
     sheet: PathBuf,
+    /// Only this case (repeatable; e.g. bound-rolling); all by default.
+    #[arg(long = "case", value_name = "NAME")]
+    cases: Vec<String>,
     /// Print nothing but errors.
     #[arg(long)]
     quiet: bool,
@@ -235,7 +238,7 @@ fn execute(cli: Cli) -> anyhow::Result<bool> {
 /// point's peak memory for the report itself).
 fn bench_command(args: BenchArgs) -> anyhow::Result<()> {
     let probe_exe = std::env::current_exe().ok();
-    let options = wrapcalc::bench::BenchOptions { long: args.long, sheet: args.sheet, probe_exe };
+    let options = wrapcalc::bench::BenchOptions { long: args.long, sheet: args.sheet, probe_exe, cases: args.cases };
     if let Some(spec) = &args.probe {
         println!("{}", wrapcalc::bench::probe(&options, spec)?.map_or_else(|| "-".into(), |kb| kb.to_string()));
         return Ok(());

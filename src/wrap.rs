@@ -38,16 +38,23 @@ pub struct EntryRamp {
 }
 
 impl EntryRamp {
-    /// Entry time τ (s) of the rope now at θ: the root of `Φ(τ) = θ_a − θ` on the branch the
-    /// pulley turns along (stable form, no cancellation).
+    /// Entry time τ (s) of the rope now at θ: the least root τ ≥ 0 of `Φ(τ) = θ_a − θ`, in the
+    /// stable form `τ = 2d / (ω + s·√(ω² + 2ε d))` (no cancellation), `s` the direction of the
+    /// ramp's motion: that of ω, or of ε for a ramp from rest (ω = 0). The motion is one-way (a
+    /// reversal ends a ramp), so its maker sets ω = 0 exactly at a start from rest rather than
+    /// a rounding residue of the other sign.
     pub fn entry_time_s(&self, theta_rad: f64) -> f64 {
         let d = self.theta_a_rad - theta_rad;
         let (w, e) = (self.omega_per_s, self.alpha_per_s2);
         if e == 0.0 {
             return if w != 0.0 { d / w } else { 0.0 };
         }
-        let sign = if w != 0.0 { w.signum() } else { d.signum() * e.signum() };
-        let disc = (w * w + 2.0 * e * d).max(0.0);
+        let sign = if w != 0.0 { w.signum() } else { e.signum() };
+        let disc = w * w + 2.0 * e * d;
+        if disc < 0.0 {
+            // Beyond the farthest point the ramp reaches (by a rounding error): its turning point.
+            return -w / e;
+        }
         let den = w + sign * disc.sqrt();
         if den == 0.0 { 0.0 } else { 2.0 * d / den }
     }
@@ -297,4 +304,54 @@ pub struct Distribution {
     pub zones: Vec<Zone>,
     pub jdp_deg: Option<f64>,
     pub gross_slip: bool,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::EntryRamp;
+
+    /// A ramp from rest: Φ(τ) = ½ ε τ², so τ = √(2d/ε) exactly, in both directions of motion
+    /// (mirror: d → −d, ε → −ε), at ω = 0 or a tiny ω along the motion. The
+    /// closed form and the stable root differ by a few ulps (1e-12 relative bounds them).
+    #[test]
+    fn a_ramp_from_rest_enters_on_its_own_branch() {
+        for (e, theta_a) in [(1.3f64, 0.0131), (-1.3, -0.0131)] {
+            for w in [0.0, 5.6e-17 * e.signum()] {
+                let r = EntryRamp {
+                    theta_a_rad: theta_a,
+                    tension_n: 5e4,
+                    slope_n_per_s: -4e3,
+                    omega_per_s: w,
+                    alpha_per_s2: e,
+                };
+                for k in 0..=4 {
+                    let theta = theta_a * k as f64 / 4.0;
+                    let d: f64 = theta_a - theta;
+                    let exact = (2.0 * d / e).sqrt();
+                    let tau = r.entry_time_s(theta);
+                    assert!(
+                        (tau - exact).abs() <= 1e-12 * exact.max(1e-300),
+                        "ε {e}, ω {w}, θ {theta}: τ {tau} vs {exact}"
+                    );
+                }
+                // A rounding error beyond the entry point is the entry instant.
+                let beyond = r.entry_time_s(theta_a * (1.0 + 1e-15));
+                assert!(beyond.abs() <= 1e-6, "ε {e}, ω {w}: τ {beyond} just beyond the entry");
+            }
+        }
+    }
+
+    /// A ramp in motion: the root satisfies Φ(τ) = θ_a − θ and is the least non-negative one,
+    /// lifting and lowering, speeding up and slowing down (τ below the stop ω/|ε|).
+    #[test]
+    fn a_moving_ramp_enters_at_the_least_root() {
+        for (w, e) in [(1.0, 0.5), (1.0, -0.5), (-1.0, -0.5), (-1.0, 0.5)] {
+            let r = EntryRamp { theta_a_rad: 0.0, tension_n: 5e4, slope_n_per_s: 1e3, omega_per_s: w, alpha_per_s2: e };
+            for tau_true in [0.0, 0.1, 0.5, 1.5] {
+                let phi = w * tau_true + 0.5 * e * tau_true * tau_true;
+                let tau = r.entry_time_s(-phi);
+                assert!((tau - tau_true).abs() <= 1e-12, "ω {w}, ε {e}: τ {tau} vs {tau_true}");
+            }
+        }
+    }
 }

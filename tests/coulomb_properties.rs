@@ -1,5 +1,7 @@
 //! Properties of levels 0 and 1 and of the sheet parser (proptest).
 
+mod common;
+
 use proptest::prelude::*;
 use wrapcalc::run::{self, Options};
 use wrapcalc::sheet;
@@ -13,7 +15,7 @@ fn sheet_text(mu: f64, wrap_deg: f64, m_per_m: f64, t1: f64, t2: f64, speed: f64
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 512, ..ProptestConfig::default() })]
+    #![proptest_config(common::proptest_config(512))]
 
     /// Every distribution row of a random valid loads scene obeys |q| ≤ μn exactly, all numbers
     /// are finite, and the arcs partition the wrap; gross slip iff ratio > e^{μα}.

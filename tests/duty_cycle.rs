@@ -280,3 +280,40 @@ fn gross_slip_onset_ends_the_trip() {
     assert!(!slip.pass && slip.note.as_deref().is_some_and(|n| n.contains("not valid")));
     assert!(!r.checks_pass());
 }
+
+/// The wrap's answer does not depend on how often a duty cycle reports: the MID lift reported
+/// every 0.05 s and every 0.0125 s gives the same arcs and JDP at every common row (1e-9°: the
+/// rows split the wrap's increments, which are exact, so only round-off differs; measured
+/// 1.3e-11°). Lowering, the reverse arc differs in 65 of 1282 rows while the hoist speeds up
+/// (2–5 s), by up to 2.4e-4°: the repair of a rising m'v² next to zones at the limit of both
+/// signs still depends on how the increments are cut (docs/physics.md, "not yet exact"); 1e-3°
+/// bounds it until that is mended. Its positive arc and JDP agree to 1e-11°.
+#[test]
+fn duty_cycle_arcs_and_jdp_do_not_depend_on_the_output_step() {
+    let mut design = design();
+    for (name, tol_deg) in [("duty-MID", 1e-9), ("duty-MID-lower", 1e-3)] {
+        let base = design.scenes.iter().find(|s| s.name == name).expect("scene").clone();
+        let mut fine = base.clone();
+        fine.name = format!("{name}-fine");
+        if let SceneKind::DutyCycle(c) = &mut fine.kind {
+            c.output_step_s = 0.0125;
+            c.snapshots_s.clear();
+        }
+        design.scenes.push(fine);
+        let r = run_scenes(&design, &[name, &format!("{name}-fine")]);
+        let (a, b) = (r[0].history.as_ref().expect("rows"), r[1].history.as_ref().expect("rows"));
+        let mut compared = 0;
+        for row in &a.rows {
+            let Some(other) = b.rows.iter().find(|x| (x.t_s - row.t_s).abs() < 1e-9) else { continue };
+            compared += 1;
+            for (x, y) in [
+                (row.positive_arc_deg, other.positive_arc_deg),
+                (row.reverse_arc_deg, other.reverse_arc_deg),
+                (row.jdp_deg.unwrap_or(-1.0), other.jdp_deg.unwrap_or(-1.0)),
+            ] {
+                assert!((x - y).abs() < tol_deg, "{name} at t = {} s: {x} vs {y}", row.t_s);
+            }
+        }
+        assert!(compared > 1000, "{name}: {compared} common rows");
+    }
+}

@@ -370,3 +370,21 @@ fn adding_samples_on_the_straight_lines_and_reporting_more_often_change_nothing(
         );
     }
 }
+
+#[test]
+fn a_ratio_within_an_ulp_of_the_euler_limit_gets_one_verdict_at_every_level() {
+    // n_hi/n_lo against e^{μα} by one test (contact::slips_grossly) in the level-0 check, creep
+    // theory, and the history's increments: the ratio one ulp below the limit holds everywhere,
+    // one ulp above slides everywhere.
+    use wrapcalc::model::level0::euler_limit;
+    let limit = euler_limit(MU, alpha());
+    for ratio in [limit * (1.0 - f64::EPSILON), limit, limit * (1.0 + f64::EPSILON)] {
+        let samples = [s(0.0, T0, T0, 0.0), s(1.0, ratio * T0, T0, 0.0)];
+        let (_, sim) = final_field(Params { mass_per_m_kg: 0.0, ..params(Solver::Fast) }, &samples);
+        let end = EndState { t1_n: ratio * T0, t2_n: T0, speed_m_s: 0.0, accel_m_s2: 0.0, centrifugal_n: 0.0 };
+        let creep = steady_rolling(MU, alpha(), &end, 1.0, 2.6e8);
+        let level0 = end.tension_ratio() > limit;
+        assert_eq!(sim.gross_slip, level0, "ratio {ratio}: history vs level 0");
+        assert_eq!(creep.gross_slip, level0, "ratio {ratio}: creep theory vs level 0");
+    }
+}

@@ -3,6 +3,8 @@
 //! point; mirror symmetry; resampling invariance; the fast path and clarabel agreeing; a signed
 //! zero being a zero; and the planner's cheap level agreeing with the expensive one.
 
+mod common;
+
 use proptest::prelude::*;
 use wrapcalc::contact::ContactLaw;
 use wrapcalc::design::HistorySample;
@@ -70,7 +72,7 @@ fn hoist_history() -> impl Strategy<Value = (f64, f64, f64, usize, Vec<HistorySa
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 256, ..ProptestConfig::default() })]
+    #![proptest_config(common::proptest_config(256))]
 
     /// |q| ≤ μn exactly (no tolerance: the reported friction is clamped into the cone, and the
     /// model's pieces satisfy it analytically), u ∈ [0, 1], all finite, at every snapshot.
@@ -136,7 +138,7 @@ proptest! {
             for k in (1..20).filter(|_| gap > 1e-9) {
                 let th = ja + (back - ja) * k as f64 / 20.0;
                 let piece = a.piece_at(th, &law);
-                prop_assert!(law.utilization(&piece, th) < 1e-3 + 1e-9, "friction inside the stick gap at {}", th);
+                prop_assert!(law.utilization(piece, th) < 1e-3 + 1e-9, "friction inside the stick gap at {}", th);
             }
         }
     }
@@ -186,7 +188,7 @@ proptest! {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 24, ..ProptestConfig::default() })]
+    #![proptest_config(common::proptest_config(24))]
 
     /// clarabel solves every increment independently on the knots; its optimum must equal the
     /// exact clamp at each, and the states it leaves are the fast path's. After the active-set
@@ -224,7 +226,7 @@ fn sign_changes(field: &TensionField, mu: f64, c: f64) -> usize {
     for i in 0..=2000 {
         let th = alpha * i as f64 / 2000.0;
         let p = field.piece_at(th, &law);
-        if law.utilization(&p, th) < 1e-3 {
+        if law.utilization(p, th) < 1e-3 {
             continue;
         }
         let s = p.friction_n_per_rad(th).signum();

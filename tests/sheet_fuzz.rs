@@ -4,6 +4,8 @@
 //! must name the file; a sheet it accepts must survive a checks-only run with finite numbers or
 //! a clear error.
 
+mod common;
+
 use proptest::prelude::*;
 use wrapcalc::planner::Request;
 use wrapcalc::run::{self, Options};
@@ -170,7 +172,7 @@ fn toml_like() -> impl Strategy<Value = String> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 48, ..ProptestConfig::default() })]
+    #![proptest_config(common::proptest_config(48))]
 
     #[test]
     fn mutated_reference_sheets_never_panic(mutations in prop::collection::vec(mutation(), 1..5)) {
@@ -179,7 +181,7 @@ proptest! {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 256, ..ProptestConfig::default() })]
+    #![proptest_config(common::proptest_config(256))]
 
     #[test]
     fn random_text_never_panics(text in "\\PC{0,400}") {

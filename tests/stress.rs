@@ -8,6 +8,8 @@
 //! `cargo test --release --test stress -- --ignored` runs them; `wrapcalc bench --long` times the
 //! same sizes.
 
+mod common;
+
 use proptest::prelude::*;
 use wrapcalc::contact::ContactLaw;
 use wrapcalc::design::{Design, SceneKind};
@@ -82,7 +84,7 @@ fn ratio_of(kind: u8, u: f64, limit: f64) -> f64 {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 192, ..ProptestConfig::default() })]
+    #![proptest_config(common::proptest_config(192))]
 
     /// A sequence of abrupt steps at rest with a changing m'v² (each step a reversal of which
     /// end is high, or not): after the repair of a rising m'v² and the clamp, each increment

@@ -7,14 +7,17 @@
 //!
 //! Everything runs on one rayon thread, so times mean "one core".
 
+pub mod bound;
 pub mod cases;
 pub mod measure;
 pub mod output;
+pub mod scaling;
 
 use crate::model::level2::{Level2Error, Solver};
 use crate::run::RunError;
 use crate::sheet::SheetError;
 use cases::{Case, Outcome};
+pub use scaling::{Scaling, log_log_slope, scaling};
 use serde::Serialize;
 use std::path::PathBuf;
 
@@ -55,6 +58,8 @@ pub struct Entry {
 const NODES: &[usize] = &[16, 64, 180, 256, 1024, 4096, 16384];
 const LONG_NODES: &[usize] = &[65536, 100_000];
 const CLARABEL_NODES: &[usize] = &[16, 64, 180, 256, 1024];
+/// Node counts of level 3 at the Coulomb bound.
+const BOUND_NODES: &[usize] = &[90, 180, 360, 720, 1440];
 /// Node counts of the duty cycle at its default time step, and the time steps at N = 360.
 const DUTY_NODES: &[usize] = &[90, 180, 360, 720, 1440];
 const DUTY_STEPS_S: &[f64] = &[4e-3, 2e-3, 1e-3, 5e-4];
@@ -133,6 +138,30 @@ pub const TABLE: &[Entry] = &[
         sweep: Sweep::Nodes { nodes: &[16, 64, 180, 256], long: &[] },
     },
     Entry {
+        case: Case::BoundStep,
+        level: 3,
+        solver: Solver::Fast,
+        sweep: Sweep::Nodes { nodes: BOUND_NODES, long: &[] },
+    },
+    Entry {
+        case: Case::BoundStep,
+        level: 3,
+        solver: Solver::Clarabel,
+        sweep: Sweep::Nodes { nodes: BOUND_NODES, long: &[] },
+    },
+    Entry {
+        case: Case::BoundRolling,
+        level: 3,
+        solver: Solver::Fast,
+        sweep: Sweep::Nodes { nodes: BOUND_NODES, long: &[] },
+    },
+    Entry {
+        case: Case::BoundRolling,
+        level: 3,
+        solver: Solver::Clarabel,
+        sweep: Sweep::Nodes { nodes: BOUND_NODES, long: &[] },
+    },
+    Entry {
         case: Case::RollingWalk,
         level: 2,
         solver: Solver::Fast,
@@ -149,6 +178,8 @@ pub struct BenchOptions {
     /// The `wrapcalc` executable: each point's peak memory is measured by running it alone in a
     /// child process (`wrapcalc bench --probe SPEC`); `None` reports no memory.
     pub probe_exe: Option<PathBuf>,
+    /// Only these cases (by [`Case::name`]); all when empty.
+    pub cases: Vec<String>,
 }
 
 /// One row of bench.csv.
@@ -161,7 +192,7 @@ pub struct BenchRow {
     pub nodes: Option<usize>,
     pub time_step_s: Option<f64>,
     pub samples: Option<usize>,
-    /// Increments of the wrap model (levels 2 and 4).
+    /// Increments of the wrap model (levels 2–4; level 3 with its run-in from the first loads).
     pub steps: Option<u64>,
     pub runtime_ms: f64,
     pub repeats: usize,
@@ -189,6 +220,8 @@ pub enum BenchError {
     Probe(String),
     #[error(transparent)]
     Report(#[from] crate::report::ReportError),
+    #[error("--case {name:?}: no such bench case; the cases are {}", Case::ALL.map(|c| c.name()).join(", "))]
+    UnknownCase { name: String },
 }
 
 /// One point of a sweep.
@@ -268,18 +301,27 @@ pub fn run(options: &BenchOptions, progress: &mut (dyn FnMut(&BenchRow) + Send))
     pool.install(|| run_table(options, progress))
 }
 
+/// The lines of the table the options select (an unknown case name is an error).
+fn selected(options: &BenchOptions) -> Result<Vec<&'static Entry>, BenchError> {
+    if let Some(bad) = options.cases.iter().find(|n| !Case::ALL.iter().any(|c| c.name() == n.as_str())) {
+        return Err(BenchError::UnknownCase { name: bad.clone() });
+    }
+    Ok(TABLE.iter().filter(|e| options.cases.is_empty() || options.cases.iter().any(|n| n == e.case.name())).collect())
+}
+
 fn run_table(
     options: &BenchOptions,
     progress: &mut (dyn FnMut(&BenchRow) + Send),
 ) -> Result<Vec<BenchRow>, BenchError> {
     let mut rows = Vec::new();
+    let table = selected(options)?;
     // A sheet that cannot be read fails the bench before anything runs.
-    if TABLE.iter().any(|e| e.case == Case::DutyMid) {
+    if table.iter().any(|e| e.case == Case::DutyMid) {
         cases::duty_design(&options.sheet, DUTY_DEFAULT_STEP_S)?;
     }
     // Finest runs of the duty cycle, by (N, Δt): each is run once, as a "reference" row.
     let mut references: Vec<((usize, f64), cases::DutyRun)> = Vec::new();
-    for entry in TABLE {
+    for entry in table {
         let reference_key = duty_reference(entry);
         if let Some(key) = reference_key.filter(|k| !references.iter().any(|r| r.0 == *k)) {
             let spec = Spec {
@@ -382,6 +424,7 @@ fn row_of(
         (Case::RollingWalk, _) => "none (scaling only)",
         (Case::DutyMid, _) => cases::DUTY_METRIC,
         (_, 0) => cases::CHECKS_METRIC,
+        (Case::BoundStep | Case::BoundRolling, _) => cases::WINDOW_METRIC,
         _ => cases::TENSION_METRIC,
     };
     let time_step_s = match spec.case {
@@ -406,100 +449,9 @@ fn row_of(
     }
 }
 
-/// The measured scaling of one sweep: log–log slopes of run time and of peak memory (above the
-/// smallest point's process) against the swept size (N, samples, or 1/Δt), fitted over its
-/// larger half (at least three points) where fixed costs have faded.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct Scaling {
-    pub case: &'static str,
-    pub level: u8,
-    pub solver: Solver,
-    pub variable: &'static str,
-    pub points: usize,
-    pub from: f64,
-    pub to: f64,
-    pub time_slope: Option<f64>,
-    pub memory_slope: Option<f64>,
-}
-
-/// Slopes of every sweep with at least two points in its larger half.
-pub fn scaling(rows: &[BenchRow]) -> Vec<Scaling> {
-    let mut out = Vec::new();
-    let baseline_kb = rows.iter().filter_map(|r| r.peak_rss_kb).min();
-    for entry in TABLE {
-        let (variable, size): (&str, fn(&BenchRow) -> Option<f64>) = match entry.sweep {
-            Sweep::Single => continue,
-            Sweep::Nodes { .. } => ("nodes", |r| r.nodes.map(|n| n as f64)),
-            Sweep::TimeStep { .. } => ("1/time_step_s", |r| r.time_step_s.map(|d| 1.0 / d)),
-            Sweep::Samples { .. } => ("samples", |r| r.samples.map(|n| n as f64)),
-        };
-        let mut pts: Vec<(f64, &BenchRow)> = rows
-            .iter()
-            .filter(|r| {
-                r.case == entry.case.name()
-                    && r.level == entry.level
-                    && r.solver == entry.solver
-                    && r.sweep == entry.sweep.name()
-            })
-            .filter_map(|r| size(r).map(|x| (x, r)))
-            .collect();
-        pts.sort_by(|a, b| a.0.total_cmp(&b.0));
-        // The larger half, but at least three points where the sweep has them.
-        let upper = &pts[(pts.len() / 2).min(pts.len().saturating_sub(3))..];
-        if upper.len() < 2 {
-            continue;
-        }
-        let time: Vec<(f64, f64)> = upper.iter().map(|(x, r)| (*x, r.runtime_ms)).collect();
-        // Memory above the smallest process's (program, allocator, thread pool); growth below
-        // 1 MB is the allocator's granularity, not the case's footprint.
-        let memory: Vec<(f64, f64)> = upper
-            .iter()
-            .filter_map(|(x, r)| {
-                let grown = r.peak_rss_kb?.checked_sub(baseline_kb?)?;
-                (grown >= 1024).then_some((*x, grown as f64))
-            })
-            .collect();
-        out.push(Scaling {
-            case: entry.case.name(),
-            level: entry.level,
-            solver: entry.solver,
-            variable,
-            points: upper.len(),
-            from: upper[0].0,
-            to: upper[upper.len() - 1].0,
-            time_slope: log_log_slope(&time),
-            memory_slope: log_log_slope(&memory),
-        });
-    }
-    out
-}
-
-/// Least-squares slope of ln y against ln x (positive values only; `None` with fewer than two).
-pub fn log_log_slope(points: &[(f64, f64)]) -> Option<f64> {
-    let logs: Vec<(f64, f64)> =
-        points.iter().filter(|(x, y)| *x > 0.0 && *y > 0.0).map(|(x, y)| (x.ln(), y.ln())).collect();
-    let n = logs.len() as f64;
-    if logs.len() < 2 {
-        return None;
-    }
-    let (mx, my) = (logs.iter().map(|p| p.0).sum::<f64>() / n, logs.iter().map(|p| p.1).sum::<f64>() / n);
-    let sxx: f64 = logs.iter().map(|p| (p.0 - mx).powi(2)).sum();
-    let sxy: f64 = logs.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
-    (sxx > 0.0).then(|| sxy / sxx)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn slope_of_a_power_law_is_its_exponent() {
-        // y = 3 x^1.5 exactly: the fit returns 1.5 to rounding (1e-12).
-        let pts: Vec<(f64, f64)> = [10.0, 100.0, 1000.0].iter().map(|&x: &f64| (x, 3.0 * x.powf(1.5))).collect();
-        assert!((log_log_slope(&pts).unwrap() - 1.5).abs() < 1e-12);
-        assert_eq!(log_log_slope(&pts[..1]), None);
-        assert_eq!(log_log_slope(&[(1.0, 1.0), (1.0, 2.0)]), None);
-    }
 
     #[test]
     fn probe_specs_round_trip() {
@@ -512,6 +464,23 @@ mod tests {
         assert_eq!(Spec::parse(&spec.to_arg()), Some(spec));
         assert_eq!(Spec::parse("duty-MID:4:fast:360"), None);
         assert_eq!(Spec::parse("nope:4:fast:-:-:-"), None);
+    }
+
+    #[test]
+    fn a_case_filter_selects_its_lines_and_refuses_unknown_names() {
+        let options = |cases: &[&str]| BenchOptions {
+            long: false,
+            sheet: PathBuf::from("tables/guo2020.toml"),
+            probe_exe: None,
+            cases: cases.iter().map(|c| c.to_string()).collect(),
+        };
+        assert_eq!(selected(&options(&[])).unwrap().len(), TABLE.len());
+        let bound = selected(&options(&["bound-rolling"])).unwrap();
+        assert_eq!(bound.len(), 2, "fast and clarabel");
+        assert!(bound.iter().all(|e| e.case == Case::BoundRolling && e.level == 3));
+        let err = selected(&options(&["bound-rolling", "nope"])).unwrap_err();
+        assert!(matches!(&err, BenchError::UnknownCase { name } if name == "nope"), "{err}");
+        assert!(err.to_string().contains("bound-step"), "{err}");
     }
 
     #[test]

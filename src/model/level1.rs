@@ -59,7 +59,7 @@ pub fn steady_rolling(mu: f64, wrap_angle_rad: f64, state: &EndState, travel_sig
     let (n1, n2) = (state.t1_n - c, state.t2_n - c);
     let travel_sign = if state.speed_m_s != 0.0 { state.speed_m_s.signum() } else { travel_sign.signum() };
     let beta = (n1 / n2).ln().abs() / mu;
-    let gross_slip = (n1.max(n2) / n1.min(n2)) > (mu * alpha).exp();
+    let gross_slip = crate::contact::slips_grossly(n1, n2, mu, alpha);
 
     let pieces = if gross_slip {
         // Sliding: exponential decay from the high-tension end over the whole wrap.

@@ -81,8 +81,8 @@ fn draw(area: &DrawingArea<BitMapBackend, plotters::coord::Shift>, rows: &[Bench
     let (t0, t1) = if t0 < t1 { (t0 / 2.0, t1 * 2.0) } else { (1e-3, 1e3) };
     let (y0, y1) = (ERROR_FLOOR / 3.0, (e1 * 10.0).max(ERROR_FLOOR * 100.0));
     let note = format!(
-        "error: max |T − T_exact| / T_ref over the output grid (levels 1–3; level 3: T_ref = ΔT), hand-arithmetic check values (level 0), \
-         max |T − T_ref| / T_ref at the snapshots against N = {}, Δt = {} s (level 4); errors below {ERROR_FLOOR:e} drawn at {ERROR_FLOOR:e}",
+        "error: max |T − T_exact| / T_ref on the output grid (levels 1–3; shear lag: T_ref = ΔT; bound cases: 5°–175°), hand arithmetic (level 0), \
+         max |T − T_ref| / T_ref at the snapshots against N = {}, Δt = {} s (level 4); below {ERROR_FLOOR:e} drawn at {ERROR_FLOOR:e}",
         crate::bench::DUTY_REFERENCE_NODES,
         crate::bench::DUTY_REFERENCE_STEP_S
     );

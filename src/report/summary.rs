@@ -7,6 +7,7 @@ use crate::fit::CreepFit;
 use crate::load_cases::MatrixResult;
 use crate::margins::Margins;
 use crate::model::level2::StepStats;
+use crate::model::level3::Level3Stats;
 use crate::model::stop::StopReport;
 use crate::roots::RootStats;
 use crate::run::{RunResult, SceneResult};
@@ -143,6 +144,9 @@ pub struct SceneJson {
     pub root_finding: Option<RootStats>,
     /// Increments, node events and clarabel verdicts of the discrete level.
     pub solver: Option<StepStats>,
+    /// Level 3: the active-set solver's terminations, Newton steps, increments handed to
+    /// clarabel and clarabel's verdicts, over the scene and its run-in.
+    pub level3_solver: Option<Level3Stats>,
     /// Design margins with their verdicts and root-finding tallies (when asked for).
     pub margins: Option<Margins>,
     /// The creep-theory picture fitted to the reported distribution (when asked for).
@@ -188,6 +192,7 @@ impl Summary {
                     checks: s.classical.checks.clone(),
                     root_finding: s.wrap.as_ref().map(|w| w.summary.roots),
                     solver: s.history.as_ref().map(|h| h.stats),
+                    level3_solver: s.level3,
                     margins: s.margins.clone(),
                     fit: s.fit.clone(),
                     cost: s.cost.clone(),

@@ -25,7 +25,7 @@ use crate::fit::{CreepFit, FitError};
 use crate::margins::Margins;
 use crate::model::level0::{Classical, EndState};
 use crate::model::level2::{HistoryRow, Level2Error, Params, Solver, StepStats};
-use crate::model::level3::Level3Error;
+use crate::model::level3::{Level3Error, Level3Stats};
 use crate::model::level4::Level4Error;
 use crate::model::stop::{SlipOnset, StopReport};
 use crate::planner::{self, Plan, PlanError, Request};
@@ -135,6 +135,8 @@ pub struct SceneResult {
     pub margins: Option<Margins>,
     /// Creep-theory picture fitted to the reported distribution (when the scene asks for `fit`).
     pub fit: Option<CreepFit>,
+    /// Level-3 solver counters of the scene (its run-in included), when the wrap ran at level 3.
+    pub level3: Option<Level3Stats>,
     pub nodes: Option<usize>,
     pub runtime_ms: f64,
     /// The run time estimated before the scene ran, and the work it stands for.
@@ -272,6 +274,7 @@ fn empty(scene: &Scene, plan: Plan, classical: Classical) -> SceneResult {
         worst: None,
         margins: None,
         fit: None,
+        level3: None,
         nodes: None,
         runtime_ms: 0.0,
         cost: None,

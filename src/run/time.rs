@@ -153,8 +153,9 @@ fn run_samples(
         None => Initial::Uniform(first.t1_n),
         Some(r) => Initial::Rolling { level1: r, first, direction },
     };
-    let run = wrap_history(design, scene, &result.plan, samples, output, initial, options)?;
+    let (run, level3) = wrap_history(design, scene, &result.plan, samples, output, initial, options)?;
     crate::tally::add_increments(run.stats.increments);
+    result.level3 = level3;
     let mut snapshots: Vec<level2::Snapshot> = run.snapshots;
     let last = snapshots.pop();
     result.snapshots = snapshots.into_iter().map(|s| s.distribution).collect();
@@ -190,7 +191,8 @@ pub(super) enum Initial<'a> {
     Rolling { level1: &'a level1::SteadyRolling, first: EndState, direction: Direction },
 }
 
-/// Runs the wrap through a history at the plan's wrap level (2, or 3 on an elastic lining).
+/// Runs the wrap through a history at the plan's wrap level (2, or 3 on an elastic lining), with
+/// the level-3 solver counters (its run-in included) when it ran at level 3.
 pub(super) fn wrap_history(
     design: &Design,
     scene: &Scene,
@@ -199,7 +201,7 @@ pub(super) fn wrap_history(
     output: level2::Output,
     initial: Initial,
     options: Options,
-) -> Result<level2::HistoryRun, RunError> {
+) -> Result<(level2::HistoryRun, Option<level3::Level3Stats>), RunError> {
     let alpha = design.pulley.wrap_angle_rad;
     match (planner::wrap_level(plan, design.lining.is_some()), design.lining) {
         (3, Some(lining)) => {
@@ -209,8 +211,10 @@ pub(super) fn wrap_history(
                 bending_stiffness_n_m2: design.rope.bending_stiffness_n_m2,
                 rope_inertia: lining.rope_inertia,
                 max_iter: level3::MAX_ITER,
+                travel_step_rad: level3::TRAVEL_STEP_RAD,
             };
             let err = |source| RunError::Level3 { scene: scene.name.clone(), source };
+            let mut stats = level3::Level3Stats::default();
             let initial = match initial {
                 Initial::Uniform(t) => level3::State::uniform(alpha, options.nodes, t),
                 Initial::Rolling { first, direction, .. } => {
@@ -220,10 +224,13 @@ pub(super) fn wrap_history(
                     let mut sim = level3::Simulation::new(params, &run_in, start).map_err(err)?;
                     sim.settle().map_err(err)?;
                     sim.advance_to(run_in.last().map_or(0.0, |s| s.t_s)).map_err(err)?;
+                    stats = sim.level3;
                     sim.state
                 }
             };
-            level3::run_history(params, samples, output, initial).map_err(err)
+            let (run, run_stats) = level3::run_history(params, samples, output, initial).map_err(err)?;
+            stats.add(&run_stats);
+            Ok((run, Some(stats)))
         }
         (3, None) => Err(PlanError::NoLining { scene: scene.name.clone() }.into()),
         _ => {
@@ -232,6 +239,7 @@ pub(super) fn wrap_history(
                 Initial::Rolling { level1, .. } => Profile::from_field(&level1.field, design.pulley.mu),
             };
             level2::run_history(params(design, options.solver), samples, output, initial, options.nodes)
+                .map(|run| (run, None))
                 .map_err(|source| RunError::Level2 { scene: scene.name.clone(), source })
         }
     }

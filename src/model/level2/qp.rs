@@ -113,13 +113,10 @@ fn solve(theta: &[f64], old: &[f64], env: &Envelopes) -> Result<(Vec<f64>, QpVer
     // Unknowns: the changes d_j = y_j − y_j^old (scaled), so that the objective ½ Σ w d² has no
     // large constant part and the solver's gap tolerance bounds the change itself.
     let old_y: Vec<f64> = old.iter().map(|n| n.max(0.0) / scale).collect();
-    let mut p_diag = Vec::with_capacity(vars);
     let q = vec![0.0; vars];
     // Equal weights: the optimum of a separable convex distance over this set is the clamp
     // whatever the weights (see [`super::envelope`]); equal ones condition the problem best.
-    for _ in (1..m - 1).filter(|&j| end_of(j).is_none()) {
-        p_diag.push(1.0);
-    }
+    let p_diag = vec![1.0; vars];
     let weights: Vec<f64> = (0..m).map(|j| if var_of[j] == usize::MAX { 0.0 } else { p_diag[var_of[j]] }).collect();
     let p = CscMatrix::new(vars, vars, (0..=vars).collect(), (0..vars).collect(), p_diag);
     // Two rows per interval (j, j+1).
@@ -382,12 +379,10 @@ fn multipliers(
         // From the left: node j's equation gives the link (j, j+1).
         let left_to = anchor.unwrap_or(end);
         let mut carried = 0.0; // λ of link (j−1, j) times its ∂g/∂y_j
-        for j in start..left_to {
-            if let Some((k, _, c_right)) = pair[j].map(|(k, cl, cr)| (k, cr, cl)) {
-                // ∂g/∂y_j of link (j, j+1) is `c_left` in the tuple (named for the pair's left knot).
-                let c_here = c_right;
+        for (j, link) in pair.iter().enumerate().take(left_to).skip(start) {
+            // Link (j, j+1): (its index, ∂g/∂y_j, ∂g/∂y_{j+1}).
+            if let Some((k, c_here, c_next)) = *link {
                 lambda[k] = -(grad(j) + carried) / c_here;
-                let (_, _, c_next) = pair[j].expect("active pair");
                 carried = lambda[k] * c_next;
             }
         }

@@ -107,10 +107,11 @@ impl Zone {
         let left_inside = self.p > profile.piece(i).theta0_rad;
         let right_inside = self.r < profile.piece(j).theta1_rad;
         let (left_ok, right_ok) = (left_stuck || left_inside, right_stuck || right_inside);
-        if left_ok && right_ok {
-            if let Some(zone) = self.compatible(profile) {
-                return zone;
-            }
+        if left_ok
+            && right_ok
+            && let Some(zone) = self.compatible(profile)
+        {
+            return zone;
         }
         let alpha = profile.wrap_angle_rad();
         let from_left = match (left_ok, right_ok) {
@@ -285,4 +286,57 @@ fn splice(profile: &mut Profile, a: f64, b: f64, zone: Piece) {
         p.theta1_rad = last.max(pj.theta1_rad);
     }
     profile.replace(i, j + 1, &items);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::wrap::TensionField;
+
+    /// A zone at the limit between two stuck constants, T_hi on [0, p] and T_lo on [r, α], made
+    /// at m'v² = c_o, after m'v² rises to c. Closed form: the zone joins T_hi to T_lo at the new
+    /// limit, so its length is L = ln((T_hi − c)/(T_lo − c))/μ; the rope keeps its length,
+    /// c L + (T_hi − T_lo)/μ = T_hi (p − a) + c_o L_o + (T_hi − T_lo)/μ + T_lo (b − r) with
+    /// L_o = r − p, so it grows into the high side by x = p − a =
+    /// (c L − c_o L_o − T_lo (L − L_o)) / (T_hi − T_lo) and into the low side by L − L_o − x.
+    #[test]
+    fn a_zone_between_stuck_rope_grows_as_the_rope_keeps_its_length() {
+        let (mu, alpha): (f64, f64) = (0.25, 3.0);
+        let (t_hi, t_lo, c_o, c): (f64, f64, f64, f64) = (1.2e5, 1.0e5, 100.0, 600.0);
+        let l_o = ((t_hi - c_o) / (t_lo - c_o)).ln() / mu;
+        let p = 1.0;
+        let r = p + l_o;
+        let field = TensionField {
+            pieces: vec![
+                Piece::constant(0.0, p, t_hi),
+                Piece::exponential(p, r, c_o, t_hi - c_o, -mu),
+                Piece::constant(r, alpha, t_lo),
+            ],
+        };
+        let mut profile = Profile::from_field(&field, mu);
+        assert_eq!(repair(&mut profile, c, mu, &mut RootStats::default()), 1);
+        let l = ((t_hi - c) / (t_lo - c)).ln() / mu;
+        let x = (c * l - c_o * l_o - t_lo * (l - l_o)) / (t_hi - t_lo);
+        let (a, b) = (p - x, r + (l - l_o - x));
+        // The zone's ends to 1e-12 rad (Newton converges to 1e-15 of α); its profile exact.
+        let zone = profile.piece(1);
+        assert!((zone.theta0_rad - a).abs() < 1e-12 && (zone.theta1_rad - b).abs() < 1e-12, "{zone:?} vs [{a}, {b}]");
+        for k in 0..=10 {
+            let th = a + (b - a) * k as f64 / 10.0;
+            let exact = c + (t_hi - c) * (-mu * (th - a)).exp();
+            assert!((profile.tension_n(th) - exact).abs() < 1e-9 * t_hi, "θ = {th}");
+        }
+        // The mirror image (reverse friction, the high side at α) grows the same way.
+        let mirrored = TensionField {
+            pieces: vec![
+                Piece::constant(0.0, alpha - r, t_lo),
+                Piece::exponential(alpha - r, alpha - p, c_o, t_lo - c_o, mu),
+                Piece::constant(alpha - p, alpha, t_hi),
+            ],
+        };
+        let mut profile = Profile::from_field(&mirrored, mu);
+        repair(&mut profile, c, mu, &mut RootStats::default());
+        let zone = profile.piece(1);
+        assert!((zone.theta0_rad - (alpha - b)).abs() < 1e-12 && (zone.theta1_rad - (alpha - a)).abs() < 1e-12);
+    }
 }

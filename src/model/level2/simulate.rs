@@ -303,9 +303,11 @@ impl<'a> Simulation<'a> {
             e => e,
         })?;
         self.stats.increments += 1;
+        // Gross slip holds or not over the whole increment (its crossings are cuts); the end
+        // instant decides too, so a ratio just beyond the limit at a sample is gross slip there.
         let mid = 0.5 * (a + b);
         let (n1, n2) = (input.t1_n(mid) - self.centrifugal_n, input.t2_n(mid) - self.centrifugal_n);
-        if crate::contact::slips_grossly(n1, n2, p.mu, p.wrap_angle_rad) {
+        if crate::contact::slips_grossly(n1, n2, p.mu, p.wrap_angle_rad) || !env.admissible() {
             clamp::slide(&mut self.profile, &env);
             self.gross_slip = true;
             self.stats.gross_slip_increments += 1;
@@ -407,7 +409,9 @@ fn entered(input: &Linear, a: f64, delta_rad: f64, alpha: f64) -> Piece {
         theta_a_rad: entry_theta + delta_rad,
         tension_n: tension,
         slope_n_per_s: slope,
-        omega_per_s: input.omega_per_s(a),
+        // The motion over the increment is one-way, along `delta_rad`; at a start from rest ω(a)
+        // is zero, not a rounding residue of the other sign (which would pick the wrong root).
+        omega_per_s: if input.omega_per_s(a) * delta_rad > 0.0 { input.omega_per_s(a) } else { 0.0 },
         alpha_per_s2: input.omega_slope_per_s2,
     };
     Piece::entry(lo, hi, ramp)

@@ -1,5 +1,6 @@
 //! One level-3 increment as a convex QP in clarabel (the formulation is in the [module
-//! doc](super)).
+//! doc](super)): the independent twin of the active-set solver ([`super::active_set`]), and
+//! what `--solver clarabel` runs.
 //!
 //! Cut tensions are scaled by `s = max(T1, T2)`: `x_k = T_k / s` for the interior cuts
 //! k = 1 … N − 1. With `D` the segment difference (`(Dx)_k = x_k − x_{k+1}`, end cuts and inertia
@@ -38,11 +39,61 @@ pub enum Verdict {
     Infeasible,
 }
 
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("clarabel failed on a level-3 increment: {status}")]
-pub struct SolveError {
-    pub status: String,
+/// clarabel's termination status (its `SolverStatus`, as data).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ClarabelStatus {
+    Unsolved,
+    Solved,
+    PrimalInfeasible,
+    DualInfeasible,
+    AlmostSolved,
+    AlmostPrimalInfeasible,
+    AlmostDualInfeasible,
+    MaxIterations,
+    MaxTime,
+    NumericalError,
+    InsufficientProgress,
+    CallbackTerminated,
 }
+
+impl From<SolverStatus> for ClarabelStatus {
+    fn from(s: SolverStatus) -> Self {
+        match s {
+            SolverStatus::Unsolved => Self::Unsolved,
+            SolverStatus::Solved => Self::Solved,
+            SolverStatus::PrimalInfeasible => Self::PrimalInfeasible,
+            SolverStatus::DualInfeasible => Self::DualInfeasible,
+            SolverStatus::AlmostSolved => Self::AlmostSolved,
+            SolverStatus::AlmostPrimalInfeasible => Self::AlmostPrimalInfeasible,
+            SolverStatus::AlmostDualInfeasible => Self::AlmostDualInfeasible,
+            SolverStatus::MaxIterations => Self::MaxIterations,
+            SolverStatus::MaxTime => Self::MaxTime,
+            SolverStatus::NumericalError => Self::NumericalError,
+            SolverStatus::InsufficientProgress => Self::InsufficientProgress,
+            SolverStatus::CallbackTerminated => Self::CallbackTerminated,
+        }
+    }
+}
+
+/// Why clarabel could not give an increment.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum SolveError {
+    #[error("clarabel ended a level-3 increment with status {0:?}")]
+    Status(ClarabelStatus),
+    #[error("clarabel rejected the level-3 program: {0}")]
+    Setup(String),
+    #[error("clarabel returned a non-finite tension change {0}")]
+    NonFinite(f64),
+}
+
+/// The scaled objective is multiplied by this before clarabel sees it. clarabel's duality gap
+/// test is absolute below an objective of 1 (its relative gap divides by max(1, |cost|)), and an
+/// increment's objective, half the squared change of the tensions over max(T1, T2)², is of
+/// order 1e-6: unscaled, a gap of 1e-11 leaves the tensions about √(2e-11) ≈ 5e-6 of the tension
+/// from the optimum. Scaled by 1e6 the same gap is 1e-17 of the objective, and the tensions
+/// are accurate to about 5e-9 of the tension.
+const OBJECTIVE_SCALE: f64 = 1e6;
 
 /// Data of one solve (per rope, SI).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -62,6 +113,9 @@ pub struct Program {
     radius_m: f64,
     solver: Option<DefaultSolver<f64>>,
     settings: DefaultSettings<f64>,
+    /// `ρ_k = ρ / w_k`, the lining term's weight on each segment (`w_k` its lining's share
+    /// under the rope; 1 where the rope is lifted off, whose friction the bound holds at 0).
+    weights: Vec<f64>,
     q: Vec<f64>,
     b: Vec<f64>,
 }
@@ -99,8 +153,9 @@ impl Program {
             .iterative_refinement_abstol(1e-16)
             .iterative_refinement_max_iter(50)
             .build()
-            .map_err(|e| SolveError { status: format!("settings: {e:?}") })?;
-        Ok(Self { segments, rho, ea_n, radius_m, solver: None, settings, q: Vec::new(), b: Vec::new() })
+            .map_err(|e| SolveError::Setup(format!("settings: {e:?}")))?;
+        let weights = vec![rho; segments];
+        Ok(Self { segments, rho, ea_n, radius_m, solver: None, settings, weights, q: Vec::new(), b: Vec::new() })
     }
 
     /// `(λ/Rh)²`: the lining's shear-lag length over the segment length, squared.
@@ -108,22 +163,32 @@ impl Program {
         self.rho
     }
 
+    /// The nonzeros of P's upper triangle, column by column: column j (cut j + 1, in segments j
+    /// and j + 1) holds (j − 1, j) = −ρ_j and (j, j) = 1 + ρ_j + ρ_{j+1}; scaled.
+    fn p_values(&self) -> Vec<f64> {
+        let w = &self.weights;
+        let mut nzval = Vec::with_capacity(2 * self.segments);
+        for j in 0..self.segments - 1 {
+            if j > 0 {
+                nzval.push(-w[j] * OBJECTIVE_SCALE);
+            }
+            nzval.push((1.0 + w[j] + w[j + 1]) * OBJECTIVE_SCALE);
+        }
+        nzval
+    }
+
     fn build(&self) -> Result<DefaultSolver<f64>, SolveError> {
         let n = self.segments;
         let m = n - 1;
-        let rho = self.rho;
-        // P upper triangle: column j holds (j−1, j) = −ρ and (j, j) = 1 + 2ρ.
-        let (mut colptr, mut rowval, mut nzval) = (vec![0usize], Vec::new(), Vec::new());
+        let (mut colptr, mut rowval) = (vec![0usize], Vec::new());
         for j in 0..m {
             if j > 0 {
                 rowval.push(j - 1);
-                nzval.push(-rho);
             }
             rowval.push(j);
-            nzval.push(1.0 + 2.0 * rho);
             colptr.push(rowval.len());
         }
-        let p = CscMatrix::new(m, m, colptr, rowval, nzval);
+        let p = CscMatrix::new(m, m, colptr, rowval, self.p_values());
         // A = [D; −D]: variable j (cut j + 1) enters segment j with +1 and segment j + 1 with −1.
         let (mut rows, mut cols, mut vals) = (Vec::new(), Vec::new(), Vec::new());
         for j in 0..m {
@@ -137,98 +202,56 @@ impl Program {
         let a = CscMatrix::new_from_triplets(2 * n, m, rows, cols, vals);
         let cones = [NonnegativeConeT(2 * n)];
         DefaultSolver::new(&p, &self.q, &a, &self.b, &cones, self.settings.clone())
-            .map_err(|e| SolveError { status: format!("{e}") })
+            .map_err(|e| SolveError::Setup(e.to_string()))
     }
 
     /// The linear term `q` of the objective for the increment from `state` (old tensions and
-    /// shear) to `loads`: `q = −x° + ρ Dᵀ(d − f°)`.
+    /// shear) to `loads`: `q = −x° + Dᵀ W (d − f°)`, W = diag(ρ_k).
     fn linear_term(&mut self, state: &State, loads: &Loads) {
         let n = self.segments;
         let s = loads.t1_n.max(loads.t2_n);
-        let rho = self.rho;
+        let w = &self.weights;
         self.q.clear();
         for j in 0..n - 1 {
             // Variable j is cut j + 1: +1 in segment j + 1, −1 in segment j.
             let y = |k: usize| end_term(loads, n, k) - state.friction_n[k] / s;
-            self.q.push(-state.tension_n[j + 1] / s + rho * (y(j + 1) - y(j)));
+            self.q.push(-state.tension_n[j + 1] / s + w[j + 1] * y(j + 1) - w[j] * y(j));
         }
-    }
-
-    /// The increment when no segment reaches its Coulomb bound: the unconstrained minimiser
-    /// `(I + ρ DᵀD) x = −q` (tridiagonal, O(N) by the Thomas algorithm). It is the solution of
-    /// the program exactly when it satisfies every bound strictly (all multipliers zero), checked
-    /// here against the contact forces of its own tensions (written to `normal_n`), so no fixed
-    /// point is needed. Returns false, leaving the state unchanged, if a bound is not met.
-    pub fn solve_elastic(
-        &mut self,
-        state: &mut State,
-        loads: &Loads,
-        mu: f64,
-        normal_n: &mut Vec<f64>,
-        bending: &super::state::Bending,
-        centrifugal_n: f64,
-    ) -> bool {
-        let n = self.segments;
-        let m = n - 1;
-        let s = loads.t1_n.max(loads.t2_n);
-        let (diag, off) = (1.0 + 2.0 * self.rho, -self.rho);
-        self.linear_term(state, loads);
-        // Thomas: forward sweep on c' and d', back substitution into x (kept in self.b).
-        let (mut c, x) = (vec![0.0; m], &mut self.b);
-        x.clear();
-        x.resize(m, 0.0);
-        let mut denom = diag;
-        c[0] = off / denom;
-        x[0] = -self.q[0] / denom;
-        for j in 1..m {
-            denom = diag - off * c[j - 1];
-            c[j] = off / denom;
-            x[j] = (-self.q[j] - off * x[j - 1]) / denom;
-        }
-        for j in (0..m - 1).rev() {
-            x[j] -= c[j] * x[j + 1];
-        }
-        let mut tension = Vec::with_capacity(n + 1);
-        tension.push(loads.t1_n);
-        tension.extend(x.iter().map(|v| v * s));
-        tension.push(loads.t2_n);
-        super::state::normal_forces(&tension, centrifugal_n, state.pitch_rad, bending, normal_n);
-        let inside = (0..n).all(|k| {
-            let f = tension[k] - tension[k + 1] + loads.inertia_n;
-            f.is_finite() && f.abs() < mu * normal_n[k] * (1.0 - 1e-6)
-        });
-        if inside {
-            for k in 0..n {
-                state.friction_n[k] = tension[k] - tension[k + 1] + loads.inertia_n;
-                state.slip_m[k] = 0.0;
-            }
-            state.tension_n = tension;
-        }
-        inside
     }
 
     /// Solves the increment from `state` (its tensions and shear are the old values; its ends
-    /// are replaced by the loads) with the contact forces `normal_n` in Coulomb's bound.
-    /// On success the state holds the new tensions, friction and slip.
-    pub fn solve(&mut self, state: &mut State, loads: &Loads, normal_n: &[f64]) -> Result<Verdict, SolveError> {
+    /// are replaced by the loads) with the contact forces `normal_n` in Coulomb's bound and
+    /// `lining_share[k]` of each segment's lining under the rope. On success the state holds
+    /// the new tensions, friction and slip.
+    pub fn solve(
+        &mut self,
+        state: &mut State,
+        loads: &Loads,
+        normal_n: &[f64],
+        lining_share: &[f64],
+    ) -> Result<Verdict, SolveError> {
         let n = self.segments;
         let s = loads.t1_n.max(loads.t2_n);
         let d = |k: usize| end_term(loads, n, k);
+        let weights: Vec<f64> =
+            lining_share.iter().map(|&share| if share > 0.0 { self.rho / share } else { self.rho }).collect();
+        let weights_changed = weights != self.weights;
+        self.weights = weights;
         self.linear_term(state, loads);
         // The unknowns are the changes y = x − x° (an increment moves little, so the optimum's
         // objective is small and clarabel's tolerances act on the change itself):
         // q_y = q + P x°, and A y ≤ b − A x° with (A x°)_k = ±(D x°)_k.
         let old = |j: usize| state.tension_n[j + 1] / s;
-        let rho = self.rho;
+        let w = &self.weights;
         for (j, qj) in self.q.iter_mut().enumerate() {
-            let mut px = (1.0 + 2.0 * rho) * old(j);
+            let mut px = (1.0 + w[j] + w[j + 1]) * old(j);
             if j > 0 {
-                px -= rho * old(j - 1);
+                px -= w[j] * old(j - 1);
             }
             if j + 2 < n {
-                px -= rho * old(j + 1);
+                px -= w[j + 1] * old(j + 1);
             }
-            *qj += px;
+            *qj = (*qj + px) * OBJECTIVE_SCALE;
         }
         let dx_old = |k: usize| {
             let here = if k >= 1 { state.tension_n[k] / s } else { 0.0 };
@@ -238,10 +261,14 @@ impl Program {
         self.b.clear();
         self.b.extend(normal_n.iter().enumerate().map(|(k, nk)| loads.mu * nk / s - d(k) - dx_old(k)));
         self.b.extend(normal_n.iter().enumerate().map(|(k, nk)| loads.mu * nk / s + d(k) + dx_old(k)));
+        let p_values = weights_changed.then(|| self.p_values());
         match &mut self.solver {
             Some(solver) => {
-                solver.update_q(&self.q).map_err(|e| SolveError { status: format!("data update: {e:?}") })?;
-                solver.update_b(&self.b).map_err(|e| SolveError { status: format!("data update: {e:?}") })?;
+                if let Some(values) = &p_values {
+                    solver.update_P(values).map_err(|e| SolveError::Setup(format!("data update: {e:?}")))?;
+                }
+                solver.update_q(&self.q).map_err(|e| SolveError::Setup(format!("data update: {e:?}")))?;
+                solver.update_b(&self.b).map_err(|e| SolveError::Setup(format!("data update: {e:?}")))?;
             }
             None => self.solver = Some(self.build()?),
         }
@@ -251,11 +278,11 @@ impl Program {
             SolverStatus::Solved => Verdict::Solved,
             SolverStatus::AlmostSolved => Verdict::AlmostSolved,
             SolverStatus::PrimalInfeasible | SolverStatus::AlmostPrimalInfeasible => return Ok(Verdict::Infeasible),
-            other => return Err(SolveError { status: format!("{other:?}") }),
+            other => return Err(SolveError::Status(other.into())),
         };
         let x = &solver.solution.x;
         if let Some(bad) = x.iter().find(|v| !v.is_finite()) {
-            return Err(SolveError { status: format!("non-finite tension {bad} in the solution") });
+            return Err(SolveError::NonFinite(*bad));
         }
         state.tension_n[0] = loads.t1_n;
         state.tension_n[n] = loads.t2_n;
@@ -269,7 +296,7 @@ impl Program {
         let to_m = self.radius_m * state.pitch_rad * s / self.ea_n;
         for k in 0..n {
             state.friction_n[k] = state.tension_n[k] - state.tension_n[k + 1] + loads.inertia_n;
-            state.slip_m[k] = -(z[k] - z[n + k]) * to_m;
+            state.slip_m[k] = -(z[k] - z[n + k]) / OBJECTIVE_SCALE * to_m;
         }
         Ok(verdict)
     }

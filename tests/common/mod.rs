@@ -1,0 +1,78 @@
+//! What the level-3 test files share: the bench rope on a pulley of R = 2.5 m, histories at
+//! rest, runs to a final state, Coulomb's law and mirror images of histories and states.
+#![allow(dead_code)]
+
+use wrapcalc::model::level2::{self, HistorySample, Solver};
+use wrapcalc::model::level3::{self, Params, State};
+
+pub const R_M: f64 = 2.5;
+pub const EA_N: f64 = 2.634e8;
+pub const T0_N: f64 = 2.0e5;
+pub const MASS_PER_M_KG: f64 = 10.81;
+
+/// Level-3 parameters of the bench rope (no bending, no inertia) on the given wrap and lining.
+pub fn params(mu: f64, alpha_rad: f64, shear_stiffness_n_per_m2: f64, solver: Solver) -> Params {
+    Params {
+        wrap: level2::Params {
+            mu,
+            wrap_angle_rad: alpha_rad,
+            radius_m: R_M,
+            mass_per_m_kg: MASS_PER_M_KG,
+            ea_n: EA_N,
+            solver,
+        },
+        shear_stiffness_n_per_m2,
+        bending_stiffness_n_m2: 0.0,
+        rope_inertia: false,
+        max_iter: level3::MAX_ITER,
+        travel_step_rad: level3::TRAVEL_STEP_RAD,
+    }
+}
+
+pub fn at_rest(t_s: f64, t1_n: f64, t2_n: f64) -> HistorySample {
+    HistorySample { t_s, t1_n, t2_n, speed_m_s: 0.0 }
+}
+
+/// Runs `samples` from a uniform rope at the first sample's larger end tension (the same for a
+/// history and its mirror) and returns the simulation at the last sample.
+pub fn run_to_end<'a>(p: Params, segments: usize, samples: &'a [HistorySample]) -> level3::Simulation<'a> {
+    let start = State::uniform(p.wrap.wrap_angle_rad, segments, samples[0].t1_n.max(samples[0].t2_n));
+    let mut sim = level3::Simulation::new(p, samples, start).expect("builds");
+    sim.settle().expect("settles");
+    sim.advance_to(samples.last().unwrap().t_s).expect("runs");
+    sim
+}
+
+/// Rounding allowed on Coulomb's law: both solvers clamp F to ±μN in units of max(T1, T2) and
+/// scale both back, a few ulps.
+pub const COULOMB_ROUNDING: f64 = 1e-14;
+
+/// |F_k| ≤ μN_k on every segment (to [`COULOMB_ROUNDING`]).
+pub fn assert_coulomb(state: &State, mu: f64) {
+    for k in 0..state.segments() {
+        let (f, n) = (state.friction_n[k], state.normal_n[k]);
+        assert!(f.abs() <= mu * n * (1.0 + COULOMB_ROUNDING), "segment {k}: |F| = {f} > μN = {}", mu * n);
+    }
+}
+
+/// The mirror image of a history: sides swapped, the rope running the other way.
+pub fn mirror(samples: &[HistorySample]) -> Vec<HistorySample> {
+    samples.iter().map(|s| HistorySample { t_s: s.t_s, t1_n: s.t2_n, t2_n: s.t1_n, speed_m_s: -s.speed_m_s }).collect()
+}
+
+/// Largest difference between a state's tensions and the mirror of another's, over `scale`:
+/// T(θ_j) against T'(α − θ_j), cut j against cut N − j.
+pub fn mirror_gap(a: &State, b: &State, scale: f64) -> f64 {
+    let n = a.segments();
+    (0..=n).map(|j| (a.tension_n[j] - b.tension_n[n - j]).abs()).fold(0.0, f64::max) / scale
+}
+
+/// Property-test settings: `cases` random cases from a fixed seed, so that every run (and CI)
+/// draws the same cases (after the saved regressions) and a failure is reproducible; `PROPTEST_RNG_SEED` and
+/// `PROPTEST_CASES` draw others (for a longer search, run with a new seed and more cases).
+pub fn proptest_config(cases: u32) -> proptest::test_runner::Config {
+    use proptest::test_runner::{Config, RngSeed};
+    let seed = std::env::var("PROPTEST_RNG_SEED").ok().and_then(|s| s.parse().ok()).unwrap_or(0x0057_1C4E_D0E5);
+    let cases = std::env::var("PROPTEST_CASES").ok().and_then(|s| s.parse().ok()).unwrap_or(cases);
+    Config { cases, rng_seed: RngSeed::Fixed(seed), ..Config::default() }
+}
