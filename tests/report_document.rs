@@ -94,7 +94,8 @@ fn report_prints_to_pdf_with_verdicts_and_the_governing_case() {
     assert!(text.contains(&words(case)), "the PDF lacks the governing case {case:?}");
     assert!(text.contains(&format!("{value:.4}")), "the PDF lacks σ_d = {value:.4}");
     for input in check["inputs"].as_array().expect("inputs").iter().filter(|q| q["unit"] == "N") {
-        let shown = format!("{} = {:.1} N", input["name"].as_str().unwrap_or_default(), input["value"].as_f64().unwrap_or(0.0));
+        let shown =
+            format!("{} = {:.1} N", input["name"].as_str().unwrap_or_default(), input["value"].as_f64().unwrap_or(0.0));
         assert!(text.contains(&shown), "the PDF lacks the input {shown:?}");
     }
 }
@@ -143,9 +144,10 @@ fn workbook_recomputed_by_libreoffice_equals_wrapcalc() {
         .from_path(tmp.path().join("checks.csv"))
         .expect("checks.csv");
     let rows: Vec<csv::StringRecord> = reader.records().map(|r| r.expect("csv row")).skip(3).collect();
-    let checks: usize = serde_json::from_str::<serde_json::Value>(&std::fs::read_to_string(dir.join("summary.json")).expect("summary"))
-        .map(|s| s["design_checks"].as_array().map_or(0, Vec::len))
-        .expect("json");
+    let checks: usize =
+        serde_json::from_str::<serde_json::Value>(&std::fs::read_to_string(dir.join("summary.json")).expect("summary"))
+            .map(|s| s["design_checks"].as_array().map_or(0, Vec::len))
+            .expect("json");
     assert!(rows.len() > checks, "every check is a row ({} rows)", rows.len());
     let (mut formulas, mut by_hand) = (0, 0);
     for row in &rows {
@@ -161,7 +163,8 @@ fn workbook_recomputed_by_libreoffice_equals_wrapcalc() {
         }
         if name == "gross slip (Euler/capstan)" {
             // By hand from the row's inputs: (T_hi − m'v²)/(T_lo − m'v²).
-            let input = |n: &str| (15..row.len()).step_by(2).find(|&c| row.get(c) == Some(n)).and_then(|c| cell(row, c + 1));
+            let input =
+                |n: &str| (15..row.len()).step_by(2).find(|&c| row.get(c) == Some(n)).and_then(|c| cell(row, c + 1));
             let (t1, t2, c) = (input("T1").expect("T1"), input("T2").expect("T2"), input("m'v²").expect("m'v²"));
             let ratio = (t1.max(t2) - c) / (t1.min(t2) - c);
             assert!(rel(cell(row, 4).expect("recomputed"), ratio) <= 1e-12, "{name}: by hand {ratio}");
@@ -189,7 +192,9 @@ m2_kg = 10000.0
 
 #[test]
 fn document_section_is_echoed_as_given() {
-    let sheet = format!("{SHEET}[document]\nproject = \"Shaft 2\"\nrevision = 3\ndate = 2024-05-01\nchecker = \"B. Checker\"\n");
+    let sheet = format!(
+        "{SHEET}[document]\nproject = \"Shaft 2\"\nrevision = 3\ndate = 2024-05-01\nchecker = \"B. Checker\"\n"
+    );
     let design = wrapcalc::sheet::parse("doc.toml", &sheet).expect("valid sheet");
     let d = &design.document;
     assert_eq!(d.project.as_deref(), Some("Shaft 2"));
@@ -203,9 +208,10 @@ fn document_section_is_echoed_as_given() {
 
 #[test]
 fn document_errors_name_the_key_and_place() {
+    // SHEET opens with a blank line and has 14 lines; [document] is line 15, `author` line 16.
     let sheet = format!("{SHEET}[document]\nauthor = 12.5\n");
     let err = wrapcalc::sheet::parse("doc.toml", &sheet).expect_err("a number is not an author").to_string();
-    assert!(err.contains("doc.toml:17:10") && err.contains("document.author") && err.contains("text"), "{err}");
+    assert!(err.contains("doc.toml:16:10") && err.contains("document.author") && err.contains("text"), "{err}");
     let sheet = format!("{SHEET}[document]\nauthr = \"x\"\n");
     let err = wrapcalc::sheet::parse("doc.toml", &sheet).expect_err("unknown key").to_string();
     assert!(err.contains("document.authr") && err.contains("unknown field"), "{err}");
