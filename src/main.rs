@@ -204,6 +204,7 @@ fn parse_level(s: &str) -> Result<LevelArg, String> {
 }
 
 fn main() -> ExitCode {
+    restore_sigpipe();
     let cli = Cli::parse();
     match execute(cli) {
         Ok(true) => ExitCode::SUCCESS,
@@ -213,6 +214,17 @@ fn main() -> ExitCode {
             eprintln!("error: {e}");
             ExitCode::from(1)
         }
+    }
+}
+
+/// A closed pipe (`wrapcalc run … | head`) ends the program quietly, as it does any Unix
+/// filter: Rust ignores SIGPIPE, which would turn the next write into a panic.
+fn restore_sigpipe() {
+    #[cfg(unix)]
+    // SAFETY: called first thing in `main`, before any other thread exists; SIG_DFL is a
+    // valid disposition for SIGPIPE.
+    unsafe {
+        libc::signal(libc::SIGPIPE, libc::SIG_DFL);
     }
 }
 
