@@ -8,14 +8,15 @@
 use crate::wrap::Piece;
 use std::fmt;
 
-/// Utilization at or above which a node is reported as slipping (MODEL §2).
+/// Utilization at or above which a node is reported as slipping (docs/physics.md §2).
 pub const SLIP_UTILIZATION: f64 = 0.999;
-/// Friction below this fraction of μn counts as zero for the positive/reverse arcs (MODEL §2).
+/// Friction below this fraction of μn counts as zero for the positive/reverse arcs (docs/physics.md §2).
 pub const ARC_THRESHOLD: f64 = 0.001;
 
 /// Gross slip: no admissible tension field joins the contact forces `n1`, `n2` at the two ends
-/// of a wrap of `wrap_angle_rad`, i.e. `n_hi / n_lo > e^{μα}` (MODEL §3). Every level decides
-/// gross slip with this one test, so a state within an ulp of the limit gets one verdict.
+/// of a wrap of `wrap_angle_rad`, i.e. `n_hi / n_lo > e^{μα}` (docs/physics.md §3). Levels 1
+/// and 2 decide gross slip with this one test (level 0 makes the same comparison on its
+/// printed ratio), so a state within an ulp of the limit gets one verdict.
 pub fn slips_grossly(n1: f64, n2: f64, mu: f64, wrap_angle_rad: f64) -> bool {
     n1.max(n2) / n1.min(n2) > (mu * wrap_angle_rad).exp()
 }

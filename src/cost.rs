@@ -1,5 +1,5 @@
 //! What a scene will cost, known from the sheet before it runs, in each model's own measure of
-//! work (MODEL §7 picks the level; this says what that level will do):
+//! work (docs/physics.md §7 picks the level; this says what that level will do):
 //!
 //! | level | measure |
 //! |---|---|

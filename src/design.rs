@@ -121,7 +121,7 @@ pub struct MotionStage {
     pub step: bool,
 }
 
-/// A hoisting cycle of the `[hoist]` (INTERFACE `kind = "duty-cycle"`).
+/// A hoisting cycle of the `[hoist]` (docs/interface.md §2, `kind = "duty-cycle"`).
 #[derive(Debug, Clone, PartialEq)]
 pub struct DutyCycleScene {
     /// Payload on the side-1 conveyance (kg).
@@ -135,7 +135,7 @@ pub struct DutyCycleScene {
     /// Emergency braking: at `at_s` the drive decelerates at `decel_m_s2` until the hoist stops.
     pub emergency: Option<EmergencyStop>,
     /// Emergency braking by the sheet's `[brake]`: at this time the drive trips and the pulley
-    /// becomes a body that the brake stops (MODEL §11).
+    /// becomes a body that the brake stops (docs/physics.md §11).
     pub brake_stop_s: Option<f64>,
     pub snapshots_s: Vec<f64>,
     /// Time between history rows (s).
@@ -162,7 +162,7 @@ pub struct Pulley {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum WrapSource {
     Given,
-    /// Computed from the guide-pulley geometry (MODEL §3).
+    /// Computed from the guide-pulley geometry (docs/physics.md §3).
     GuidePulley {
         diameter_m: f64,
         vertical_m: f64,
@@ -185,7 +185,7 @@ pub struct Rope {
     pub bending_stiffness_n_m2: f64,
 }
 
-/// What turns with the rope beside the hanging masses (MODEL §11), and the brake.
+/// What turns with the rope beside the hanging masses (docs/physics.md §11), and the brake.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Machine {
     /// Friction pulley with the motor rotor (and gear) reduced to the pulley axis (kg·m²; 0
@@ -267,7 +267,7 @@ pub struct Scene {
     pub outputs: Outputs,
 }
 
-/// One thing a scene can ask for (MODEL §7); the planner runs the cheapest level that gives all
+/// One thing a scene can ask for (docs/physics.md §7); the planner runs the cheapest level that gives all
 /// of a scene's outputs.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Output {
@@ -372,7 +372,7 @@ pub struct HistorySample {
     pub speed_m_s: f64,
 }
 
-/// A load history at the rope ends (INTERFACE `kind = "history"`), piecewise linear in time.
+/// A load history at the rope ends (docs/interface.md §2, `kind = "history"`), piecewise linear in time.
 #[derive(Debug, Clone, PartialEq)]
 pub struct HistoryScene {
     /// At least two samples, strictly increasing in time.
@@ -385,7 +385,7 @@ pub struct HistoryScene {
     pub direction: Direction,
 }
 
-/// A steady state under constant end loads (INTERFACE `kind = "loads"`).
+/// A steady state under constant end loads (docs/interface.md §2, `kind = "loads"`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LoadsScene {
     pub ends: EndLoads,

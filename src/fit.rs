@@ -1,7 +1,7 @@
-//! Creep-theory parameters fitted to a distribution (MODEL §8): how far the load history has
+//! Creep-theory parameters fitted to a distribution (docs/physics.md §8): how far the load history has
 //! taken the wrap from the classical picture of steady rolling.
 //!
-//! The classical picture (MODEL §4): an idle arc at the rope's entry with constant tension
+//! The classical picture (docs/physics.md §4): an idle arc at the rope's entry with constant tension
 //! `T_idle` and no friction, then an active arc of length β reaching to the exit, in which
 //!
 //! `T(φ) − m'v² = (T_idle − m'v²)·e^{kφ}`, `k = ±μ`, φ = distance into the active arc.

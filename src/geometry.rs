@@ -1,7 +1,7 @@
 //! Pulley geometry.
 
 /// Wrap angle of the friction pulley with a guide (deflection) pulley, the rope crossing between
-/// the two pulleys (MODEL §3):
+/// the two pulleys (docs/physics.md §3):
 ///
 /// ```text
 /// α = 180° + asin((R + Rg) / D) − atan(h_h / h_v),   D = √(h_v² + h_h²)

@@ -205,7 +205,15 @@ fn parse_level(s: &str) -> Result<LevelArg, String> {
 
 fn main() -> ExitCode {
     restore_sigpipe();
-    let cli = Cli::parse();
+    // Help and version print and exit 0; a usage error is bad input: exit status 1 (status 2
+    // is kept for a design that fails its checks).
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => {
+            let _ = e.print();
+            return if e.use_stderr() { ExitCode::from(1) } else { ExitCode::SUCCESS };
+        }
+    };
     match execute(cli) {
         Ok(true) => ExitCode::SUCCESS,
         Ok(false) => ExitCode::from(2),

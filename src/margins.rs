@@ -1,4 +1,4 @@
-//! Design margins by root finding (MODEL §8): how far a state is from gross slip, and from the
+//! Design margins by root finding (docs/physics.md §8): how far a state is from gross slip, and from the
 //! required safety factor, measured in the quantities an engineer changes.
 //!
 //! Rigid-rope model of the state: side masses `m1 = T1·n/(g + a)`, `m2 = T2·n/(g − a)` (all ropes),

@@ -1,4 +1,4 @@
-//! The scene planner: the cheapest model level that answers what a scene asks for (MODEL §7).
+//! The scene planner: the cheapest model level that answers what a scene asks for (docs/physics.md §7).
 //!
 //! A scene lists its outputs (`outputs = [...]`, default everything its kind can give); each
 //! output needs a level, and the scene runs at the highest of them — never more:

@@ -1,7 +1,7 @@
-//! Physics against hand-derived references: MODEL §3 (classical checks) and §4 (creep theory).
+//! Physics against hand-derived references: docs/physics.md §3 (classical checks) and §4 (creep theory).
 //!
 //! Every expected value below is worked out by hand in the comments from the formulas of
-//! MODEL.md, never copied from the program's output. Tolerances:
+//! docs/physics.md, never copied from the program's output. Tolerances:
 //! * 1e-12 relative for closed-form quantities the program evaluates with the same handful of
 //!   floating-point operations (a few ulps of accumulated round-off);
 //! * the number of digits written in the comment where the expected value is a rounded hand
@@ -44,7 +44,7 @@ fn scene<'a>(r: &'a RunResult, name: &str) -> &'a SceneResult {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Geometry (MODEL §3)
+// Geometry (docs/physics.md §3)
 
 #[test]
 fn wrap_angle_of_the_reference_hoist_is_187_42_deg() {
@@ -70,7 +70,7 @@ fn overlapping_pulleys_have_no_crossing_rope() {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Classical checks (MODEL §3): three load cases on α = 180°, μ = 0.25:
+// Classical checks (docs/physics.md §3): three load cases on α = 180°, μ = 0.25:
 // μα = 0.25 π = 0.785398, e^{μα} = 2.193280 (2.1932800507)
 
 const E_PI_4: f64 = 2.193_280_050_738_015;
@@ -187,7 +187,7 @@ fn gross_slip_just_above_the_euler_limit_and_not_just_below() {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Creep theory (MODEL §4): μ = 0.25, T1/T2 = 1.15 → β = ln 1.15 / 0.25 = 0.139762 / 0.25
+// Creep theory (docs/physics.md §4): μ = 0.25, T1/T2 = 1.15 → β = ln 1.15 / 0.25 = 0.139762 / 0.25
 // = 0.559048 rad = 32.031078°
 
 const BETA_115_DEG: f64 = 32.031_078;

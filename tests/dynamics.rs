@@ -140,7 +140,7 @@ fn closed_form_frequencies_match_the_hand_values() {
         let fs = spring_mass_frequency_hz(&reference(), side, x).expect("valid");
         assert!(rel(fc, f_cont) < 2e-6, "x = {x} {side}: continuum {fc}, hand {f_cont}");
         assert!(rel(fs, f_sm) < 2e-6, "x = {x} {side}: spring–mass {fs}, hand {f_sm}");
-        // brief's 2 % criterion between the two closed forms
+        // The spring–mass estimate is within 2 % of the continuum: the ropes are light against the ends.
         assert!(rel(fs, fc) < 0.02);
     }
 }
@@ -226,7 +226,8 @@ fn undamped_free_vibration_conserves_energy() {
     // The trapezoidal rule conserves ½vᵀMv + ½qᵀKq − Fᵀq of a linear undamped system with
     // constant matrices exactly; what remains is round-off of energies of ~1e5 J against an
     // oscillation energy of ~½·k·δ² ≈ 180 J (k = 3.6e6 N/m, δ = 0.01 m on side 1) plus ~5 kJ on
-    // side 2 (k = 1.05e8 N/m). Criterion from the brief: drift < 0.1 % of the oscillation energy.
+    // side 2 (k = 1.05e8 N/m). Criterion: drift < 0.1 % of the oscillation energy (round-off
+    // alone stays orders below it).
     let p = undamped(reference());
     let (eq, run) = free_vibration(&p, 10.0, 1e-3, 16, 0.01);
     let e_osc = run[0].energy_j - eq[0].energy_j;
@@ -243,8 +244,8 @@ fn undamped_lifting_cycle_satisfies_the_energy_balance() {
     // and leaving the sides, changing inertial and tail loads), accumulated from the mid-step
     // state. That quadrature is second order, so the balance error per unit oscillation energy
     // is ~ (dt/T_change)² with the fastest change on the short side (l̇/l ≤ 10/15 1/s) and the
-    // oscillation (ω ≤ 29 rad/s): (29·2e-3)²-scaled local errors that average out; criterion
-    // from the brief: < 0.1 % of the oscillation energy.
+    // oscillation (ω ≤ 29 rad/s): (29·2e-3)²-scaled local errors that average out; criterion:
+    // < 0.1 % of the oscillation energy.
     let p = undamped(reference());
     let profile = MotionProfile::new(&reference_stages()).expect("valid");
     let opts = SimOptions { initial_offset_m: [0.01; 2], record_every: 10, ..SimOptions::new(1e-3, 8) };

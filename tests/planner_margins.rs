@@ -1,4 +1,4 @@
-//! The planner (MODEL §7), the design margins by root finding and the creep-theory fit (MODEL §8).
+//! The planner (docs/physics.md §7), the design margins by root finding and the creep-theory fit (docs/physics.md §8).
 //!
 //! Margins are checked against their closed forms, derived by hand in each test from the
 //! rigid-rope tensions T1 = m1(g + a)/n, T2 = m2(g − a)/n; the fit against a distribution
@@ -211,7 +211,7 @@ fn rel(a: f64, b: f64) -> f64 {
 fn margins_match_their_closed_forms() {
     let d = design();
     let n = 6.0;
-    // The sheet gives the guide-pulley geometry: α = 187.4164° (MODEL §3 rounds it to 187.42°).
+    // The sheet gives the guide-pulley geometry: α = 187.4164° (docs/physics.md §3 rounds it to 187.42°).
     let alpha = d.pulley.wrap_angle_rad;
     assert!((alpha.to_degrees() - 187.42).abs() < 0.01);
     let e = (0.25 * alpha).exp();
@@ -268,8 +268,8 @@ fn margins_report_bracket_failures_as_verdicts() {
 
 /// Creep theory's picture sampled on an uneven grid: idle arc [0, α − β] at T_idle, then
 /// T − c = (T_idle − c)e^{−μφ} (positive friction, entry at side 1). β = 37.123°, μ = 0.25,
-/// α = 187.42°, T_idle = 2.2e5 N, c = 1070 N. The fit must recover β within 0.01° (the issue's
-/// tolerance) and T_idle within 1e-6 relative; with the sign and entry side mirrored (reverse
+/// α = 187.42°, T_idle = 2.2e5 N, c = 1070 N. The fit must recover β within 0.01° (a hundredth of
+/// a degree: below what the arc plots resolve) and T_idle within 1e-6 relative; with the sign and entry side mirrored (reverse
 /// friction entering at side 2) as well.
 #[test]
 fn fit_recovers_creep_theory_parameters() {

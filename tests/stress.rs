@@ -2,7 +2,7 @@
 //! ratios from 1 + 1e-12 to just below and above the Euler limit e^{μα}, tensions from 1 N to
 //! 1e8 N, m'v² up to the tension, N from 8 to 100 000, time steps from 1e-6 s to 1 s, long
 //! histories, abrupt steps and reversals. Every case either gives finite results that obey
-//! Coulomb's law and the end conditions (MODEL §5), or a clear error; never a panic or NaN.
+//! Coulomb's law and the end conditions (docs/physics.md §5), or a clear error; never a panic or NaN.
 //!
 //! The long cases (N = 100 000, 1e6 steps, a duty cycle at Δt = 1e-6 s) are `#[ignore]`d:
 //! `cargo test --release --test stress -- --ignored` runs them; `wrapcalc bench --long` times the
@@ -338,7 +338,7 @@ fn history_of_a_million_steps() {
 fn wrap_angles_near_the_limits_of_mu_alpha() {
     // μα from 0.01 · 30° to 1 · 400°: a step to just inside the Euler limit holds with the slip
     // zone covering the whole wrap less a sliver, one just beyond slides. Exact ratios from
-    // the closed form e^{μα} (MODEL §2).
+    // the closed form e^{μα} (docs/physics.md §2).
     for (mu, wrap_deg) in [(0.01, 30.0), (1.0, 400.0), (0.25, 187.42)] {
         let limit: f64 = (mu * f64::to_radians(wrap_deg)).exp();
         for (ratio, slides) in [(limit * (1.0 - 1e-9), false), (limit * (1.0 + 1e-9), true)] {

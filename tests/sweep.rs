@@ -237,7 +237,7 @@ fn a_sweep_row_equals_a_plain_run_of_the_sheet_with_that_value() {
             let got = row(&file, &scene.name, m1);
             assert_eq!(got.cells, expected.cells, "scene {} at m1 = {m1}", scene.name);
         }
-        // And the tension follows T1 = m1 g / n (MODEL §3), to round-off.
+        // And the tension follows T1 = m1 g / n (docs/physics.md §3), to round-off.
         let t1 = row(&file, "rest", m1).num("t1_n").expect("t1");
         assert!((t1 - m1 * G_M_S2 / 4.0).abs() <= 1e-12 * t1);
     }

@@ -4,7 +4,7 @@
 //! rope: μ = 0.25, α = 187.42°, D = 5 m, six ropes of 10.81 kg/m, EA = 2.634e8 N) built in code,
 //! through [`run::run`] exactly as `wrapcalc run` runs a sheet's scene.
 //!
-//! ## Standstill step (MODEL §5)
+//! ## Standstill step (docs/physics.md §5)
 //! Uniform rope at T0, pulley at rest, T1 raised to k·T0 (T2 = T0). With v = 0 the contact
 //! force is n = T and a slipping stretch has |dT/dθ| = μT. The rope slips from θ = 0 (where the
 //! tension is raised) as far as the decaying envelope kT0·e^{−μθ} stays above the stuck T0, i.e.
@@ -17,7 +17,7 @@
 //! the stuck curve kT0·e^{−μθ} at k2·e^{μθ*} = k·e^{−μθ*}, θ* = ln(k/k2)/(2μ). So
 //! `T = k2 T0 e^{μθ}` on [0, θ*], then the old `max(k T0 e^{−μθ}, T0)`.
 //!
-//! ## Steady rolling with the centrifugal term (MODEL §4)
+//! ## Steady rolling with the centrifugal term (docs/physics.md §4)
 //! Constant T1 > T2 and v > 0, m'v² = c a sizeable fraction of T2. The contact force is
 //! n = T − c and in a creep arc |d(T − c)/dθ| = μ(T − c). The rope enters at θ = 0 stuck at T1
 //! and keeps it over the idle arc; the drop to T2 happens in the active arc at the exit of
@@ -223,7 +223,7 @@ pub fn exact_tension_n(case: Case, theta_rad: f64) -> Option<f64> {
             })
         }
         // A bar on a linear shear foundation, EA T'' = k_s (T − T0), T(0) = T0 + ΔT, T(L) = T0:
-        // T − T0 = ΔT sinh((L − x)/λ)/sinh(L/λ), x = Rθ (MODEL §5, level 3).
+        // T − T0 = ΔT sinh((L − x)/λ)/sinh(L/λ), x = Rθ (docs/physics.md §12).
         Case::ShearLag => {
             let (length_m, lambda_m) = shear_lag_lengths_m();
             let x = 0.5 * DIAMETER_M * theta_rad;

@@ -1,4 +1,4 @@
-//! The checks beside anti-slip (MODEL §10), each over the static states of a design (the
+//! The checks beside anti-slip (docs/physics.md §10), each over the static states of a design (the
 //! load-case matrix's payloads × positions and every scene's state at rest): the rope safety
 //! factor, D/d of the friction pulley and of the guide sheave, the specific pressure on the
 //! lining (the classical mean and the local peak of n(θ), which the wrap models give), the

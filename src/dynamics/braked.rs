@@ -1,4 +1,4 @@
-//! An emergency stop with the pulley as a body (MODEL §11, level 4).
+//! An emergency stop with the pulley as a body (docs/physics.md §11, level 4).
 //!
 //! From the trip instant on, the drive no longer imposes the pulley's motion. The pulley's
 //! surface travel x (positive lifting side 1) becomes one more unknown of the trapezoidal scheme,

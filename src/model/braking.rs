@@ -1,4 +1,4 @@
-//! Braking with the pulley as a body, on rigid ropes (MODEL §11, level 0 of a stop).
+//! Braking with the pulley as a body, on rigid ropes (docs/physics.md §11, level 0 of a stop).
 //!
 //! Once the drive lets go, nothing imposes the pulley's motion. With x the pulley's surface
 //! travel (positive lifting side 1), everything that moves with the rope is one body of reduced

@@ -1,4 +1,4 @@
-//! Level 0: the classical anti-slip checks in closed form (MODEL §3).
+//! Level 0: the classical anti-slip checks in closed form (docs/physics.md §3).
 //!
 //! * end tensions per rope: `T1 = m1 (g + a) / n`, `T2 = m2 (g − a) / n` (a > 0: side 1 accelerates up);
 //! * Euler/capstan limit `e^{μα}` and the tension ratio with the centrifugal term,

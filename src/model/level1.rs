@@ -1,4 +1,4 @@
-//! Level 1: steady rolling by creep theory (MODEL §4).
+//! Level 1: steady rolling by creep theory (docs/physics.md §4).
 //!
 //! Constant end tensions T1, T2, an elastic rope on a rigid lining, rope running at v (or last
 //! run in the scene's direction, for v = 0). The rope enters the wrap stuck to the pulley and

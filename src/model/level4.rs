@@ -1,6 +1,6 @@
 //! Level 4: a hoisting cycle. The suspended ropes ([`crate::dynamics`]) turn the motion profile
 //! of the `[hoist]` into the end tensions T1(t), T2(t) at the tangent points, which drive the
-//! discrete wrap model of level 2 step by step (MODEL §6).
+//! discrete wrap model of level 2 step by step (docs/physics.md §6).
 //!
 //! Coupling is one-way: the drive imposes the pulley's surface motion, and the rope's creep on
 //! the lining (micrometres per increment, a creep speed of order v·ΔT/EA ≈ 1 mm/s against a rope
@@ -343,7 +343,7 @@ impl<'a> StopTrials<'a> {
 }
 
 /// A rope leaving the pulley: at a tangent point the tension per rope no longer exceeds m'v²,
-/// so the contact force n = T − m'v² (MODEL §2) is gone.
+/// so the contact force n = T − m'v² (docs/physics.md §2) is gone.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SlackRope {
     pub side: Side,

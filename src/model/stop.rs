@@ -1,5 +1,5 @@
 //! The emergency stop of a trip, at level 0 (rigid ropes) and level 4 (the suspended ropes'
-//! dynamics), with the brake of the sheet's `[brake]` stopping the pulley as a body (MODEL §11)
+//! dynamics), with the brake of the sheet's `[brake]` stopping the pulley as a body (docs/physics.md §11)
 //! or an imposed deceleration; the tensions at the friction pulley with the guide sheave's
 //! inertia; the onset of gross slip, after which a trip's results are not valid; and what the
 //! stop reached (deceleration, stopping distance, the slip-limited deceleration).

@@ -15,7 +15,7 @@ pub fn write_summary<W: Write>(out: W, summary: &Summary) -> csv::Result<()> {
     Ok(())
 }
 
-/// distribution.csv header (INTERFACE.md).
+/// distribution.csv header (docs/interface.md).
 pub const DISTRIBUTION_HEADER: [&str; 8] = [
     "t_s",
     "theta_deg",
@@ -49,7 +49,7 @@ pub fn write_distribution<W: Write>(out: W, blocks: &[&Distribution]) -> csv::Re
     Ok(())
 }
 
-/// history.csv: one row per reported time (INTERFACE.md's columns), then the extension columns
+/// history.csv: one row per reported time (docs/interface.md's columns), then the extension columns
 /// `anchor1_n,anchor2_n` (tension per rope at the conveyance anchors; empty but for duty cycles).
 pub fn write_history<W: Write>(out: W, rows: &[HistoryRow], anchors_n: &[[f64; 2]]) -> csv::Result<()> {
     let mut w = csv::Writer::from_writer(out);

@@ -1,4 +1,4 @@
-//! The scalar summary of a run, as written to summary.json and summary.csv (INTERFACE.md).
+//! The scalar summary of a run, as written to summary.json and summary.csv (docs/interface.md).
 
 use crate::check::Check;
 use crate::cost::Estimate;
@@ -13,7 +13,7 @@ use crate::roots::RootStats;
 use crate::run::{RunResult, SceneResult};
 use serde::Serialize;
 
-/// One scene's scalar fields, in the order INTERFACE.md lists them; `None` is null / empty.
+/// One scene's scalar fields, in the order docs/interface.md lists them; `None` is null / empty.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct SceneSummary {
     pub name: String,

@@ -26,12 +26,11 @@ impl fmt::Display for Diagnostic {
         if self.line > 0 {
             write!(f, ":{}:{}", self.line, self.column)?;
         }
-        write!(f, ":")?;
         if let Some(scene) = &self.scene {
-            write!(f, " scene \"{scene}\":")?;
+            write!(f, ": scene \"{scene}\"")?;
         }
         if !self.key.is_empty() {
-            write!(f, " {}", self.key)?;
+            write!(f, ": {}", self.key)?;
         }
         if let Some(value) = &self.value {
             write!(f, " = {value}")?;

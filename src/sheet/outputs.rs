@@ -1,4 +1,4 @@
-//! A scene's `outputs` key: what it asks for (MODEL §7), checked against what its kind can give.
+//! A scene's `outputs` key: what it asks for (docs/physics.md §7), checked against what its kind can give.
 
 use super::diag::Collector;
 use super::validate::At;

@@ -31,7 +31,7 @@ fn required_min(s: &SceneSummary, r: &Requirements) -> f64 {
     if s.dynamic_safety_factor.is_some() { r.dynamic_safety_factor_min } else { r.static_safety_factor_min }
 }
 
-/// The result columns after `level`, from [`SceneSummary`] (INTERFACE names and units).
+/// The result columns after `level`, from [`SceneSummary`] (docs/interface.md §3: names and units).
 pub const RESULT_COLUMNS: &[(&str, Get)] = &[
     ("t_s", Get::Num(|s, _| s.t_s)),
     ("t1_n", Get::Num(|s, _| Some(s.t1_n))),

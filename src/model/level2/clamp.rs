@@ -108,7 +108,7 @@ pub fn merge(pieces: &mut Vec<Piece>) {
 }
 
 /// Gross slip: the rope slides over the whole wrap with |q| = μn, the tension falling from the
-/// high end (MODEL §3); the low end's tension is not matched (the remainder accelerates the slide).
+/// high end (docs/physics.md §3); the low end's tension is not matched (the remainder accelerates the slide).
 pub fn slide(profile: &mut Profile, env: &Envelopes) {
     let alpha = env.alpha;
     let piece = if env.n1 >= env.n2 {
