@@ -24,12 +24,16 @@ pub fn slips_grossly(n1: f64, n2: f64, mu: f64, wrap_angle_rad: f64) -> bool {
 /// Contact state of a node.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum NodeState {
+    /// Rope sticks: utilization below [`SLIP_UTILIZATION`].
     Stick,
+    /// Rope slips with friction positive in +θ (q > 0).
     SlipPositive,
+    /// Rope slips with friction negative in +θ (q < 0).
     SlipNegative,
 }
 
 impl NodeState {
+    /// The state's name in reports: `stick`, `slip+` or `slip-`.
     pub fn as_str(self) -> &'static str {
         match self {
             NodeState::Stick => "stick",
@@ -48,12 +52,14 @@ impl fmt::Display for NodeState {
 /// Coulomb friction with a centrifugal correction of the contact force.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ContactLaw {
+    /// Friction coefficient μ.
     pub mu: f64,
     /// m'v², N per rope.
     pub centrifugal_n: f64,
 }
 
 impl ContactLaw {
+    /// A law of friction coefficient `mu` and centrifugal tension `centrifugal_n` (m'v², N per rope).
     pub fn new(mu: f64, centrifugal_n: f64) -> Self {
         Self { mu, centrifugal_n }
     }
@@ -72,6 +78,7 @@ impl ContactLaw {
         (friction_n_per_rad.abs() / capacity).min(1.0)
     }
 
+    /// `u = |q| / (μ n)` of a piece at θ, clamped to [0, 1].
     pub fn utilization(&self, piece: &Piece, theta_rad: f64) -> f64 {
         if let Some((_, rate)) = piece.contact_exponential(self.centrifugal_n) {
             // Exponential of the contact force itself: u = |k|/μ everywhere on the piece.

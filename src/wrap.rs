@@ -30,10 +30,15 @@ use crate::contact::{ContactLaw, NodeState};
 /// tension over the pulley's angular speed when it entered.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct EntryRamp {
+    /// Where the ramp's first rope sits now, θ_a (rad).
     pub theta_a_rad: f64,
+    /// End tension at the ramp's start (N).
     pub tension_n: f64,
+    /// Rate of change of the end tension, Ṫ (N/s).
     pub slope_n_per_s: f64,
+    /// Angular speed of the pulley at the ramp's start, ω (rad/s; positive in +θ).
     pub omega_per_s: f64,
+    /// Angular acceleration of the pulley, ε (rad/s²; positive in +θ).
     pub alpha_per_s2: f64,
 }
 
@@ -69,7 +74,14 @@ impl EntryRamp {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Shape {
     /// `T(θ) = base_n + amp_n · e^{rate_per_rad · (θ − θ0)}`.
-    Exp { base_n: f64, amp_n: f64, rate_per_rad: f64 },
+    Exp {
+        /// Constant part of the tension, `T_base` (N; m'v² for a slipped profile).
+        base_n: f64,
+        /// Amplitude at θ0, `A` (N).
+        amp_n: f64,
+        /// Growth rate in +θ, `k` (1/rad; 0 for a constant, ±μ for a slipped profile).
+        rate_per_rad: f64,
+    },
     /// An [`EntryRamp`].
     Entry(EntryRamp),
 }
@@ -77,8 +89,11 @@ pub enum Shape {
 /// One piece of the tension field over `[theta0_rad, theta1_rad]`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Piece {
+    /// Start of the piece (rad).
     pub theta0_rad: f64,
+    /// End of the piece (rad).
     pub theta1_rad: f64,
+    /// The tension's closed form over the piece.
     pub shape: Shape,
 }
 
@@ -98,6 +113,7 @@ impl Piece {
         Self { theta0_rad, theta1_rad, shape: Shape::Entry(ramp) }
     }
 
+    /// Angular length of the piece, θ1 − θ0 (rad).
     pub fn len_rad(&self) -> f64 {
         self.theta1_rad - self.theta0_rad
     }
@@ -227,10 +243,12 @@ impl Piece {
 /// The tension over the whole wrap [0, α], as contiguous pieces in increasing θ.
 #[derive(Debug, Clone, PartialEq)]
 pub struct TensionField {
+    /// Contiguous pieces in increasing θ, from 0 to α.
     pub pieces: Vec<Piece>,
 }
 
 impl TensionField {
+    /// Wrap angle α: the end of the last piece (rad; 0 without pieces).
     pub fn wrap_angle_rad(&self) -> f64 {
         self.pieces.last().map_or(0.0, |p| p.theta1_rad)
     }
@@ -275,11 +293,17 @@ pub fn output_grid_rad(wrap_angle_rad: f64, nodes: usize, breakpoints_rad: impl 
 /// One row of a reported distribution (units in the names; θ in degrees for output).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Sample {
+    /// Angle from the side-1 tangent point (deg).
     pub theta_deg: f64,
+    /// Tension per rope (N).
     pub tension_n: f64,
+    /// Contact force per radian, n = T − m'v² (N/rad).
     pub normal_n_per_rad: f64,
+    /// Friction on the rope per radian, positive in +θ (N/rad).
     pub friction_n_per_rad: f64,
+    /// Friction utilization |q|/(μn) (1 at the Coulomb bound).
     pub utilization: f64,
+    /// Contact state of the node.
     pub state: NodeState,
     /// Rope speed minus pulley surface speed, positive in +θ (m/s); `None` where a quasi-static
     /// model does not determine it (gross slip).
@@ -289,20 +313,31 @@ pub struct Sample {
 /// A contiguous stretch of the wrap in one contact state (for shading plots and reports).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Zone {
+    /// Start of the zone (deg from the side-1 tangent point).
     pub start_deg: f64,
+    /// End of the zone (deg).
     pub end_deg: f64,
+    /// Contact state over the zone.
     pub state: NodeState,
 }
 
 /// The distribution over the wrap at one reported time.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Distribution {
+    /// Time of the distribution in its scene (s).
     pub t_s: f64,
+    /// Friction coefficient of the contact.
     pub mu: f64,
+    /// Wrap angle α (deg).
     pub wrap_angle_deg: f64,
+    /// Rows at the output grid's angles, in increasing θ.
     pub samples: Vec<Sample>,
+    /// Contact-state zones over [0, α], in increasing θ.
     pub zones: Vec<Zone>,
+    /// Demarcation point (JDP): end of the positive arc that reverse friction follows (deg; none
+    /// without a sign change).
     pub jdp_deg: Option<f64>,
+    /// Whether the rope slips over the whole wrap (gross slip).
     pub gross_slip: bool,
 }
 

@@ -33,18 +33,27 @@ use crate::design::{
 };
 use crate::roots::{RootStats, brent};
 
+/// Friction coefficient.
 pub const MU: f64 = 0.25;
+/// Pulley radius (m).
 pub const RADIUS_M: f64 = 2.5;
+/// Wrap angle (deg).
 pub const WRAP_ANGLE_DEG: f64 = 180.0;
+/// Axial stiffness of the rope (N).
 pub const EA_N: f64 = 2.634e8;
+/// Rope mass per metre (kg/m).
 pub const MASS_PER_M_KG: f64 = 10.81;
+/// Bending stiffness of the rope (N·m²).
 pub const BENDING_N_M2: f64 = 100.0;
+/// Shear stiffness of the lining per metre of rope (N/m²).
 pub const SHEAR_STIFFNESS_N_PER_M2: f64 = 1e10;
 /// Uniform tension before the step, and T2 of both cases (N).
 pub const T0_N: f64 = 2.0e5;
 /// T1 after the step, and T1 of the rolling case (N).
 pub const T1_N: f64 = 2.3e5;
+/// Rope speed of the rolling case, side 1 → side 2 (m/s).
 pub const ROLL_SPEED_M_S: f64 = 1.0;
+/// Duration of the rolling case (s).
 pub const ROLL_DURATION_S: f64 = 10.0;
 /// Where the error is measured (deg): clear of the lifted-off ends.
 pub const WINDOW_DEG: (f64, f64) = (5.0, 175.0);

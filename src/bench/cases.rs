@@ -43,7 +43,9 @@ use crate::run::{self, Options, RunError, RunResult};
 use crate::wrap::Distribution;
 use std::path::Path;
 
+/// Friction coefficient of the bench hoist's pulley.
 pub const MU: f64 = 0.25;
+/// Wrap angle of the bench hoist (deg).
 pub const WRAP_ANGLE_DEG: f64 = 187.42;
 /// Uniform tension of the standstill cases (N per rope).
 pub const T0_N: f64 = 200_000.0;
@@ -53,7 +55,9 @@ pub const STEP_K: f64 = 1.15;
 pub const UNLOAD_K2: f64 = 1.05;
 /// Steady rolling: end tensions (N) and speed (m/s); m'v² = 10.81 · 80² = 69.2 kN, 35 % of T2.
 pub const ROLL_T1_N: f64 = 230_000.0;
+/// T2 of steady rolling (N per rope).
 pub const ROLL_T2_N: f64 = 200_000.0;
+/// Rope speed of steady rolling, side 1 → side 2 (m/s).
 pub const ROLL_SPEED_M_S: f64 = 80.0;
 const MASS_PER_M_KG: f64 = 10.81;
 const EA_N: f64 = 2.634e8;
@@ -69,9 +73,13 @@ pub const DUTY_SCENE: &str = "duty-MID";
 /// The cases of the bench.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Case {
+    /// Standstill step: T1 raised to k·T0 at rest (closed form `max(k T0 e^{−μθ}, T0)`).
     StandstillStep,
+    /// Nested unloading: T1 lowered again to k2·T0 after the step (closed form in the module docs).
     NestedUnloading,
+    /// Steady rolling under T1 > T2 with the centrifugal term (creep theory's closed form).
     SteadyRolling,
+    /// The reference sheet's `duty-MID` lift at level 4 (the finest run is the reference).
     DutyMid,
     /// A random-walk history rolling at 1 m/s (scaling with the number of steps; no reference).
     RollingWalk,
@@ -86,6 +94,7 @@ pub enum Case {
 }
 
 impl Case {
+    /// Every case, in the bench's order.
     pub const ALL: [Case; 8] = [
         Case::StandstillStep,
         Case::NestedUnloading,
@@ -97,6 +106,7 @@ impl Case {
         Case::BoundRolling,
     ];
 
+    /// The case's name in bench.csv and on the command line (`--case`).
     pub fn name(self) -> &'static str {
         match self {
             Case::StandstillStep => "standstill-step",
@@ -111,10 +121,13 @@ impl Case {
     }
 }
 
-/// Which error a point reports.
+/// Which error a point reports: the error metric of the closed-form cases.
 pub const TENSION_METRIC: &str = "max |T - T_exact| / T_ref over the output grid";
+/// Error metric of the level-3 bound cases (clear of the lifted-off ends).
 pub const WINDOW_METRIC: &str = "max |T - T_exact| / T_ref over the output grid from 5 to 175 deg";
+/// Error metric of level 0 (closed-form checks).
 pub const CHECKS_METRIC: &str = "max relative error of the tension ratio and e^(mu alpha) against hand arithmetic";
+/// Error metric of the duty cycle.
 pub const DUTY_METRIC: &str =
     "RMS over history rows of the positive and reverse arc differences from the finest run (deg)";
 
@@ -268,15 +281,20 @@ pub fn tension_error(case: Case, dist: &Distribution) -> Option<f64> {
 /// what a duty cycle reports (compared with the finest run afterwards).
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Outcome {
+    /// Error against the reference (none without one).
     pub error: Option<f64>,
+    /// Increments of the wrap model.
     pub steps: Option<u64>,
+    /// What the duty cycle reports (duty cycle only).
     pub duty: Option<DutyRun>,
 }
 
 /// A duty cycle's history rows and its distributions at the snapshots and the end.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct DutyRun {
+    /// History rows of the run.
     pub rows: Vec<HistoryRow>,
+    /// Distributions at the scene's snapshots and at the end.
     pub distributions: Vec<Distribution>,
 }
 

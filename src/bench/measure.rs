@@ -11,8 +11,11 @@ use std::time::Instant;
 /// A measured point: the value of the first run, the median time of all repeats.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Measured<T> {
+    /// The first run's result.
     pub value: T,
+    /// Median run time of the repeats (ms).
     pub runtime_ms: f64,
+    /// How many runs the median is taken over.
     pub repeats: usize,
 }
 

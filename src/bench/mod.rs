@@ -27,14 +27,32 @@ pub enum Sweep {
     /// One point (level 0: no node count).
     Single,
     /// Node counts; the `long` ones only with `--long`.
-    Nodes { nodes: &'static [usize], long: &'static [usize] },
+    Nodes {
+        /// Node counts of every run.
+        nodes: &'static [usize],
+        /// Further node counts run only with `--long`.
+        long: &'static [usize],
+    },
     /// Integration steps of the suspended ropes at a fixed node count.
-    TimeStep { nodes: usize, steps_s: &'static [f64] },
+    TimeStep {
+        /// Node count of every point.
+        nodes: usize,
+        /// Integration steps (s).
+        steps_s: &'static [f64],
+    },
     /// History samples at a fixed node count; the `long` ones only with `--long`.
-    Samples { nodes: usize, samples: &'static [usize], long: &'static [usize] },
+    Samples {
+        /// Node count of every point.
+        nodes: usize,
+        /// History lengths (samples) of every run.
+        samples: &'static [usize],
+        /// Further history lengths run only with `--long`.
+        long: &'static [usize],
+    },
 }
 
 impl Sweep {
+    /// The sweep's name in bench.csv's `sweep` column.
     pub fn name(&self) -> &'static str {
         match self {
             Sweep::Single => "single",
@@ -48,9 +66,13 @@ impl Sweep {
 /// One line of the case × level table.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Entry {
+    /// The bench case.
     pub case: Case,
+    /// Model level (0–4) the case runs at.
     pub level: u8,
+    /// Solver of the wrap model.
     pub solver: Solver,
+    /// What the line varies.
     pub sweep: Sweep,
 }
 
@@ -65,8 +87,9 @@ const DUTY_NODES: &[usize] = &[90, 180, 360, 720, 1440];
 const DUTY_STEPS_S: &[f64] = &[4e-3, 2e-3, 1e-3, 5e-4];
 /// Δt below the wrap's sample interval (5 ms) changes only the dynamics; the sweep's finest
 /// run ([`DUTY_REFERENCE_STEP_S`]) is its reference.
-/// The duty cycle's reference: the finest run.
+/// The duty cycle's reference: the finest run, its node count.
 pub const DUTY_REFERENCE_NODES: usize = 2880;
+/// Time step of the duty cycle's reference run (s).
 pub const DUTY_REFERENCE_STEP_S: f64 = 2.5e-4;
 /// Time step of the duty cycle's node sweep (the sheet default).
 pub const DUTY_DEFAULT_STEP_S: f64 = 1e-3;
@@ -169,6 +192,7 @@ pub const TABLE: &[Entry] = &[
     },
 ];
 
+/// What `wrapcalc bench` runs, from its command line.
 #[derive(Debug, Clone, PartialEq)]
 pub struct BenchOptions {
     /// Also the largest cases (N = 100 000, a history of 1e6 samples).
@@ -185,43 +209,80 @@ pub struct BenchOptions {
 /// One row of bench.csv.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct BenchRow {
+    /// Case name ([`Case::name`]).
     pub case: &'static str,
+    /// Model level (0–4).
     pub level: u8,
+    /// Solver of the wrap model.
     pub solver: Solver,
+    /// Sweep name ([`Sweep::name`]).
     pub sweep: &'static str,
+    /// Node count of the wrap (none at level 0).
     pub nodes: Option<usize>,
+    /// Integration step of the suspended ropes (s; duty cycle only).
     pub time_step_s: Option<f64>,
+    /// History samples (the rolling walk only).
     pub samples: Option<usize>,
     /// Increments of the wrap model (levels 2–4; level 3 with its run-in from the first loads).
     pub steps: Option<u64>,
+    /// Median run time of the repeats (ms).
     pub runtime_ms: f64,
+    /// How many runs the median is taken over.
     pub repeats: usize,
+    /// Error against the case's reference, as `error_metric` says (none without a reference).
     pub error: Option<f64>,
+    /// What `error` measures.
     pub error_metric: &'static str,
     /// Duty cycle: RMS difference of the history's positive and reverse arcs from the finest
     /// run (deg), reported beside the error (see [`cases`]).
     pub arc_rms_deg: Option<f64>,
+    /// Peak resident memory of the point run alone in a child process (kB; none without a probe).
     pub peak_rss_kb: Option<u64>,
 }
 
+/// Why `wrapcalc bench` failed.
 #[derive(Debug, thiserror::Error)]
 pub enum BenchError {
+    /// A case's run of the design failed.
     #[error("bench case {case}: {source}")]
-    Run { case: &'static str, source: RunError },
+    Run {
+        /// The case's name.
+        case: &'static str,
+        /// Why the run failed.
+        source: RunError,
+    },
+    /// A case's level-2 model failed.
     #[error("bench case {case}: {source}")]
-    Level2 { case: &'static str, source: Level2Error },
+    Level2 {
+        /// The case's name.
+        case: &'static str,
+        /// Why the model failed.
+        source: Level2Error,
+    },
+    /// The reference sheet could not be read.
     #[error(transparent)]
     Sheet(#[from] SheetError),
+    /// The reference sheet has no duty-cycle scene.
     #[error("{sheet}: the bench runs the duty-cycle scene \"{}\", which this sheet does not have", cases::DUTY_SCENE)]
-    NoDutyScene { sheet: String },
+    NoDutyScene {
+        /// The sheet's path.
+        sheet: String,
+    },
+    /// The single-threaded rayon pool could not start.
     #[error("cannot start the single-threaded pool: {0}")]
     Pool(String),
+    /// A `--probe` spec that does not parse.
     #[error("--probe {0:?}: expected case:level:solver:nodes:time_step_s:samples")]
     Probe(String),
+    /// The bench's report files could not be written.
     #[error(transparent)]
     Report(#[from] crate::report::ReportError),
+    /// A `--case` that names no bench case.
     #[error("--case {name:?}: no such bench case; the cases are {}", Case::ALL.map(|c| c.name()).join(", "))]
-    UnknownCase { name: String },
+    UnknownCase {
+        /// The name given.
+        name: String,
+    },
 }
 
 /// One point of a sweep.

@@ -9,14 +9,23 @@ use serde::Serialize;
 /// larger half (at least three points) where fixed costs have faded.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Scaling {
+    /// Case name.
     pub case: &'static str,
+    /// Model level (0–4).
     pub level: u8,
+    /// Solver of the wrap model.
     pub solver: Solver,
+    /// The swept size: `nodes`, `1/time_step_s` or `samples`.
     pub variable: &'static str,
+    /// Points of the fit (the sweep's larger half).
     pub points: usize,
+    /// Smallest size of the fit.
     pub from: f64,
+    /// Largest size of the fit.
     pub to: f64,
+    /// Slope of log run time against log size (none when it cannot be fitted).
     pub time_slope: Option<f64>,
+    /// Slope of log memory growth against log size (none below 1 MB of growth or without a probe).
     pub memory_slope: Option<f64>,
 }
 

@@ -135,35 +135,116 @@ pub struct HoistParams {
 /// Everything that can be wrong with the input of a dynamics computation.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum DynamicsError {
+    /// An input quantity is NaN or infinite.
     #[error("{name} must be finite, got {value}")]
-    NotFinite { name: &'static str, value: f64 },
+    NotFinite {
+        /// The quantity's name.
+        name: &'static str,
+        /// The value given.
+        value: f64,
+    },
+    /// An input quantity that must be positive is zero or negative.
     #[error("{name} must be positive, got {value}")]
-    NotPositive { name: &'static str, value: f64 },
+    NotPositive {
+        /// The quantity's name.
+        name: &'static str,
+        /// The value given.
+        value: f64,
+    },
+    /// An input quantity that must not be negative is.
     #[error("{name} must not be negative, got {value}")]
-    Negative { name: &'static str, value: f64 },
+    Negative {
+        /// The quantity's name.
+        name: &'static str,
+        /// The value given.
+        value: f64,
+    },
+    /// A stage's duration is negative or not finite.
     #[error("stage {stage}: duration must be finite and ≥ 0 s, got {value}")]
-    StageDuration { stage: usize, value: f64 },
+    StageDuration {
+        /// Index of the stage in the profile.
+        stage: usize,
+        /// The duration given, s.
+        value: f64,
+    },
+    /// A stage's end acceleration is not finite.
     #[error("stage {stage}: acceleration must be finite, got {value}")]
-    StageAccel { stage: usize, value: f64 },
+    StageAccel {
+        /// Index of the stage in the profile.
+        stage: usize,
+        /// The acceleration given, m/s².
+        value: f64,
+    },
+    /// An "until stop" stage that does not bring the motion to rest.
     #[error(
         "stage {stage}: 'until stop' needs a stage that decelerates the motion to rest \
          (speed {speed_m_s} m/s, accelerations {accel_start_m_s2} → {accel_end_m_s2} m/s²)"
     )]
-    UntilStop { stage: usize, speed_m_s: f64, accel_start_m_s2: f64, accel_end_m_s2: f64 },
+    UntilStop {
+        /// Index of the stage in the profile.
+        stage: usize,
+        /// Speed at the stage's start, m/s.
+        speed_m_s: f64,
+        /// Acceleration at the stage's start, m/s².
+        accel_start_m_s2: f64,
+        /// The stage's end acceleration, m/s².
+        accel_end_m_s2: f64,
+    },
+    /// A side's hanging rope length would be zero or negative.
     #[error("hanging length of {side} is {length_m} m (must be > 0) at x = {x_m} m{}", at_time(*.t_s))]
-    HangingLength { side: Side, x_m: f64, length_m: f64, t_s: Option<f64> },
+    HangingLength {
+        /// The side.
+        side: Side,
+        /// Pulley surface travel where it happens, m.
+        x_m: f64,
+        /// The hanging length there, m.
+        length_m: f64,
+        /// Time it happens at in a run, s (none outside a run).
+        t_s: Option<f64>,
+    },
+    /// A side's tail rope length would be negative.
     #[error("tail rope length below {side} is {length_m} m (must be ≥ 0) at x = {x_m} m{}", at_time(*.t_s))]
-    TailLength { side: Side, x_m: f64, length_m: f64, t_s: Option<f64> },
+    TailLength {
+        /// The side.
+        side: Side,
+        /// Pulley surface travel where it happens, m.
+        x_m: f64,
+        /// The tail length there, m.
+        length_m: f64,
+        /// Time it happens at in a run, s (none outside a run).
+        t_s: Option<f64>,
+    },
+    /// The integration time step is not finite and positive.
     #[error("time step must be finite and > 0 s, got {dt_s}")]
-    TimeStep { dt_s: f64 },
+    TimeStep {
+        /// The time step given, s.
+        dt_s: f64,
+    },
+    /// The rope discretization has no elements.
     #[error("at least one element per side is needed")]
     NoElements,
+    /// The run would take more time steps than the limit.
     #[error("the run would need {steps} time steps (limit {limit})")]
-    TooManySteps { steps: f64, limit: usize },
+    TooManySteps {
+        /// Time steps the run would need.
+        steps: f64,
+        /// The most allowed.
+        limit: usize,
+    },
+    /// The integration produced a NaN or infinite value.
     #[error("the solution became non-finite at t = {t_s} s")]
-    Diverged { t_s: f64 },
+    Diverged {
+        /// Time of the first non-finite state, s.
+        t_s: f64,
+    },
+    /// The brake does not bring the hoist to rest in the allowed time.
     #[error("the brake does not stop the hoist within {max_s} s of the trip at t = {t_s} s")]
-    NoStop { t_s: f64, max_s: f64 },
+    NoStop {
+        /// Time of the trip, s.
+        t_s: f64,
+        /// Longest time allowed after the trip, s.
+        max_s: f64,
+    },
 }
 
 fn at_time(t_s: Option<f64>) -> String {

@@ -14,8 +14,11 @@ use super::DynamicsError;
 /// motion to rest without reversing it first.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Stage {
+    /// Duration of the stage, s (`None`: until the speed reaches zero).
     pub duration_s: Option<f64>,
+    /// Acceleration at the stage's end, m/s² (positive in the direction of v > 0).
     pub accel_end_m_s2: f64,
+    /// Jump to `accel_end_m_s2` at the start instead of ramping to it.
     #[serde(default)]
     pub step: bool,
 }
@@ -48,8 +51,11 @@ pub const AT_REST_M_S: f64 = 1e-9;
 /// Pulley surface travel, speed and acceleration at one instant (v > 0 lifts side 1).
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
 pub struct Kinematics {
+    /// Pulley surface travel from the start, m (positive in the direction of v > 0).
     pub x_m: f64,
+    /// Surface speed, m/s (v > 0 lifts side 1).
     pub speed_m_s: f64,
+    /// Surface acceleration, m/s².
     pub accel_m_s2: f64,
 }
 

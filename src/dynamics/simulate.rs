@@ -36,10 +36,13 @@ impl SimOptions {
 /// One recorded instant of a run.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct DynSample {
+    /// Time from the start of the run, s.
     pub t_s: f64,
     /// Pulley surface travel, m.
     pub x_m: f64,
+    /// Pulley surface speed, m/s (v > 0 lifts side 1).
     pub speed_m_s: f64,
+    /// Pulley surface acceleration, m/s².
     pub accel_m_s2: f64,
     /// Tension per rope at the side-1 tangent point, N.
     pub t1_n: f64,

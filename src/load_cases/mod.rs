@@ -28,49 +28,77 @@ use std::time::Instant;
 #[serde(rename_all = "snake_case", tag = "kind")]
 pub enum Position {
     /// A fraction of the travel (0: side 1 at the bottom, 1: at the top).
-    Travel { fraction: f64 },
+    Travel {
+        /// Fraction of the travel (0–1).
+        fraction: f64,
+    },
     /// The worst instant of the phase along the trip's motion profile.
-    WorstInstant { t_s: f64 },
+    WorstInstant {
+        /// Time of the instant along the trip's motion profile (s).
+        t_s: f64,
+    },
     /// An emergency stop tripped at this fraction of the full-speed run (level 4).
-    Stop { fraction: f64, t_s: f64 },
+    Stop {
+        /// Fraction of the full-speed run at the trip (0–1).
+        fraction: f64,
+        /// Time of the trip along the motion profile (s).
+        t_s: f64,
+    },
 }
 
 /// One case of the matrix and its answers.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct CaseResult {
+    /// The case's label (payload, direction, phase, position), as checks name their governing case.
     pub label: String,
+    /// Payload of the case (kg).
     pub payload_kg: f64,
+    /// Direction keyword ([`direction_word`]).
     pub direction: &'static str,
+    /// Phase of the trip.
     pub phase: Phase,
+    /// Where along the travel the case sits.
     pub position: Position,
     /// Travel of side 1 from the bottom (m).
     pub x_m: f64,
+    /// Model level the case is answered at (0 or 4).
     pub level: u8,
     /// The state of the case (per rope); at level 4 its worst instant.
     #[serde(skip)]
     pub state: EndState,
+    /// Tension at the side-1 tangent point, per rope (N).
     pub t1_n: f64,
+    /// Tension at the side-2 tangent point, per rope (N).
     pub t2_n: f64,
+    /// Rope speed, positive side 1 → side 2 (m/s).
     pub speed_m_s: f64,
+    /// Acceleration, positive when side 1 accelerates up (m/s²).
     pub accel_m_s2: f64,
-    /// The same masses at rest (per rope).
+    /// The same masses at rest (per rope): side-1 tension (N).
     pub static_t1_n: f64,
+    /// Side-2 tension of the same masses at rest, per rope (N).
     pub static_t2_n: f64,
-    /// The masses hanging below the tangent points (kg, all ropes).
+    /// The masses hanging below the tangent points (kg, all ropes): side 1.
     pub m1_kg: f64,
+    /// Mass hanging below the side-2 tangent point (kg, all ropes).
     pub m2_kg: f64,
+    /// Tension ratio `(T_hi − m'v²) / (T_lo − m'v²)`.
     pub tension_ratio: f64,
+    /// Anti-slip safety factor at rest (`None` with equal end tensions).
     pub static_safety_factor: Option<f64>,
     /// The code value, on rigid ropes.
     pub dynamic_safety_factor: Option<f64>,
     /// With the suspended ropes' dynamics (level-4 cases).
     pub rope_dynamics_safety_factor: Option<f64>,
+    /// The emergency stop's report (level-4 stop cases).
     pub stop: Option<StopReport>,
+    /// When the rope first slips grossly during the stop (level-4 stop cases; none if it holds).
     pub slip_onset: Option<SlipOnset>,
     /// Every check of the case (in summary.json: name, value, limit and verdict; the full
     /// records of the governing cases are the matrix's `checks`).
     #[serde(serialize_with = "compact_checks")]
     pub checks: Vec<Check>,
+    /// Whether every check of the case passes.
     pub checks_pass: bool,
 }
 
@@ -89,19 +117,27 @@ fn compact_checks<S: serde::Serializer>(checks: &[Check], ser: S) -> Result<S::O
 /// The whole matrix.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct MatrixResult {
+    /// The payloads of the matrix (kg).
     pub payloads_kg: Vec<f64>,
+    /// Travel of the trip (m).
     pub travel_m: f64,
+    /// Top speed of the motion profile (m/s).
     pub top_speed_m_s: f64,
+    /// Acceleration of the motion profile (m/s², magnitude).
     pub accel_m_s2: f64,
+    /// Normal deceleration of the motion profile (m/s², magnitude).
     pub decel_m_s2: f64,
     /// How the emergency stops are braked: `brake`, `imposed deceleration` or `none`.
     pub emergency: &'static str,
+    /// Every case with its answers.
     pub cases: Vec<CaseResult>,
     /// Each check of the matrix at its governing case.
     pub checks: Vec<Check>,
+    /// Whether every check of the matrix passes.
     pub checks_pass: bool,
     /// Level-4 runs of the suspended ropes.
     pub rope_dynamics_runs: usize,
+    /// Wall time of the matrix (ms).
     pub runtime_ms: f64,
 }
 

@@ -15,16 +15,20 @@ const SCAN_S: f64 = 1e-3;
 pub struct Characteristics {
     /// Largest travel of side 1 from the start (m).
     pub travel_m: f64,
+    /// Top speed of the profile (m/s).
     pub top_speed_m_s: f64,
-    /// Largest acceleration and largest normal deceleration (m/s², ≥ 0).
+    /// Largest acceleration (m/s², ≥ 0).
     pub accel_m_s2: f64,
+    /// Largest normal deceleration (m/s², ≥ 0).
     pub decel_m_s2: f64,
     /// Start and end of the run at top speed (s).
     pub full_speed_s: (f64, f64),
+    /// Duration of the whole trip (s).
     pub duration_s: f64,
 }
 
 impl Characteristics {
+    /// Scans the `[hoist]`'s lifting profile on a 1 ms grid.
     pub fn of(hoist: &Hoist) -> Result<Self, Level4Error> {
         let profile = MotionProfile::new(&level4::stages(hoist, Direction::Lift))?;
         let duration_s = profile.duration_s();

@@ -18,12 +18,16 @@ pub const MOVING_M_S: f64 = 1e-9;
 /// How the matrix's emergency stops are braked.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Emergency {
+    /// Braked by the sheet's brake.
     Brake(Brake),
+    /// At an imposed deceleration (m/s², magnitude).
     Imposed(f64),
+    /// No emergency stops.
     None,
 }
 
 impl Emergency {
+    /// The braking keyword in reports: `brake`, `imposed deceleration` or `none`.
     pub fn word(self) -> &'static str {
         match self {
             Emergency::Brake(_) => "brake",

@@ -15,9 +15,13 @@ use serde::Serialize;
 /// Tensions at the two tangent points (per rope) and the state that produced them.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct EndState {
+    /// Tension at the side-1 tangent point, per rope (N).
     pub t1_n: f64,
+    /// Tension at the side-2 tangent point, per rope (N).
     pub t2_n: f64,
+    /// Rope speed, positive side 1 → side 2 (m/s).
     pub speed_m_s: f64,
+    /// Acceleration, positive when side 1 accelerates up (m/s²).
     pub accel_m_s2: f64,
     /// Centrifugal tension m'v² of one rope (N).
     pub centrifugal_n: f64,
@@ -68,10 +72,12 @@ impl EndState {
         Self { t1_n, t2_n, speed_m_s: 0.0, accel_m_s2: 0.0, centrifugal_n: 0.0 }
     }
 
+    /// The higher end tension, `T_hi` (N per rope).
     pub fn t_hi_n(&self) -> f64 {
         self.t1_n.max(self.t2_n)
     }
 
+    /// The lower end tension, `T_lo` (N per rope).
     pub fn t_lo_n(&self) -> f64 {
         self.t1_n.min(self.t2_n)
     }
@@ -111,24 +117,38 @@ pub const EULER_SOURCE: &str = "Euler/capstan: e^{μα} of the sheet's μ and wr
 /// Everything level 0 gives for one state.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Classical {
+    /// The state checked.
     pub state: EndState,
+    /// The same hoist at rest (a = 0, v = 0).
     pub static_state: EndState,
+    /// Friction coefficient μ.
     pub mu: f64,
+    /// Wrap angle α (rad).
     pub wrap_angle_rad: f64,
+    /// Euler/capstan limit `e^{μα}`.
     pub euler_limit: f64,
+    /// Tension ratio `(T_hi − m'v²) / (T_lo − m'v²)` of the state.
     pub tension_ratio: f64,
+    /// Anti-slip safety factor σ of the state (`None` with equal end tensions).
     pub safety_factor: Option<f64>,
+    /// Anti-slip safety factor σ at rest (`None` with equal end tensions).
     pub static_safety_factor: Option<f64>,
     /// At the scene's own acceleration; `None` for a scene at a = 0 (no dynamic state).
     pub dynamic_safety_factor: Option<f64>,
+    /// Dynamic (active) angle `β = ln r / μ` (rad).
     pub dynamic_angle_rad: f64,
+    /// Reserve angle `α − β` (rad).
     pub reserve_angle_rad: f64,
+    /// Critical friction coefficient `μ_c = ln r / α`.
     pub critical_mu: f64,
+    /// Whether `r > e^{μα}`: the rope slips over the whole wrap.
     pub gross_slip: bool,
+    /// The level-0 checks, each with formula, inputs, limit and verdict.
     pub checks: Vec<Check>,
 }
 
 impl Classical {
+    /// Whether every check passes.
     pub fn checks_pass(&self) -> bool {
         self.checks.iter().all(|c| c.pass)
     }
