@@ -44,8 +44,9 @@ pub fn brake_force_n(brake: &Brake, tau_s: f64) -> f64 {
 /// The masses of a stop (kg, all ropes together).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct StopMasses {
-    /// Hanging below the side-1 and side-2 tangent points (weight and inertia).
+    /// Hanging below the side-1 tangent point (kg; weight and inertia).
     pub m1_kg: f64,
+    /// Hanging below the side-2 tangent point (kg; weight and inertia).
     pub m2_kg: f64,
     /// Guide sheave `J_g/R_g²` on each side (inertia only).
     pub guide_kg: [f64; 2],
@@ -116,12 +117,21 @@ pub const MAX_STOP_S: f64 = 600.0;
 /// Why a braked stop could not be computed.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum BrakeError {
+    /// The motion profile or the hoist's data do not hold.
     #[error(transparent)]
     Dynamics(#[from] DynamicsError),
+    /// The brake cannot stop the hoist before the end of its travel or within [`MAX_STOP_S`].
     #[error(
         "the brake does not stop the hoist tripped at t = {at_s} s before the end of its travel or within {MAX_STOP_S} s (brake force {force_n:.0} N against an out-of-balance weight of {unbalance_n:.0} N)"
     )]
-    NoStop { at_s: f64, force_n: f64, unbalance_n: f64 },
+    NoStop {
+        /// Time of the trip (s).
+        at_s: f64,
+        /// Full brake force (N).
+        force_n: f64,
+        /// Out-of-balance weight at the trip, |m2 − m1|·g (N).
+        unbalance_n: f64,
+    },
 }
 
 /// The pulley's motion through a braked stop on rigid ropes: the profile's kinematics at the

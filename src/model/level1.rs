@@ -26,16 +26,21 @@ use crate::wrap::{Piece, TensionField};
 /// The steady rolling state over the wrap.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SteadyRolling {
+    /// The tension over the wrap.
     pub field: TensionField,
+    /// The contact law at the rolling speed.
     pub law: ContactLaw,
     /// Length of the active (creep) arc, β (rad); α in gross slip.
     pub active_arc_rad: f64,
+    /// Whether the end tensions exceed the Euler limit: the rope slips over the whole wrap.
     pub gross_slip: bool,
     /// +1: rope enters at θ = 0 (v > 0 or last ran lifting), −1: enters at θ = α.
     pub travel_sign: f64,
+    /// Rope speed, positive side 1 → side 2 (m/s).
     pub speed_m_s: f64,
     /// Tension of the rope entering the wrap (N).
     pub entry_tension_n: f64,
+    /// Axial stiffness EA of one rope (N), for the creep (slip) velocities.
     pub ea_n: f64,
 }
 

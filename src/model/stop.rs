@@ -124,7 +124,9 @@ pub fn braked_ropes(
 /// and the rest of the trip is not valid.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct SlipOnset {
+    /// Time of the first slipping instant (s).
     pub t_s: f64,
+    /// Tension ratio `(T_hi − m'v²)/(T_lo − m'v²)` there.
     pub ratio: f64,
 }
 
@@ -144,16 +146,20 @@ pub struct StopReport {
     /// A stop in time (from a trip through idle and build-up to standstill); `false` for the
     /// closed form at one position with the full force from the trip on.
     pub timed: bool,
+    /// Time of the trip (s).
     pub trip_s: f64,
     /// Travel at the trip, in the trip's own coordinates (m).
     pub trip_x_m: f64,
+    /// Time of standstill (s).
     pub stop_s: f64,
+    /// Speed at the trip, positive side 1 → side 2 (m/s).
     pub speed_at_trip_m_s: f64,
     /// The deceleration reached: mean from full brake force (the trip for an imposed
     /// deceleration) to standstill, `v(t_full)/(t_stop − t_full)` (m/s²).
     pub decel_m_s2: f64,
     /// Largest deceleration of the pulley during the stop (m/s²).
     pub peak_decel_m_s2: f64,
+    /// Travel from the trip to standstill (m, ≥ 0).
     pub distance_m: f64,
     /// Rigid-rope deceleration at which the rope would slip grossly at the trip's position and
     /// speed ([`braking::slip_limited_decel_m_s2`]).

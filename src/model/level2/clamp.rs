@@ -16,10 +16,13 @@ use crate::wrap::Piece;
 /// end; 0 when nothing moved there).
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct Touched {
+    /// Extent moved at the θ = 0 end (rad from θ = 0).
     pub side1_rad: f64,
+    /// Extent moved at the θ = α end (rad from θ = α).
     pub side2_rad: f64,
-    /// The line the moved stretch at each end lies on.
+    /// The line the moved stretch at the θ = 0 end lies on.
     pub side1_line: Option<envelope::Line>,
+    /// The line of the moved stretch at the θ = α end.
     pub side2_line: Option<envelope::Line>,
 }
 

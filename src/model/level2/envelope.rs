@@ -37,12 +37,17 @@ pub enum Line {
 /// The envelopes of one instant.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Envelopes {
-    /// Contact forces `n = T − m'v²` at the two ends (N/rad).
+    /// Contact force `n = T − m'v²` at the θ = 0 end (N/rad).
     pub n1: f64,
+    /// Contact force at the θ = α end (N/rad).
     pub n2: f64,
+    /// `x1 = ln n1`.
     pub x1: f64,
+    /// `x2 = ln n2`.
     pub x2: f64,
+    /// Friction coefficient μ.
     pub mu: f64,
+    /// Wrap angle α (rad).
     pub alpha: f64,
     /// m'v² (N) of the instant.
     pub centrifugal_n: f64,
@@ -134,10 +139,13 @@ enum Bound {
 /// stretch on l1 or u1 (`side1_to_rad`), the nearest θ to side 1 of one on l2 or u2.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Moved {
+    /// Farthest θ reached by a stretch moved onto l1 or u1 (rad; none if none moved).
     pub side1_to_rad: Option<f64>,
+    /// Nearest θ to side 1 reached by a stretch moved onto l2 or u2 (rad; none if none moved).
     pub side2_from_rad: Option<f64>,
-    /// The lines the moved stretches lie on, from each end.
+    /// The line of the moved stretch from the θ = 0 end.
     pub side1_line: Option<Line>,
+    /// The line of the moved stretch from the θ = α end.
     pub side2_line: Option<Line>,
 }
 

@@ -29,33 +29,49 @@ pub use simulate::{HistorySample, Params, SimError, Simulation, Solver, StepStat
 /// One row of history.csv.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct HistoryRow {
+    /// Time of the row in the history (s).
     pub t_s: f64,
+    /// Tension at the side-1 tangent point, per rope (N).
     pub t1_n: f64,
+    /// Tension at the side-2 tangent point, per rope (N).
     pub t2_n: f64,
+    /// Rope speed, positive side 1 → side 2 (m/s).
     pub speed_m_s: f64,
+    /// Acceleration, positive in the direction of v > 0 (m/s²).
     pub accel_m_s2: f64,
+    /// Demarcation point (JDP, deg; none without a sign change of the friction).
     pub jdp_deg: Option<f64>,
+    /// Length of the positive-friction arc (deg).
     pub positive_arc_deg: f64,
+    /// Length of the reverse-friction arc (deg).
     pub reverse_arc_deg: f64,
+    /// Largest friction utilization |q|/(μn) over the wrap.
     pub max_utilization: f64,
+    /// Anti-slip safety factor of the end state (`None` with equal end tensions).
     pub safety_factor: Option<f64>,
+    /// Whether the rope slips over the whole wrap.
     pub gross_slip: bool,
 }
 
 /// The wrap at one reported time.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Snapshot {
+    /// Arcs, JDP and utilization of the field.
     pub summary: WrapSummary,
+    /// The sampled distribution for reports.
     pub distribution: Distribution,
 }
 
 /// Everything a history run reports.
 #[derive(Debug, Clone, PartialEq)]
 pub struct HistoryRun {
+    /// The rows of history.csv, in time order.
     pub rows: Vec<HistoryRow>,
     /// Distributions at the requested snapshot times, then at the last sample.
     pub snapshots: Vec<Snapshot>,
+    /// Increments and events of the wrap model.
     pub stats: StepStats,
+    /// Root-finder calls and iterations of the derived quantities.
     pub roots: RootStats,
     /// Utilization map: for each row, utilization signed by friction (+ positive, − reverse)
     /// on `map_nodes + 1` equally spaced angles.
@@ -74,6 +90,7 @@ impl HistoryRun {
         }
     }
 
+    /// The wrap at the last sample.
     pub fn last(&self) -> &Snapshot {
         self.snapshots.last().expect("a history run reports its last state")
     }
@@ -99,10 +116,13 @@ impl HistoryRun {
     }
 }
 
+/// Why a level-2 history run failed.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum Level2Error {
+    /// The wrap simulation failed.
     #[error(transparent)]
     Sim(#[from] SimError),
+    /// A derived quantity's root could not be found.
     #[error(transparent)]
     Roots(#[from] RootError),
 }
@@ -114,8 +134,11 @@ pub const MAP_COLUMNS: usize = 181;
 /// and (when `sample_rows`) every sample.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Output<'a> {
+    /// Times of the snapshots (s).
     pub snapshots_s: &'a [f64],
+    /// Interval of the regular rows from the start (s; none for no regular rows).
     pub step_s: Option<f64>,
+    /// Whether every sample of the history is a row.
     pub sample_rows: bool,
 }
 

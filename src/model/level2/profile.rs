@@ -58,6 +58,7 @@ impl Profile {
         self.limits_n[i]
     }
 
+    /// Wrap angle α the profile spans (rad).
     pub fn wrap_angle_rad(&self) -> f64 {
         self.wrap_angle_rad
     }
@@ -67,6 +68,7 @@ impl Profile {
         self.pieces.len()
     }
 
+    /// Whether the profile has no pieces.
     pub fn is_empty(&self) -> bool {
         self.pieces.is_empty()
     }

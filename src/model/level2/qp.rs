@@ -26,6 +26,7 @@ use serde::Serialize;
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum QpVerdict {
+    /// Solved to full accuracy.
     Solved,
     /// Solved, and the active-set polish was accepted.
     SolvedPolished,
@@ -37,6 +38,7 @@ pub enum QpVerdict {
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[error("clarabel failed on an increment: {status:?}")]
 pub struct QpError {
+    /// What clarabel reported.
     pub status: QpFailure,
 }
 

@@ -11,25 +11,32 @@
 /// The inputs of one interval in its local time τ (s from the interval's start).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Linear {
-    /// T1(0), T2(0) (N) and their slopes (N/s).
+    /// T1(0) (N per rope).
     pub t1_n: f64,
+    /// Slope of T1 (N/s).
     pub t1_slope_n_per_s: f64,
+    /// T2(0) (N per rope).
     pub t2_n: f64,
+    /// Slope of T2 (N/s).
     pub t2_slope_n_per_s: f64,
-    /// ω(0) = v(0)/R (rad/s) and dω/dτ (rad/s²).
+    /// ω(0) = v(0)/R (rad/s, positive in +θ).
     pub omega_per_s: f64,
+    /// dω/dτ (rad/s²).
     pub omega_slope_per_s2: f64,
 }
 
 impl Linear {
+    /// T1(τ) (N per rope).
     pub fn t1_n(&self, tau: f64) -> f64 {
         self.t1_n + self.t1_slope_n_per_s * tau
     }
 
+    /// T2(τ) (N per rope).
     pub fn t2_n(&self, tau: f64) -> f64 {
         self.t2_n + self.t2_slope_n_per_s * tau
     }
 
+    /// ω(τ) (rad/s, positive in +θ).
     pub fn omega_per_s(&self, tau: f64) -> f64 {
         self.omega_per_s + self.omega_slope_per_s2 * tau
     }

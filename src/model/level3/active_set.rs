@@ -70,15 +70,19 @@ pub struct Problem<'a> {
     pub x_old: &'a [f64],
     /// Old lining forces / s.
     pub f_old: &'a [f64],
-    /// End tensions / s.
+    /// T1 / s (the θ = 0 end).
     pub x_first: f64,
+    /// T2 / s (the θ = α end).
     pub x_last: f64,
     /// Inertia per segment / s.
     pub iota: f64,
     /// m'v² / s.
     pub centrifugal: f64,
+    /// Friction coefficient μ.
     pub mu: f64,
+    /// Segment pitch h = α/N (rad).
     pub pitch_rad: f64,
+    /// Lining compliance weight `EA / (k_s (R h)²)` of a segment (dimensionless).
     pub rho: f64,
     /// The contact arc and the lift-off forces (N).
     pub grid: &'a ContactGrid,
@@ -87,6 +91,7 @@ pub struct Problem<'a> {
 }
 
 impl Problem<'_> {
+    /// Number of segments N.
     pub fn segments(&self) -> usize {
         self.f_old.len()
     }
@@ -110,9 +115,11 @@ impl Problem<'_> {
 pub struct ActiveSet {
     /// Scaled displacements of the last solve.
     pub v: Vec<f64>,
-    /// Cut tensions / s, contact forces / s and lining forces / s at `v`.
+    /// Cut tensions / s at `v`.
     pub x: Vec<f64>,
+    /// Contact forces / s at `v`.
     pub normal: Vec<f64>,
+    /// Lining forces / s at `v`.
     pub f: Vec<f64>,
     /// Segments at their bound at `v`.
     pub active: usize,

@@ -67,8 +67,11 @@ impl LiftOff {
 /// Both boundary layers of the wrap [0, α].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Bending {
+    /// The boundary layer at the side-1 tangent point (θ = 0).
     pub side1: LiftOff,
+    /// The boundary layer at the side-2 tangent point (θ = α).
     pub side2: LiftOff,
+    /// Wrap angle α (rad).
     pub wrap_angle_rad: f64,
 }
 
@@ -127,13 +130,19 @@ pub const MIN_LINING_SHARE: f64 = 0.01;
 /// fraction `last_to`), and the spread lift-off forces on the segments from each end (N).
 #[derive(Debug, Clone, PartialEq)]
 pub struct ContactGrid {
+    /// Number of segments N of the lattice.
     pub segments: usize,
+    /// First segment touching the lining.
     pub first: usize,
+    /// Fraction of `first`'s pitch from which it touches (0–1).
     pub first_from: f64,
+    /// Last segment touching the lining.
     pub last: usize,
+    /// Fraction of `last`'s pitch up to which it touches (0–1).
     pub last_to: f64,
-    /// Side 1's lift-off force on segments 0, 1, …; side 2's on segments N − 1, N − 2, ….
+    /// Side 1's lift-off force on segments 0, 1, … (N).
     pub spread1_n: Vec<f64>,
+    /// Side 2's lift-off force on segments N − 1, N − 2, … (N).
     pub spread2_n: Vec<f64>,
 }
 

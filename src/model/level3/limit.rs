@@ -22,6 +22,7 @@ pub enum Slide {
 }
 
 impl Slide {
+    /// Sign of the friction on the rope: +1 towards side 1, −1 towards side 2.
     pub fn friction_sign(self) -> f64 {
         match self {
             Slide::TowardsSide1 => 1.0,

@@ -108,22 +108,49 @@ pub struct Params {
     pub travel_step_rad: f64,
 }
 
+/// Why a level-3 run failed.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum Level3Error {
+    /// clarabel could not give an increment.
     #[error("at t = {t_s} s: {source}")]
-    Solve { t_s: f64, source: SolveError },
+    Solve {
+        /// Time of the increment (s).
+        t_s: f64,
+        /// clarabel's failure.
+        source: SolveError,
+    },
+    /// The contact forces of an increment did not reach a fixed point.
     #[error("at t = {t_s} s: the contact forces did not settle in {MAX_NORMAL_PASSES} clarabel passes")]
-    NormalForces { t_s: f64 },
+    NormalForces {
+        /// Time of the increment (s).
+        t_s: f64,
+    },
+    /// The centrifugal tension reaches the rope tension: no contact force is left.
     #[error("the rope loses contact at t = {t_s} s: m'v² = {centrifugal_n:.1} N reaches the tension {tension_n:.1} N")]
-    ContactLoss { t_s: f64, centrifugal_n: f64, tension_n: f64 },
+    ContactLoss {
+        /// Time of the loss (s).
+        t_s: f64,
+        /// Centrifugal tension m'v² (N per rope).
+        centrifugal_n: f64,
+        /// The lower end tension (N per rope).
+        tension_n: f64,
+    },
+    /// Bending lifts the rope off the whole wrap.
     #[error(
         "at t = {t_s} s the rope's bending stiffness lifts it off the whole wrap (lift-off {:.2}° at side 1 and {:.2}° at side 2): lower bending_stiffness_n_m2 or raise the tensions",
         lift_off_deg.0,
         lift_off_deg.1
     )]
-    NoContact { t_s: f64, lift_off_deg: (f64, f64) },
+    NoContact {
+        /// Time of the increment (s).
+        t_s: f64,
+        /// Lift-off angles at side 1 and side 2 (deg from each tangent point).
+        lift_off_deg: (f64, f64),
+    },
+    /// Fewer than two wrap segments (the count given).
     #[error("level 3 needs at least 2 wrap segments, got {0}")]
     Segments(usize),
+    /// A derived quantity's root could not be found.
     #[error(transparent)]
     Roots(#[from] RootError),
 }

@@ -32,6 +32,7 @@ use serde::Serialize;
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Verdict {
+    /// Solved to full accuracy.
     Solved,
     /// Reduced accuracy: used, and counted.
     AlmostSolved,
@@ -43,17 +44,29 @@ pub enum Verdict {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum ClarabelStatus {
+    /// Not solved yet.
     Unsolved,
+    /// Solved to full accuracy.
     Solved,
+    /// The constraints admit no point.
     PrimalInfeasible,
+    /// The dual problem admits no point.
     DualInfeasible,
+    /// Solved to reduced accuracy.
     AlmostSolved,
+    /// Primal infeasible to reduced accuracy.
     AlmostPrimalInfeasible,
+    /// Dual infeasible to reduced accuracy.
     AlmostDualInfeasible,
+    /// Stopped at the iteration cap.
     MaxIterations,
+    /// Stopped at the time limit.
     MaxTime,
+    /// Stopped by a numerical error.
     NumericalError,
+    /// Stopped making progress.
     InsufficientProgress,
+    /// Stopped by a callback.
     CallbackTerminated,
 }
 
@@ -79,10 +92,13 @@ impl From<SolverStatus> for ClarabelStatus {
 /// Why clarabel could not give an increment.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum SolveError {
+    /// clarabel ended with this status.
     #[error("clarabel ended a level-3 increment with status {0:?}")]
     Status(ClarabelStatus),
+    /// clarabel rejected the program's data.
     #[error("clarabel rejected the level-3 program: {0}")]
     Setup(String),
+    /// clarabel returned this non-finite tension change.
     #[error("clarabel returned a non-finite tension change {0}")]
     NonFinite(f64),
 }
@@ -98,10 +114,13 @@ const OBJECTIVE_SCALE: f64 = 1e6;
 /// Data of one solve (per rope, SI).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Loads {
+    /// Tension at the side-1 tangent point, per rope (N).
     pub t1_n: f64,
+    /// Tension at the side-2 tangent point, per rope (N).
     pub t2_n: f64,
     /// Inertia of the rope on each segment, `m' R h a` (N; 0 when switched off).
     pub inertia_n: f64,
+    /// Friction coefficient μ.
     pub mu: f64,
 }
 

@@ -13,13 +13,18 @@ use crate::model::level2::{HistorySample, Solver, StepStats};
 /// A level-3 run through a history.
 #[derive(Debug)]
 pub struct Simulation<'a> {
+    /// The run's parameters.
     pub params: Params,
     samples: &'a [HistorySample],
+    /// Time of the current state (s).
     pub t_s: f64,
+    /// The rope on the lining now.
     pub state: State,
+    /// Whether the last increment slipped grossly (no admissible field).
     pub gross_slip: bool,
     /// Level 2's tallies (increments, node events, clarabel solves), kept for `solver`.
     pub stats: StepStats,
+    /// Level 3's own solver counters.
     pub level3: Level3Stats,
     /// Duration of the last increment (s), for slip velocities.
     pub last_dt_s: f64,
@@ -41,9 +46,13 @@ pub struct Simulation<'a> {
 /// One increment of a run: its end sample, pulley travel (rad), rope acceleration and duration.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PlannedIncrement {
+    /// The history sample at the increment's end.
     pub sample: HistorySample,
+    /// Pulley travel over the increment (rad, positive in +θ).
     pub delta_rad: f64,
+    /// Rope acceleration over the increment (m/s²).
     pub accel_m_s2: f64,
+    /// Duration of the increment (s).
     pub dt_s: f64,
 }
 
@@ -56,6 +65,7 @@ struct Step {
 }
 
 impl<'a> Simulation<'a> {
+    /// A run through `samples` from `state`; fails with fewer than two segments.
     pub fn new(params: Params, samples: &'a [HistorySample], state: State) -> Result<Self, Level3Error> {
         let n = state.segments();
         if n < 2 {
@@ -93,6 +103,7 @@ impl<'a> Simulation<'a> {
         })
     }
 
+    /// The history sample at `t` (s), interpolated linearly.
     pub fn at(&self, t: f64) -> HistorySample {
         interpolate(self.samples, t)
     }

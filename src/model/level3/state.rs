@@ -11,7 +11,9 @@
 /// Level-3 wrap state (per rope).
 #[derive(Debug, Clone, PartialEq)]
 pub struct State {
+    /// Wrap angle α (rad).
     pub wrap_angle_rad: f64,
+    /// Segment pitch h = α/N (rad).
     pub pitch_rad: f64,
     /// Rope tension at the cuts, `N + 1` values (N).
     pub tension_n: Vec<f64>,
@@ -54,6 +56,7 @@ impl State {
         Self::from_tension(wrap_angle_rad, segments, |_| tension_n)
     }
 
+    /// Number of segments N.
     pub fn segments(&self) -> usize {
         self.friction_n.len()
     }

@@ -7,13 +7,18 @@ use serde::Serialize;
 /// How the active-set (fast) solves of a run ended, one count per [`Termination`].
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize)]
 pub struct ActiveSetTally {
+    /// Solves that converged.
     pub converged: u64,
+    /// Solves stopped by a singular system.
     pub singular: u64,
+    /// Solves stopped at the iteration limit.
     pub iteration_limit: u64,
+    /// Solves stopped by a non-finite value.
     pub non_finite: u64,
 }
 
 impl ActiveSetTally {
+    /// Counts one termination.
     pub fn record(&mut self, t: Termination) {
         match t {
             Termination::Converged => self.converged += 1,
@@ -28,12 +33,16 @@ impl ActiveSetTally {
 /// error of the run).
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize)]
 pub struct ClarabelTally {
+    /// Solves clarabel solved.
     pub solved: u64,
+    /// Solves clarabel almost solved (reduced accuracy; a warning).
     pub almost_solved: u64,
+    /// Solves with no admissible field (gross slip).
     pub infeasible: u64,
 }
 
 impl ClarabelTally {
+    /// Counts one verdict.
     pub fn record(&mut self, v: Verdict) {
         match v {
             Verdict::Solved => self.solved += 1,
@@ -46,6 +55,7 @@ impl ClarabelTally {
 /// Level-3 solver counters of a run (its run-in from the first loads included).
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize)]
 pub struct Level3Stats {
+    /// Increments of the run.
     pub increments: u64,
     /// Pitches the lattice moved.
     pub pitches_moved: u64,
@@ -55,16 +65,17 @@ pub struct Level3Stats {
     pub elastic_increments: u64,
     /// Terminations of the active-set solver (`--solver fast`).
     pub active_set: ActiveSetTally,
-    /// Newton steps over the run, and the most in one increment.
+    /// Newton steps over the run.
     pub newton_steps: u64,
+    /// The most Newton steps in one increment.
     pub max_newton_steps: u32,
     /// Increments the active-set solver handed to clarabel (it did not converge on them).
     pub handed_to_clarabel: u64,
     /// clarabel's verdicts (`--solver clarabel`, or increments handed over).
     pub clarabel: ClarabelTally,
-    /// Extra clarabel solves of the fixed point on the contact forces, and the most clarabel
-    /// solves in one increment.
+    /// Extra clarabel solves of the fixed point on the contact forces.
     pub normal_force_passes: u64,
+    /// The most clarabel solves in one increment.
     pub max_clarabel_solves: u32,
 }
 
