@@ -67,6 +67,7 @@ pub struct Part {
     pub what: &'static str,
     /// The amount of work, in `unit`.
     pub work: f64,
+    /// Unit of `work` (e.g. "nodes").
     pub unit: &'static str,
     /// How `work` follows from the sheet.
     pub formula: String,
@@ -77,7 +78,9 @@ pub struct Part {
 /// A scene's estimated cost.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Estimate {
+    /// The model level the scene runs at.
     pub level: u8,
+    /// The stages of the work.
     pub parts: Vec<Part>,
     /// The sheet keys and options the cost grows with, with their values.
     pub drivers: Vec<String>,

@@ -42,16 +42,20 @@ pub struct CreepFit {
     /// Why the fit is degenerate, when it is (a uniform field); absent otherwise.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub note: Option<String>,
+    /// Iterations of argmin's solver.
     pub iterations: u64,
     /// argmin's termination reason ("not run: nothing to fit" for a uniform field).
     pub termination: String,
 }
 
+/// Why the fit of the creep-theory picture failed.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum FitError {
+    /// argmin failed (its message).
     #[error("fit of the creep-theory picture: {0}")]
     Solver(String),
     #[error("fit of the creep-theory picture: the distribution has fewer than 3 samples")]
+    /// Fewer than three samples to fit.
     TooFewSamples,
 }
 

@@ -50,19 +50,28 @@ pub struct Margins {
     /// The side masses of the state (kg, all ropes): those hanging at that instant (duty cycles,
     /// mass-loaded scenes), else back-computed from rigid ropes, `m1 = T1·n/(g + a)`, `m2 = T2·n/(g − a)`.
     pub m1_kg: f64,
+    /// Mass hanging on side 2 (kg, all ropes).
     pub m2_kg: f64,
     /// Where the masses come from: `hanging` (the [hoist] at that instant, or the scene's
     /// masses) or `back-computed` from the tensions on rigid ropes.
     pub masses_source: &'static str,
+    /// Friction coefficient at which gross slip starts, `ln(ratio)/α`.
     pub critical_mu: Margin,
+    /// Extra payload on side 1 before gross slip (kg, all ropes).
     pub payload_to_slip_kg: Margin,
+    /// Extra payload on side 1 before the safety factor falls to its minimum (kg, all ropes).
     pub payload_to_min_safety_factor_kg: Margin,
+    /// Braking deceleration opposing the motion before gross slip, rigid ropes (m/s²).
     pub braking_to_slip_m_s2: Margin,
+    /// Braking deceleration opposing the motion before the safety factor falls to the dynamic
+    /// minimum, rigid ropes (m/s²).
     pub braking_to_min_safety_factor_m_s2: Margin,
     /// Duty cycles with an emergency stop: the largest emergency deceleration before gross slip,
     /// and before the dynamic safety factor falls to its minimum, with the ropes' dynamics (each
     /// trial runs the whole scene's suspended ropes with that deceleration).
     pub emergency_braking_to_slip_m_s2: Option<Margin>,
+    /// The largest emergency deceleration before the dynamic safety factor falls to its
+    /// minimum, with the ropes' dynamics (m/s²).
     pub emergency_braking_to_min_safety_factor_m_s2: Option<Margin>,
     /// Calls and iterations of argmin's Brent method.
     pub root_finding: RootStats,

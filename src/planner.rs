@@ -28,29 +28,64 @@ pub enum Request {
     /// Level-0 checks only (`wrapcalc check`).
     ChecksOnly,
     /// Everything a scene's kind can give, at the level the planner picks or the one forced.
-    Full { forced_level: Option<u8> },
+    Full {
+        /// The level `--level` forces (`None`: the planner's choice).
+        forced_level: Option<u8>,
+    },
 }
 
+/// The level a scene runs at, and why.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Plan {
+    /// The model level (0–4).
     pub level: u8,
+    /// Why this level, in words for the report.
     pub reason: String,
 }
 
+/// Why a scene cannot run at the level asked for.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum PlanError {
+    /// The forced level is not one this version implements.
     #[error("scene \"{scene}\": level {level} is not available in this version (levels 0–4); use --level auto")]
-    NotAvailable { scene: String, level: u8 },
+    NotAvailable {
+        /// The scene's name.
+        scene: String,
+        /// The level forced.
+        level: u8,
+    },
+    /// The forced level is too low for the scene's kind.
     #[error(
         "scene \"{scene}\": level {level} cannot answer a {kind} scene ({why}); use --level auto or a level ≥ {needed}"
     )]
-    TooLow { scene: String, kind: &'static str, level: u8, needed: u8, why: &'static str },
+    TooLow {
+        /// The scene's name.
+        scene: String,
+        /// The scene's kind.
+        kind: &'static str,
+        /// The level forced.
+        level: u8,
+        /// The least level that answers the scene.
+        needed: u8,
+        /// What the forced level cannot give.
+        why: &'static str,
+    },
+    /// Level 4 forced on a scene that has no hoist to run (not a duty cycle).
     #[error("scene \"{scene}\": level 4 runs the hoist of a duty-cycle scene; a {kind} scene has no hoist to run")]
-    NoHoist { scene: String, kind: &'static str },
+    NoHoist {
+        /// The scene's name.
+        scene: String,
+        /// The scene's kind.
+        kind: &'static str,
+    },
+    /// Level 3 forced on a sheet without a `[lining]`.
     #[error(
         "scene \"{scene}\": level 3 is not available without a [lining] section in the sheet (shear_stiffness_n_per_m2, or thickness_m, shear_modulus_pa and contact_width_m); add one or use --level auto"
     )]
-    NoLining { scene: String },
+    NoLining {
+        /// The scene's name.
+        scene: String,
+    },
 }
 
 /// Chooses the level for one scene.

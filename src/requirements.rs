@@ -3,7 +3,9 @@
 /// A limit and where it comes from, as the sheet states it.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct Limit {
+    /// The limit's value, in the unit of the quantity it bounds.
     pub value: f64,
+    /// Where the limit comes from (standard, clause, client), as the sheet states it.
     pub source: String,
 }
 
@@ -21,28 +23,39 @@ pub enum SafetyFactorBasis {
 /// beside them, each present only when the sheet gives it (no defaults: no invented limits).
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct Requirements {
+    /// Least anti-slip safety factor at rest.
     pub static_safety_factor_min: f64,
+    /// Least anti-slip safety factor in motion (accelerating or decelerating).
     pub dynamic_safety_factor_min: f64,
+    /// Where the static minimum comes from.
     pub static_safety_factor_source: String,
+    /// Where the dynamic minimum comes from.
     pub dynamic_safety_factor_source: String,
+    /// Which dynamic safety factor of a duty cycle the minimum is checked on.
     pub dynamic_safety_factor_basis: SafetyFactorBasis,
     /// n·F_min over the largest static load of the rope set.
     pub rope_safety_factor_min: Option<Limit>,
-    /// D/d of the friction pulley and of the guide sheave.
+    /// Least D/d of the friction pulley.
     pub pulley_d_ratio_min: Option<Limit>,
+    /// Least D/d of the guide sheave.
     pub guide_d_ratio_min: Option<Limit>,
-    /// Allowed specific pressure (T1 + T2)/(D·d) and local peak n(θ)/(R·d) on the lining (Pa).
+    /// Allowed specific pressure (T1 + T2)/(D·d) on the lining (Pa).
     pub lining_pressure_max_pa: Option<Limit>,
+    /// Allowed local peak pressure n(θ)/(R·d) on the lining (Pa).
     pub lining_peak_pressure_max_pa: Option<Limit>,
     /// Design cap on the friction coefficient (a warning above it).
     pub mu_design_max: Option<Limit>,
-    /// Machine ratings: largest static tension and tension difference, all ropes (N).
+    /// Machine rating: largest static tension, all ropes (N).
     pub static_tension_max_n: Option<Limit>,
+    /// Machine rating: largest static tension difference, all ropes (N).
     pub static_tension_difference_max_n: Option<Limit>,
-    /// The emergency deceleration's window, lifting and lowering side 1 (m/s²).
+    /// Least emergency deceleration lifting side 1 (m/s²).
     pub emergency_decel_lift_min_m_s2: Option<Limit>,
+    /// Largest emergency deceleration lifting side 1 (m/s²).
     pub emergency_decel_lift_max_m_s2: Option<Limit>,
+    /// Least emergency deceleration lowering side 1 (m/s²).
     pub emergency_decel_lower_min_m_s2: Option<Limit>,
+    /// Largest emergency deceleration lowering side 1 (m/s²).
     pub emergency_decel_lower_max_m_s2: Option<Limit>,
 }
 
@@ -75,10 +88,12 @@ impl Default for Requirements {
 }
 
 impl Requirements {
+    /// The static anti-slip minimum with its source.
     pub fn static_limit(&self) -> Limit {
         Limit { value: self.static_safety_factor_min, source: self.static_safety_factor_source.clone() }
     }
 
+    /// The dynamic anti-slip minimum with its source.
     pub fn dynamic_limit(&self) -> Limit {
         Limit { value: self.dynamic_safety_factor_min, source: self.dynamic_safety_factor_source.clone() }
     }

@@ -14,12 +14,24 @@ use serde::Serialize;
 /// Iteration cap of one root search; Brent needs ~50 at most for f64 on a bracket.
 pub const MAX_ITERS: u64 = 200;
 
+/// Why a root search failed.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum RootError {
+    /// The function has the same sign at both ends of the bracket.
     #[error("no sign change of the function on [{lo}, {hi}]")]
-    NoBracket { lo: f64, hi: f64 },
+    NoBracket {
+        /// Lower end of the bracket.
+        lo: f64,
+        /// Upper end of the bracket.
+        hi: f64,
+    },
+    /// The search stopped without a root.
     #[error("root finding did not converge: {reason}")]
-    NotConverged { reason: String },
+    NotConverged {
+        /// Why it stopped (argmin's termination reason, or what was not finite).
+        reason: String,
+    },
+    /// argmin failed (its message).
     #[error("root finding failed: {0}")]
     Solver(String),
 }
@@ -27,7 +39,9 @@ pub enum RootError {
 /// Running tally of root searches, reported in summary.json.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Serialize)]
 pub struct RootStats {
+    /// Root searches made.
     pub calls: u64,
+    /// Iterations over all searches.
     pub iterations: u64,
 }
 

@@ -30,7 +30,7 @@ use crate::contact::{ContactLaw, NodeState};
 /// tension over the pulley's angular speed when it entered.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct EntryRamp {
-    /// Where the ramp's first rope sits now, θ_a (rad).
+    /// Where the rope that entered at the ramp's start sits now, θ_a (rad).
     pub theta_a_rad: f64,
     /// End tension at the ramp's start (N).
     pub tension_n: f64,

@@ -9,9 +9,13 @@ use crate::model::stop::{SlipOnset, StopReport};
 /// Names of the braking checks: the window when lifting and when lowering side 1, and the slip
 /// limit.
 pub const DECEL_LIFT_MIN_CHECK: &str = "emergency deceleration lifting, minimum";
+/// Name of the check of the largest emergency deceleration lifting side 1.
 pub const DECEL_LIFT_MAX_CHECK: &str = "emergency deceleration lifting, maximum";
+/// Name of the check of the least emergency deceleration lowering side 1.
 pub const DECEL_LOWER_MIN_CHECK: &str = "emergency deceleration lowering, minimum";
+/// Name of the check of the largest emergency deceleration lowering side 1.
 pub const DECEL_LOWER_MAX_CHECK: &str = "emergency deceleration lowering, maximum";
+/// Name of the check of the emergency deceleration against the slip-limited one.
 pub const SLIP_LIMIT_CHECK: &str = "emergency deceleration below the slip limit";
 
 /// Source of the slip-limited deceleration.

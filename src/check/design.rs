@@ -11,25 +11,38 @@ use crate::design::Design;
 /// A static state (per rope, at rest) and the case it belongs to.
 #[derive(Debug, Clone, PartialEq)]
 pub struct StaticState {
+    /// The case's label.
     pub case: String,
+    /// Tension at the side-1 tangent point, per rope (N).
     pub t1_n: f64,
+    /// Tension at the side-2 tangent point, per rope (N).
     pub t2_n: f64,
 }
 
 /// The largest contact force per radian n(θ) over the wrap, and where it occurs.
 #[derive(Debug, Clone, PartialEq)]
 pub struct PeakContact {
+    /// The case where the largest contact force occurs.
     pub case: String,
+    /// The largest contact force per radian, n = T − m'v² (N/rad).
     pub normal_n_per_rad: f64,
 }
 
+/// Name of the rope safety factor check.
 pub const ROPE_SF_CHECK: &str = "rope safety factor";
+/// Name of the friction pulley's D/d check.
 pub const PULLEY_D_CHECK: &str = "D/d of the friction pulley";
+/// Name of the guide sheave's D/d check.
 pub const GUIDE_D_CHECK: &str = "D/d of the guide sheave";
+/// Name of the check of the specific pressure (T1 + T2)/(D·d) on the lining.
 pub const PRESSURE_CHECK: &str = "specific pressure on the lining";
+/// Name of the check of the local peak pressure n(θ)/(R·d) on the lining.
 pub const PEAK_PRESSURE_CHECK: &str = "peak pressure on the lining";
+/// Name of the check of μ against the design cap.
 pub const MU_CAP_CHECK: &str = "friction coefficient against the design cap";
+/// Name of the machine rating's largest static tension check.
 pub const TENSION_RATING_CHECK: &str = "largest static tension (machine rating)";
+/// Name of the machine rating's largest static tension difference check.
 pub const DIFFERENCE_RATING_CHECK: &str = "largest static tension difference (machine rating)";
 
 /// The static state with the largest `key`.

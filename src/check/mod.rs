@@ -17,8 +17,11 @@ use serde::Serialize;
 /// A number with a name and a unit, as printed in a check.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Quantity {
+    /// The quantity's symbol or name as printed.
     pub name: String,
+    /// Its value, in `unit`.
     pub value: f64,
+    /// Its unit ("" for a ratio).
     pub unit: &'static str,
 }
 
@@ -43,11 +46,14 @@ impl Quantity {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Relation {
+    /// The value must not exceed the limit (`value ≤ limit`).
     AtMost,
+    /// The value must reach the limit (`value ≥ limit`).
     AtLeast,
 }
 
 impl Relation {
+    /// The relation's sign as printed: `≤` or `≥`.
     pub fn symbol(self) -> &'static str {
         match self {
             Relation::AtMost => "≤",
@@ -102,14 +108,19 @@ impl Verdict {
 /// One design check, with everything needed to redo it by hand.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Check {
+    /// The check's name, as in the report.
     pub name: &'static str,
+    /// The formula the value comes from, as printed.
     pub formula: &'static str,
+    /// The inputs of the formula, with units.
     pub inputs: Vec<Quantity>,
+    /// Intermediate values on the way to the result, with units.
     pub intermediates: Vec<Quantity>,
     /// `None` for an unbounded safety factor (equal tensions), or when not evaluated.
     pub value: Option<f64>,
     /// Unit of the value and the limit ("" for a ratio).
     pub unit: &'static str,
+    /// How the value compares with the limit.
     pub relation: Relation,
     /// `None` when the sheet gives no limit for this check.
     pub limit: Option<f64>,
@@ -117,6 +128,7 @@ pub struct Check {
     pub limit_source: Option<String>,
     /// Whether the check lets the design pass (`verdict != fail`).
     pub pass: bool,
+    /// The typed outcome.
     pub verdict: Verdict,
     /// The case (scene, load case or instant) that governs the check, where it is taken over
     /// several.
@@ -146,11 +158,13 @@ impl Check {
         }
     }
 
+    /// Sets the inputs of the formula.
     pub fn inputs(mut self, inputs: Vec<Quantity>) -> Self {
         self.inputs = inputs;
         self
     }
 
+    /// Sets the intermediate values.
     pub fn intermediates(mut self, intermediates: Vec<Quantity>) -> Self {
         self.intermediates = intermediates;
         self
@@ -168,11 +182,13 @@ impl Check {
         self
     }
 
+    /// Names the case that governs the check.
     pub fn governed_by(mut self, case: impl Into<String>) -> Self {
         self.governing_case = Some(case.into());
         self
     }
 
+    /// Adds a note on the check's verdict or why it is not evaluated.
     pub fn with_note(mut self, note: impl Into<String>) -> Self {
         self.note = Some(note.into());
         self

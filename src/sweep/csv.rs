@@ -15,13 +15,17 @@ use std::path::Path;
 /// A result cell: a number (empty when absent) or a yes/no.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Cell {
+    /// A number; `None` writes an empty cell.
     Num(Option<f64>),
+    /// A yes/no.
     Flag(bool),
 }
 
 /// How a result column is taken from a scene's summary.
 pub enum Get {
+    /// A number from the summary and the sheet's requirements.
     Num(fn(&SceneSummary, &Requirements) -> Option<f64>),
+    /// A yes/no from the summary.
     Flag(fn(&SceneSummary) -> bool),
 }
 
@@ -75,18 +79,24 @@ pub fn column(name: &str) -> Option<usize> {
 /// One row: a scene at a point.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SweepRow {
+    /// Global index of the point.
     pub point: u64,
+    /// Number of points of the whole sweep.
     pub point_count: u64,
     /// The varied keys' values, in key order.
     pub values: Vec<f64>,
+    /// The scene's name.
     pub scene: String,
+    /// The scene's kind.
     pub kind: String,
+    /// Model level the scene ran at.
     pub level: u8,
     /// In [`RESULT_COLUMNS`] order.
     pub cells: Vec<Cell>,
 }
 
 impl SweepRow {
+    /// The row of scene summary `s` at a point with key values `values`, its cells in [`RESULT_COLUMNS`] order.
     pub fn of(point: u64, point_count: u64, values: &[f64], s: &SceneSummary, r: &Requirements) -> Self {
         let cells = RESULT_COLUMNS
             .iter()
@@ -152,7 +162,9 @@ pub fn write<W: Write>(out: W, keys: &[impl AsRef<str>], rows: &[SweepRow]) -> c
 /// A sweep CSV read back: its keys (from the header) and rows.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SweepFile {
+    /// The varied keys, in key order.
     pub keys: Vec<String>,
+    /// The rows, in point order.
     pub rows: Vec<SweepRow>,
 }
 

@@ -11,6 +11,7 @@ use std::ops::Range;
 /// How a key's value is written into the sheet.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum KeyType {
+    /// A real number.
     Float,
     /// A whole number (`rope.count`, `hoist.tail_count`): every grid value must be whole.
     Integer,
@@ -74,12 +75,17 @@ pub const MAX_KEYS: usize = 2;
 /// One varied key: `COUNT` values from `START` to `STOP` (both included), evenly spaced.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Vary {
+    /// The sheet key (`section.key` or `scene.KEY`).
     pub key: &'static str,
+    /// How its value is written into the sheet.
     pub key_type: KeyType,
     /// The scene kinds a `scene.KEY` applies to.
     pub kinds: &'static [&'static str],
+    /// First value.
     pub start: f64,
+    /// Last value.
     pub stop: f64,
+    /// Number of values (1 to [`MAX_COUNT`]).
     pub count: u64,
 }
 
@@ -141,6 +147,7 @@ impl Vary {
 /// The points of a sweep: one or two varied keys.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Grid {
+    /// The varied keys, the first varying slowest.
     pub varies: Vec<Vary>,
 }
 
@@ -168,6 +175,7 @@ impl Grid {
         self.varies.iter().map(|v| v.count).product()
     }
 
+    /// The varied keys, in key order.
     pub fn keys(&self) -> Vec<&'static str> {
         self.varies.iter().map(|v| v.key).collect()
     }
@@ -187,11 +195,14 @@ impl Grid {
 /// `--shard K/N`: the K-th (1-based) of N contiguous slices of the points.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Shard {
+    /// Which slice, 1-based (1 ≤ K ≤ N).
     pub k: u64,
+    /// Number of slices.
     pub n: u64,
 }
 
 impl Shard {
+    /// Parses `K/N`.
     pub fn parse(spec: &str) -> Result<Self, SweepError> {
         let err = |message: &str| SweepError::Shard { spec: spec.to_string(), message: message.to_string() };
         let Some((k, n)) = spec.split_once('/') else {

@@ -32,34 +32,76 @@ pub const SWEEP_PNG: &str = "sweep.png";
 /// Why a point failed.
 #[derive(Debug, thiserror::Error)]
 pub enum PointError {
+    /// The sheet with the point's values does not validate.
     #[error(transparent)]
     Sheet(#[from] SheetError),
+    /// The point's run failed.
     #[error(transparent)]
     Run(#[from] RunError),
 }
 
+/// Why a sweep failed.
 #[derive(Debug, thiserror::Error)]
 pub enum SweepError {
+    /// A `--vary` spec that does not parse or names no sweepable key.
     #[error("--vary {spec}: {message}")]
-    Vary { spec: String, message: String },
+    Vary {
+        /// The spec given.
+        spec: String,
+        /// What is wrong with it.
+        message: String,
+    },
+    /// A `--shard` spec that does not parse.
     #[error("--shard {spec}: {message}")]
-    Shard { spec: String, message: String },
+    Shard {
+        /// The spec given.
+        spec: String,
+        /// What is wrong with it.
+        message: String,
+    },
+    /// The sheet could not be read or does not validate.
     #[error(transparent)]
     Sheet(#[from] SheetError),
     /// The sweep's options do not fit the sheet (no such scene, a key it has no place for).
     #[error("{sheet}: {message}")]
-    Input { sheet: String, message: String },
+    Input {
+        /// The sheet's path.
+        sheet: String,
+        /// What does not fit.
+        message: String,
+    },
+    /// A run of the sheet failed.
     #[error(transparent)]
     Run(#[from] RunError),
+    /// A point of the grid failed.
     /// (The point's error is part of this message, not a separate cause.)
     #[error("point {point} ({assignment}): {error}")]
-    Point { point: u64, assignment: String, error: PointError },
+    Point {
+        /// Global index of the point.
+        point: u64,
+        /// The point's key values, `KEY = VALUE` each, comma-separated.
+        assignment: String,
+        /// Why it failed.
+        error: PointError,
+    },
+    /// Shard CSVs that cannot be merged.
     #[error("merge: {message}")]
-    Merge { message: String },
+    Merge {
+        /// What is wrong with them.
+        message: String,
+    },
+    /// An output file could not be written.
     #[error("cannot write {path}: {message}")]
-    Write { path: String, message: String },
+    Write {
+        /// The file's path.
+        path: String,
+        /// The system's reason.
+        message: String,
+    },
+    /// The sweep's plot could not be drawn.
     #[error(transparent)]
     Plot(#[from] PlotError),
+    /// A report file could not be written.
     #[error(transparent)]
     Report(#[from] ReportError),
 }
@@ -71,7 +113,9 @@ pub struct Spec {
     pub vary: Vec<String>,
     /// Scenes to run (empty: all).
     pub scenes: Vec<String>,
+    /// Run options of every point.
     pub options: Options,
+    /// Only this slice of the points (all without).
     pub shard: Option<Shard>,
 }
 
