@@ -25,6 +25,7 @@ pub mod geometry;
 pub mod load_cases;
 pub mod margins;
 pub mod model;
+pub mod piece;
 pub mod planner;
 pub mod report;
 pub mod requirements;
