@@ -22,14 +22,20 @@ enum Sign {
 /// Arcs, JDP and peak utilization of a field (angles in radians).
 #[derive(Debug, Clone, PartialEq)]
 pub struct WrapSummary {
+    /// Measure of the wrap where friction is positive (q > 0.001 μn, in +θ) (rad).
     pub positive_arc_rad: f64,
+    /// Measure of the wrap where friction is reversed (q < −0.001 μn) (rad).
     pub reverse_arc_rad: f64,
     /// Where friction is below 0.001 μn (the idle arc of creep theory).
     pub idle_arc_rad: f64,
+    /// The demarcation point: θ where the first positive arc ends and reverse friction follows
+    /// downstream (rad from the side-1 tangent point); `None` without a sign change.
     pub jdp_rad: Option<f64>,
+    /// Peak over the wrap of the utilization |q| / (μn), at most 1 (dimensionless).
     pub max_utilization: f64,
     /// Contiguous stretches in one contact state, in degrees.
     pub zones: Vec<Zone>,
+    /// Tally of the Brent root finds that located the arc and zone boundaries.
     pub roots: RootStats,
 }
 
@@ -185,18 +191,23 @@ impl ArcTally {
         }
     }
 
+    /// Measure of the positive arc so far (rad).
     pub fn positive_rad(&self) -> f64 {
         self.measure_rad[Sign::Positive as usize]
     }
 
+    /// Measure of the reverse arc so far (rad).
     pub fn reverse_rad(&self) -> f64 {
         self.measure_rad[Sign::Reverse as usize]
     }
 
+    /// Measure of the idle arc so far, where |q| stays below 0.001 μn (rad).
     pub fn idle_rad(&self) -> f64 {
         self.measure_rad[Sign::Neutral as usize]
     }
 
+    /// The JDP found so far: end of the positive arc that the first reverse stretch follows
+    /// (rad from the side-1 tangent point); `None` until reverse friction follows positive.
     pub fn jdp_rad(&self) -> Option<f64> {
         self.jdp_rad
     }

@@ -52,7 +52,7 @@ pub struct Margins {
     pub m1_kg: f64,
     /// Mass hanging on side 2 (kg, all ropes).
     pub m2_kg: f64,
-    /// Where the masses come from: `hanging` (the [hoist] at that instant, or the scene's
+    /// Where the masses come from: `hanging` (the `[hoist]` at that instant, or the scene's
     /// masses) or `back-computed` from the tensions on rigid ropes.
     pub masses_source: &'static str,
     /// Friction coefficient at which gross slip starts, `ln(ratio)/α`.

@@ -14,12 +14,18 @@ pub const NODES: usize = crate::run::DEFAULT_NODES;
 /// One analytic case, its level and its measured error.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Evidence {
+    /// The bench case's name (e.g. `standstill-step`).
     pub case: &'static str,
+    /// Model level the case ran at (0–3).
     pub level: u8,
+    /// The closed form the result is compared with, as printed.
     pub reference: &'static str,
+    /// How the error is measured (e.g. `max |T − T_exact| / T_ref over the output grid`).
     pub metric: &'static str,
-    /// `None` when the run failed (`failure` says why).
+    /// The measured error, dimensionless (relative); `None` when the run failed (`failure`
+    /// says why).
     pub error: Option<f64>,
+    /// Why no error was measured: the run's error message; `None` when `error` is set.
     pub failure: Option<String>,
 }
 

@@ -11,7 +11,9 @@ pub const DESIGN_GROUP: &str = "design";
 /// One check and the scene (or [`DESIGN_GROUP`]) it belongs to.
 #[derive(Debug, Clone, Copy)]
 pub struct CheckRow<'a> {
+    /// The scene's name, or [`DESIGN_GROUP`] for a check of the design as a whole.
     pub group: &'a str,
+    /// The check record itself.
     pub check: &'a Check,
 }
 

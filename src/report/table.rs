@@ -10,6 +10,7 @@ use std::fmt::Write;
 /// Colour only when the output is a terminal and `NO_COLOR` is unset (decided by the caller).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Style {
+    /// Whether verdicts and headings carry ANSI colour codes.
     pub color: bool,
 }
 

@@ -33,10 +33,16 @@ pub const HEADERS: [&str; 15] = [
     "limit source",
     "note",
 ];
+/// Column (0-based) of the live formula's result, "value (recomputed)".
 pub const RECOMPUTED_COL: u16 = 4;
+/// Column (0-based) of the value wrapcalc computed, "value (wrapcalc)".
 pub const VALUE_COL: u16 = 5;
+/// Column (0-based) of the live formula for the limit, "limit (recomputed)" (the
+/// Euler/capstan check's e^{μα}; empty for the others).
 pub const LIMIT_RECOMPUTED_COL: u16 = 6;
+/// Column (0-based) of the limit wrapcalc applied, "limit (wrapcalc)".
 pub const LIMIT_COL: u16 = 7;
+/// Column (0-based) of the first input name; each input takes a name cell and a value cell.
 pub const FIRST_INPUT_COL: u16 = 15;
 /// The header row; checks start on the row below it.
 pub const HEADER_ROW: u32 = 2;

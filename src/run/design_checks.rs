@@ -12,12 +12,14 @@ use crate::model::level4;
 /// The design-level result.
 #[derive(Debug, Clone, PartialEq)]
 pub struct DesignResult {
+    /// The load-case matrix; `None` when the sheet has no `[load_cases]`.
     pub matrix: Option<MatrixResult>,
     /// The checks beside anti-slip, then the matrix's checks at their governing cases.
     pub checks: Vec<Check>,
 }
 
 impl DesignResult {
+    /// Whether every check of the design as a whole lets it pass.
     pub fn checks_pass(&self) -> bool {
         crate::check::all_pass(&self.checks)
     }

@@ -7,10 +7,13 @@ use std::ops::Range;
 /// One problem found in a sheet.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Diagnostic {
+    /// The sheet's path as given (used in the message only).
     pub file: String,
     /// 1-based line and column of the value (0 when the file could not be read at all).
     pub line: usize,
+    /// 1-based column of the value, counted in characters (0 with `line`).
     pub column: usize,
+    /// Name of the `[[scene]]` the value belongs to; `None` outside the scenes.
     pub scene: Option<String>,
     /// Dotted key path, e.g. `pulley.mu` or `scene[2].m1_kg`.
     pub key: String,
@@ -42,6 +45,7 @@ impl fmt::Display for Diagnostic {
 /// Every problem found in a sheet (never empty).
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub struct SheetError {
+    /// The problems in the order they were found.
     pub diagnostics: Vec<Diagnostic>,
 }
 

@@ -144,7 +144,7 @@ pub fn csv_name(shard: Option<Shard>) -> String {
 }
 
 /// Writes `csv_name` (and `sweep.png` when `plot`) into `dir`, next to the other files of the
-/// sweep there. `dir` must be missing, empty or a wrapcalc report ([`report::target`]; it is
+/// sweep there. `dir` must be missing, empty or a wrapcalc report ([`crate::report::target`]; it is
 /// marked as a sweep report when new). The files are drawn in a staging directory inside `dir`
 /// and renamed into place only once all are complete, while holding the directory's lock, so a
 /// failure leaves `dir` as it was and two writers never mix their files.

@@ -39,11 +39,17 @@ pub use crate::design::HistorySample;
 /// What the rigid-lining model needs of the hoist.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Params {
+    /// Friction coefficient μ between rope and lining.
     pub mu: f64,
+    /// Wrap angle α: θ runs from the side-1 tangent point (0) to side 2 (α) (rad).
     pub wrap_angle_rad: f64,
+    /// Pulley radius R at the rope's centre line (m).
     pub radius_m: f64,
+    /// Rope mass per metre m', per rope (kg/m): the centrifugal term is m'v².
     pub mass_per_m_kg: f64,
+    /// Axial stiffness EA of one rope (N), for the slip velocity.
     pub ea_n: f64,
+    /// Which solver performs each increment.
     pub solver: Solver,
 }
 
@@ -55,12 +61,22 @@ pub const CENTRIFUGAL_STEP_REL: f64 = 1e-6;
 /// See [`CENTRIFUGAL_STEP_REL`]: at most a thousand steps from rest to the top speed.
 pub const CENTRIFUGAL_STEP_OF_RANGE: f64 = 1e-3;
 
+/// Why a simulation stopped.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum SimError {
+    /// clarabel did not solve an increment (only with [`Solver::Clarabel`]).
     #[error(transparent)]
     Qp(#[from] QpError),
+    /// The contact force `n = T − m'v²` reached zero at an end: the rope lifts off the lining.
     #[error("the rope loses contact at t = {t_s} s: m'v² = {centrifugal_n:.1} N reaches the tension {tension_n:.1} N")]
-    ContactLoss { t_s: f64, centrifugal_n: f64, tension_n: f64 },
+    ContactLoss {
+        /// Time of the increment at whose end contact is lost (s).
+        t_s: f64,
+        /// m'v² held at that instant, per rope (N).
+        centrifugal_n: f64,
+        /// The smaller end tension at that instant, per rope (N).
+        tension_n: f64,
+    },
 }
 
 /// Solver tallies, reported in summary.json.
@@ -70,14 +86,18 @@ pub struct StepStats {
     pub increments: u64,
     /// Level 3: lattice moves of the segments with the pulley.
     pub node_events: u64,
+    /// Increments in gross slip: the end contact forces beyond the Euler ratio `e^{μα}` (or no
+    /// admissible profile between the envelopes), so the whole wrap slides.
     pub gross_slip_increments: u64,
     /// Steps of m'v² on its lattice.
     pub centrifugal_steps: u64,
     /// Stretches of stuck rope repaired after m'v² rose.
     pub repairs: u64,
+    /// Increments clarabel solved (status Solved, polished or not).
     pub qp_solved: u64,
     /// Of the solved increments, those whose active-set polish was accepted.
     pub qp_polished: u64,
+    /// Increments clarabel left AlmostSolved (accepted, reported as a warning).
     pub qp_almost_solved: u64,
     /// Largest relative difference between clarabel's optimum and the exact clamp at a knot.
     pub qp_max_deviation_rel: f64,
@@ -100,16 +120,21 @@ struct LastStep {
 /// A running simulation.
 #[derive(Debug, Clone)]
 pub struct Simulation<'a> {
+    /// What the model knows of the hoist.
     pub params: Params,
     samples: &'a [HistorySample],
+    /// Time the state has reached (s).
     pub t_s: f64,
+    /// Tension over the wrap at [`Self::t_s`], per rope.
     pub profile: Profile,
     /// Whether the state is in gross slip.
     pub gross_slip: bool,
     /// m'v² the state holds (N).
     pub centrifugal_n: f64,
     centrifugal_step_n: f64,
+    /// Solver tallies so far.
     pub stats: StepStats,
+    /// Root searches so far (the clamps' and repairs' crossings).
     pub roots: RootStats,
     last: LastStep,
     scratch: clamp::Scratch,

@@ -29,6 +29,8 @@ pub struct Provenance {
     pub sheet_text: String,
     /// SHA-256 of the sheet file's bytes, in lowercase hex.
     pub sheet_sha256: String,
+    /// The command line that ran the sheet, one argument per entry (shown shell-quoted under
+    /// "software").
     pub command_line: Vec<String>,
 }
 
@@ -39,6 +41,7 @@ impl Provenance {
         Ok(Self::from_bytes(&bytes, command_line))
     }
 
+    /// The provenance of a sheet whose file held `bytes`: its hash and (lossy UTF-8) text.
     pub fn from_bytes(bytes: &[u8], command_line: Vec<String>) -> Self {
         let digest = Sha256::digest(bytes);
         let sheet_sha256 = digest.iter().fold(String::new(), |mut s, b| {
@@ -52,9 +55,13 @@ impl Provenance {
 /// What the report is made of; `dir` is the report directory the figures were written to.
 #[derive(Clone, Copy)]
 pub struct Context<'a> {
+    /// The validated design the report describes.
     pub design: &'a Design,
+    /// The results of the run: scenes, checks and load cases.
     pub run: &'a RunResult,
+    /// The sheet and command the run came from.
     pub provenance: &'a Provenance,
+    /// The report directory; each scene's figures are read from its subdirectory.
     pub dir: &'a Path,
 }
 
