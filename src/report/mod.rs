@@ -15,6 +15,7 @@ pub mod plot;
 pub mod plot_bench;
 pub mod plot_history;
 pub mod plot_sweep;
+pub mod plot_zones;
 pub mod summary;
 pub mod table;
 pub mod target;

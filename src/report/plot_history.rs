@@ -288,9 +288,9 @@ fn draw_map(body: &Area, times: &[f64], wrap_deg: f64, map: &[Vec<f64>], jdp: &[
     let style = font(16).color(&BLACK).pos(Pos::new(HPos::Left, VPos::Center));
     let mut lx = 110;
     for (color, text) in [
-        (map_color(1.0), "positive friction, slipping (u = 1)"),
+        (map_color(1.0), "positive friction at the Coulomb limit (u = 1)"),
         (map_color(0.3), "positive, u = 0.3"),
-        (map_color(-1.0), "reverse friction, slipping"),
+        (map_color(-1.0), "reverse, at the limit"),
         (map_color(-0.3), "reverse, u = 0.3"),
         (map_color(0.0), "stick, no friction"),
         (BLACK, "JDP"),
