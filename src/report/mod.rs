@@ -9,11 +9,14 @@
 pub mod accuracy;
 pub mod checklist;
 pub mod csv_out;
+pub mod history_figure;
 pub mod html;
 pub mod matrix;
 pub mod plot;
 pub mod plot_bench;
+pub mod plot_colorbar;
 pub mod plot_history;
+pub mod plot_series;
 pub mod plot_sweep;
 pub mod plot_zones;
 pub mod summary;
@@ -151,24 +154,27 @@ fn write_scene(
         );
         plot::plot_distribution(&scene_dir.join("distribution.png"), &title, &wrap.distribution)?;
         if let Some(history) = &scene.history {
-            let min = if scene.classical.dynamic_safety_factor.is_some() {
-                summary.requirements.dynamic_safety_factor_min
-            } else {
-                summary.requirements.static_safety_factor_min
+            let r = &summary.requirements;
+            let minima = history_figure::Minima {
+                static_min: r.static_safety_factor_min,
+                dynamic_min: r.dynamic_safety_factor_min,
+            };
+            let plot = plot_history::HistoryPlot {
+                anchors_n: &history.anchors_n,
+                code_sf: &history.code_sf,
+                minima,
+                radius_m: history.pulley_radius_m,
             };
             let title = format!("{} — history, level {}", scene.name, scene.plan.level);
-            let path = scene_dir.join("history.png");
-            plot_history::plot_history(&path, &title, &history.rows, &history.anchors_n, min, &history.code_sf)?;
-            let times: Vec<f64> = history.rows.iter().map(|r| r.t_s).collect();
-            let jdp: Vec<Option<f64>> = history.rows.iter().map(|r| r.jdp_deg).collect();
+            plot_history::plot_history(&scene_dir.join("history.png"), &title, &history.rows, plot)?;
             let title = format!("{} — friction utilization over the wrap (θ–t)", scene.name);
             plot_history::plot_wrap_map(
                 &scene_dir.join("wrap_map.png"),
                 &title,
-                &times,
+                &history.rows,
                 wrap.distribution.wrap_angle_deg,
                 &history.map,
-                &jdp,
+                history.pulley_radius_m,
             )?;
         }
     }

@@ -4,6 +4,7 @@
 //! is built first as plain data ([`DistributionFigure`]), then drawn. The font is embedded (no system fonts needed); drawing never panics, every failure
 //! comes back as a [`PlotError`].
 
+use super::plot_series::legend_strip;
 use super::plot_zones::{LegendEntry, Swatch, ZoneShade, shade_legend, zone_shades};
 use crate::wrap::{Distribution, Sample};
 use plotters::coord::Shift;
@@ -20,7 +21,6 @@ const FAMILY: &str = "sans-serif";
 const WIDTH: u32 = 1200;
 const HEIGHT: u32 = 900;
 const CAPTION_H: u32 = 52;
-const LEGEND_ROW_H: u32 = 28;
 const Y_LABEL_W: u32 = 100;
 const MARGIN: u32 = 16;
 
@@ -282,33 +282,8 @@ fn panel<'a, 'b>(
     x_desc: bool,
 ) -> Result<Chart<'a, 'b>, String> {
     let e = |e: DrawingAreaErrorKind<_>| e.to_string();
-    let label = font(17).color(&BLACK).pos(Pos::new(HPos::Left, VPos::Center));
-    // Lay the legend out in rows that fit the plot width.
     let (left, right) = ((MARGIN + Y_LABEL_W) as i32, (WIDTH - MARGIN) as i32);
-    let mut placed = Vec::with_capacity(legend.len());
-    let (mut x, mut row) = (left, 0);
-    for (swatch, text) in legend {
-        let w = 38 + area.estimate_text_size(text, &label).map_err(e)?.0 as i32 + 26;
-        if x + w > right && x > left {
-            (x, row) = (left, row + 1);
-        }
-        placed.push((swatch, text, x, row));
-        x += w;
-    }
-    let (strip, plot) = area.split_vertically(8 + LEGEND_ROW_H * (row as u32 + 1));
-    for (swatch, text, x, row) in placed {
-        let y = 8 + LEGEND_ROW_H as i32 * row + LEGEND_ROW_H as i32 / 2;
-        match swatch {
-            Swatch::Fill(c) => strip.draw(&Rectangle::new([(x, y - 9), (x + 30, y + 9)], c.filled())),
-            Swatch::Line(c, w, false) => strip.draw(&PathElement::new(vec![(x, y), (x + 30, y)], c.stroke_width(*w))),
-            Swatch::Line(c, w, true) => {
-                strip.draw(&DashedPathElement::new(vec![(x, y), (x + 30, y)], 8, 5, c.stroke_width(*w)))
-            }
-        }
-        .map_err(e)?;
-        strip.draw_text(text, &label, (x + 38, y + 1)).map_err(e)?;
-    }
-
+    let plot = legend_strip(area, legend, (left, right), 17)?;
     let mut chart = ChartBuilder::on(&plot)
         .margin(MARGIN)
         .margin_top(4)
