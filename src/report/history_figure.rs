@@ -3,9 +3,10 @@
 //! silently capped), each required minimum drawn where it applies (the static minimum at rest,
 //! the dynamic one in motion) and the JDP as a line broken where it jumps.
 
+use super::plot::{Chart, e};
 use super::plot_series::{Line, Stroke, jdp_runs};
 use crate::model::level2::HistoryRow;
-use plotters::style::RGBColor;
+use plotters::prelude::*;
 
 pub const T1: RGBColor = RGBColor(20, 70, 160);
 pub const T2: RGBColor = RGBColor(200, 90, 20);
@@ -13,6 +14,8 @@ const POS: RGBColor = RGBColor(200, 40, 30);
 const REV: RGBColor = RGBColor(30, 80, 190);
 const STATIC_MIN: RGBColor = RGBColor(150, 0, 0);
 const DYNAMIC_MIN: RGBColor = RGBColor(235, 60, 0);
+/// Safety factors above the axis: marked in this grey.
+pub const OFF_SCALE: RGBColor = RGBColor(90, 90, 90);
 /// A JDP change between rows beyond what the pulley carries, counted as a jump (deg).
 pub const JDP_JUMP_DEG: f64 = 10.0;
 
@@ -98,7 +101,7 @@ pub fn safety_panel(rows: &[HistoryRow], code_sf: &[(f64, f64)], minima: Minima)
 
 /// The intervals of time over which some line is above `top`: from the first to the last
 /// point of each stretch of points above it.
-fn clipped_intervals(lines: &[Line], top: f64) -> Vec<(f64, f64)> {
+pub fn clipped_intervals(lines: &[Line], top: f64) -> Vec<(f64, f64)> {
     let mut out: Vec<(f64, f64)> = Vec::new();
     for run in lines.iter().flat_map(|l| &l.runs) {
         let mut open: Option<(f64, f64)> = None;
@@ -173,6 +176,18 @@ pub fn arc_lines(rows: &[HistoryRow], radius_m: f64) -> Vec<Line> {
         Line::new("reverse arc", REV, Stroke::Solid(3), series(&|r| r.reverse_arc_deg)),
         jdp_line,
     ]
+}
+
+/// Marks the intervals where a safety factor runs above the axis: a bar along the top edge
+/// and an upward triangle at each interval's start.
+pub fn mark_clipped(chart: &Chart, clipped: &[(f64, f64)], top: f64) -> Result<(), String> {
+    let area = chart.plotting_area();
+    for &(a, b) in clipped {
+        area.draw(&PathElement::new(vec![(a, top), (b, top)], OFF_SCALE.stroke_width(5))).map_err(e)?;
+        let tri = EmptyElement::at((a, top)) + Polygon::new(vec![(0, 3), (-6, 14), (6, 14)], OFF_SCALE.filled());
+        area.draw(&tri).map_err(e)?;
+    }
+    Ok(())
 }
 
 #[cfg(test)]

@@ -4,7 +4,7 @@
 //! over time, with a colour bar). What history.png shows is built as plain data first
 //! ([`super::history_figure`]).
 
-use super::history_figure::{Minima, T1, T2, arc_lines, safety_panel};
+use super::history_figure::{Minima, OFF_SCALE, T1, T2, arc_lines, mark_clipped, safety_panel};
 use super::plot::{Area, Chart, PlotError, e, font, padded_range, render, stacked_mesh, stacked_panel};
 use super::plot_colorbar::{BAR_AREA_W, ColourBar, draw_colour_bar};
 use super::plot_series::{Line, Stroke, draw_line, draw_swatch, jdp_runs, legend_of, legend_strip};
@@ -20,7 +20,6 @@ const ANCHOR2: RGBColor = RGBColor(240, 170, 110);
 const SPEED: RGBColor = RGBColor(20, 130, 60);
 const ACCEL: RGBColor = RGBColor(140, 60, 160);
 const SLIP_BG: RGBColor = RGBColor(255, 205, 205);
-const OFF_SCALE: RGBColor = RGBColor(90, 90, 90);
 /// Most time columns drawn in the wrap map (one per pixel is all a reader can see).
 const MAP_MAX_COLUMNS: usize = 900;
 
@@ -137,18 +136,6 @@ fn draw_history(body: &Area, rows: &[HistoryRow], plot: HistoryPlot) -> Result<(
         if bottom {
             mark_clipped(&chart, &sf.clipped, y.1)?;
         }
-    }
-    Ok(())
-}
-
-/// Marks the intervals where a safety factor runs above the axis: a bar along the top edge
-/// and an upward triangle at each interval's start.
-fn mark_clipped(chart: &Chart, clipped: &[(f64, f64)], top: f64) -> Result<(), String> {
-    let area = chart.plotting_area();
-    for &(a, b) in clipped {
-        area.draw(&PathElement::new(vec![(a, top), (b, top)], OFF_SCALE.stroke_width(5))).map_err(e)?;
-        let tri = EmptyElement::at((a, top)) + Polygon::new(vec![(0, 3), (-6, 14), (6, 14)], OFF_SCALE.filled());
-        area.draw(&tri).map_err(e)?;
     }
     Ok(())
 }
