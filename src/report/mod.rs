@@ -18,6 +18,7 @@ pub mod plot_colorbar;
 pub mod plot_history;
 pub mod plot_series;
 pub mod plot_sweep;
+pub mod plot_wrap;
 pub mod plot_zones;
 pub mod summary;
 pub mod table;
@@ -153,6 +154,17 @@ fn write_scene(
             table::state_label(&scene.classical.state)
         );
         plot::plot_distribution(&scene_dir.join("distribution.png"), &title, &wrap.distribution)?;
+        let title = format!("{} — wrap diagram, level {}, {}", scene.name, scene.plan.level, at.trim_end_matches(", "));
+        plot_wrap::plot_wrap_diagram(
+            &scene_dir.join("wrap_diagram.png"),
+            title.trim_end_matches(", "),
+            &wrap.distribution,
+        )?;
+        for snapshot in &scene.snapshots {
+            let title = format!("{} — wrap diagram, level {}, t = {} s", scene.name, scene.plan.level, snapshot.t_s);
+            let path = scene_dir.join(snapshot_diagram_name(snapshot.t_s));
+            plot_wrap::plot_wrap_diagram(&path, &title, snapshot)?;
+        }
         if let Some(history) = &scene.history {
             let r = &summary.requirements;
             let minima = history_figure::Minima {
@@ -179,6 +191,11 @@ fn write_scene(
         }
     }
     Ok(())
+}
+
+/// The file of the wrap diagram of the snapshot at `t_s`: `wrap_diagram_t<t>s.png`.
+pub fn snapshot_diagram_name(t_s: f64) -> String {
+    format!("wrap_diagram_t{t_s}s.png")
 }
 
 /// Moves the staged report to `dir`, replacing an existing one without ever deleting it first.

@@ -383,28 +383,29 @@ pub(super) fn tick_format(lo: f64, hi: f64) -> impl Fn(&f64) -> String {
     }
 }
 
+/// Level 1's steady distribution for T1 = 248.5 kN, T2 = 211.9 kN (μ = 0.25, α = 187.42°,
+/// N = 180) at `speed_m_s`, sides swapped when `mirror` (T1 ↔ T2, v → −v): a test input.
+#[cfg(test)]
+pub(super) fn steady_distribution(speed_m_s: f64, mirror: bool) -> Distribution {
+    use crate::derived;
+    use crate::model::level0::EndState;
+    use crate::model::level1::steady_rolling;
+    let (t1_n, t2_n) = if mirror { (211.9e3, 248.5e3) } else { (248.5e3, 211.9e3) };
+    let v = if mirror { -speed_m_s } else { speed_m_s };
+    let state = EndState { t1_n, t2_n, speed_m_s: v, accel_m_s2: 0.0, centrifugal_n: 0.0 };
+    let rolling = steady_rolling(0.25, 187.42f64.to_radians(), &state, if mirror { -1.0 } else { 1.0 }, 1.2e8);
+    let summary = derived::summarize(&rolling.field, &rolling.law).expect("summary");
+    derived::distribution(0.0, &rolling.field, &rolling.law, &summary, 180, rolling.gross_slip, |_, t| {
+        rolling.slip_velocity_m_s(t)
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::contact::NodeState;
-    use crate::derived;
-    use crate::model::level0::EndState;
-    use crate::model::level1::steady_rolling;
     use crate::report::plot_zones::ZoneKind;
     use crate::wrap::Zone;
-
-    /// Level 1's steady distribution for T1 = 248.5 kN, T2 = 211.9 kN (μ = 0.25, α = 187.4°)
-    /// at `speed_m_s`, sides swapped when `mirror` (T1 ↔ T2, v → −v).
-    fn steady(speed_m_s: f64, mirror: bool) -> Distribution {
-        let (t1_n, t2_n) = if mirror { (211.9e3, 248.5e3) } else { (248.5e3, 211.9e3) };
-        let v = if mirror { -speed_m_s } else { speed_m_s };
-        let state = EndState { t1_n, t2_n, speed_m_s: v, accel_m_s2: 0.0, centrifugal_n: 0.0 };
-        let rolling = steady_rolling(0.25, 187.42f64.to_radians(), &state, if mirror { -1.0 } else { 1.0 }, 1.2e8);
-        let summary = derived::summarize(&rolling.field, &rolling.law).expect("summary");
-        derived::distribution(0.0, &rolling.field, &rolling.law, &summary, 180, rolling.gross_slip, |_, t| {
-            rolling.slip_velocity_m_s(t)
-        })
-    }
 
     fn labels(legend: &[LegendEntry]) -> Vec<&str> {
         legend.iter().map(|l| l.1.as_str()).collect()
@@ -421,7 +422,7 @@ mod tests {
                 (ZoneKind::PositiveAtLimit, ZoneKind::PositiveSlipping)
             };
             for (speed, kind) in [(0.0, limit), (10.0, slipping)] {
-                let fig = distribution_figure(&steady(speed, mirror));
+                let fig = distribution_figure(&steady_distribution(speed, mirror));
                 assert!(!fig.shades.is_empty() && fig.shades.iter().all(|z| z.kind == kind), "{:?}", fig.shades);
                 for legend in [&fig.tension_legend, &fig.friction_legend] {
                     let l = labels(legend);
@@ -438,7 +439,7 @@ mod tests {
         // from θ = α (from θ = 0 when mirrored); 1e-9° bounds the root finder's 1e-12 rad.
         let beta_deg = (248.5f64 / 211.9).ln().to_degrees() / 0.25;
         for mirror in [false, true] {
-            let fig = distribution_figure(&steady(0.0, mirror));
+            let fig = distribution_figure(&steady_distribution(0.0, mirror));
             let want = if mirror { (0.0, beta_deg) } else { (187.42 - beta_deg, 187.42) };
             assert_eq!(fig.shades.len(), 1);
             let z = fig.shades[0];
@@ -453,7 +454,7 @@ mod tests {
     #[test]
     fn draws_normal_and_degenerate_inputs_or_says_why_not() {
         let dir = tempfile::tempdir().expect("temp dir");
-        let full = steady(0.0, false);
+        let full = steady_distribution(0.0, false);
         let one = Distribution { samples: full.samples[..1].to_vec(), gross_slip: true, ..full.clone() };
         let zones = vec![Zone { start_deg: f64::NAN, end_deg: 1.0, state: NodeState::SlipPositive }];
         let empty = Distribution {
