@@ -240,10 +240,11 @@ fn draw(body: &Area, d: &WrapDiagram) -> Result<(), String> {
     let (pw, ph) = plot.dim_in_pixel();
     let half_h = 1.0;
     let half_w = half_h * f64::from(pw) / f64::from(ph.max(1));
-    let scale = 1.75;
+    // 3.4 pulley radii tall: the ropes' labels below, the JDP's label (r = 1.74) above.
+    let scale = 1.7;
     let mut chart = ChartBuilder::on(&plot)
         .margin(10)
-        .build_cartesian_2d(-half_w * scale..half_w * scale, -1.35..2.0 * scale - 1.35)
+        .build_cartesian_2d(-half_w * scale..half_w * scale, -1.45..2.0 * scale - 1.45)
         .map_err(e)?;
     chart.configure_mesh().disable_mesh().disable_axes().draw().map_err(e)?;
     let area = chart.plotting_area();
