@@ -69,7 +69,7 @@ pub fn draw_colour_bar(area: &Area, bar: &ColourBar, top_px: i32, bottom_px: i32
         area.draw_text(&label, &text, (x1 + 10, y)).map_err(e)?;
     }
     let title = font(15).color(&BLACK).pos(Pos::new(HPos::Left, VPos::Bottom));
-    area.draw_text(&bar.title, &title, (x0 - 8, y_top - 6)).map_err(e)
+    area.draw_text(&bar.title, &title, (x0 - 8, y_top - 12)).map_err(e)
 }
 
 #[cfg(test)]
