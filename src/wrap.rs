@@ -93,6 +93,21 @@ pub struct Sample {
     pub slip_velocity_m_s: Option<f64>,
 }
 
+/// Slip speed (m/s) up to which a point at the Coulomb limit counts as resting on the lining:
+/// 1 nm/s, six orders below the creep of a running rope (v ΔT/EA, mm/s at a few m/s) and far
+/// above the round-off of a slip increment (1e-15 m per step).
+pub const SLIDING_SPEED_M_S: f64 = 1e-9;
+
+impl Sample {
+    /// Whether the rope slides on the lining here: at the Coulomb limit (u ≥ 0.999) *and*
+    /// moving relative to the lining (|slip velocity| > [`SLIDING_SPEED_M_S`]), or in gross slip
+    /// (where no slip velocity is determined). A point at the limit whose slip velocity is zero,
+    /// e.g. after the last load change of a hoist at rest, is at the Coulomb limit, not sliding.
+    pub fn sliding(&self) -> bool {
+        self.state != NodeState::Stick && self.slip_velocity_m_s.is_none_or(|v| v.abs() > SLIDING_SPEED_M_S)
+    }
+}
+
 /// A contiguous stretch of the wrap in one contact state (for shading plots and reports).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Zone {

@@ -205,6 +205,7 @@ fn two_processes_writing_the_same_out_leave_one_whole_report() {
     fs::write(&b, sheet_b()).expect("write");
     let out = tmp.path().join("out");
     let exe = assert_cmd::cargo::cargo_bin("wrapcalc");
+    // A whole report: the marker, the scenes' folders, the calculation report and workbook, the summaries.
     let whole_a = [MARKER, "a1", "a2", "checks.xlsx", "report.html", "summary.csv", "summary.json"];
     let whole_b = [MARKER, "b1", "checks.xlsx", "report.html", "summary.csv", "summary.json"];
     for round in 0..3 {

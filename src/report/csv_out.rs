@@ -15,8 +15,9 @@ pub fn write_summary<W: Write>(out: W, summary: &Summary) -> csv::Result<()> {
     Ok(())
 }
 
-/// distribution.csv header (docs/interface.md).
-pub const DISTRIBUTION_HEADER: [&str; 8] = [
+/// distribution.csv header (the columns of docs/interface.md §3, then the extension column `sliding`:
+/// `true` where the rope moves relative to the lining, [`crate::wrap::Sample::sliding`]).
+pub const DISTRIBUTION_HEADER: [&str; 9] = [
     "t_s",
     "theta_deg",
     "tension_n",
@@ -25,6 +26,7 @@ pub const DISTRIBUTION_HEADER: [&str; 8] = [
     "utilization",
     "state",
     "slip_velocity_m_s",
+    "sliding",
 ];
 
 /// distribution.csv: one block of rows per reported time.
@@ -42,6 +44,7 @@ pub fn write_distribution<W: Write>(out: W, blocks: &[&Distribution]) -> csv::Re
                 s.utilization.to_string(),
                 s.state.as_str().to_string(),
                 s.slip_velocity_m_s.map_or_else(String::new, |v| v.to_string()),
+                s.sliding().to_string(),
             ])?;
         }
     }

