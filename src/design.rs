@@ -265,6 +265,30 @@ pub struct Scene {
     pub kind: SceneKind,
     /// What the scene asks for (sheet key `outputs`; default: everything its kind can give).
     pub outputs: Outputs,
+    /// Rope elements to follow through the wrap (time scenes; sheet keys `track_*`).
+    pub tracks: Option<Tracks>,
+}
+
+/// Where a followed rope element sits on the rope (its centre).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum ElementAt {
+    /// It enters the wrap at this time (s): at θ = 0 when the rope runs towards side 2, at θ = α
+    /// when it runs towards side 1.
+    EntryS(f64),
+    /// It lies at this angle of the wrap (deg) when the scene starts.
+    StartDeg(f64),
+    /// It lies this far along the rope from the side-1 conveyance anchor (m, duty cycles).
+    AnchorM(f64),
+}
+
+/// Rope elements a time scene follows through the wrap (`<scene>/track.csv`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Tracks {
+    pub elements: Vec<ElementAt>,
+    /// Length of each element along the rope (m).
+    pub element_length_m: f64,
+    /// Time step of the track rows (s); `None`: one degree of wrap at the top speed.
+    pub step_s: Option<f64>,
 }
 
 /// One thing a scene can ask for (MODEL §7); the planner runs the cheapest level that gives all

@@ -98,6 +98,7 @@ fn design(name: &str, samples: Vec<HistorySample>) -> Design {
             name: name.into(),
             outputs: Outputs::all_for(&kind).without(Output::Margins).without(Output::Fit),
             kind,
+            tracks: None,
         }],
     }
 }

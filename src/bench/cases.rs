@@ -154,6 +154,7 @@ fn bench_design(name: &str, kind: SceneKind) -> Design {
             name: name.into(),
             outputs: Outputs::all_for(&kind).without(Output::Margins).without(Output::Fit),
             kind,
+            tracks: None,
         }],
     }
 }

@@ -90,3 +90,40 @@ pub fn write_history<W: Write>(out: W, rows: &[HistoryRow], anchors_n: &[[f64; 2
     w.flush()?;
     Ok(())
 }
+
+/// track.csv: one row per element and reported time while the element is on the pulley.
+pub fn write_tracks<W: Write>(out: W, tracks: &[crate::model::level2::track::Track]) -> csv::Result<()> {
+    let mut w = csv::Writer::from_writer(out);
+    w.write_record([
+        "element",
+        "t_s",
+        "theta_deg",
+        "tension_n",
+        "normal_n_per_rad",
+        "friction_n_per_rad",
+        "utilization",
+        "state",
+        "contact_force_n",
+        "friction_force_n",
+        "impulse_n_s",
+    ])?;
+    for track in tracks {
+        for r in &track.rows {
+            w.write_record([
+                track.label.clone(),
+                r.t_s.to_string(),
+                r.theta_deg.to_string(),
+                r.tension_n.to_string(),
+                r.normal_n_per_rad.to_string(),
+                r.friction_n_per_rad.to_string(),
+                r.utilization.to_string(),
+                r.state.as_str().to_string(),
+                r.contact_force_n.to_string(),
+                r.friction_force_n.to_string(),
+                r.impulse_n_s.to_string(),
+            ])?;
+        }
+    }
+    w.flush()?;
+    Ok(())
+}

@@ -14,7 +14,9 @@ pub mod matrix;
 pub mod plot;
 pub mod plot_bench;
 pub mod plot_history;
+pub mod plot_panels;
 pub mod plot_sweep;
+pub mod plot_track;
 pub mod summary;
 pub mod table;
 pub mod target;
@@ -138,6 +140,16 @@ fn write_scene(
         let f = File::create(&path).map_err(io(&path))?;
         csv_out::write_history(BufWriter::new(f), &history.rows, &history.anchors_n)
             .map_err(|source| ReportError::Csv { path: path.display().to_string(), source })?;
+    }
+    if let Some(tracks) = &scene.tracks {
+        let path = scene_dir.join("track.csv");
+        let f = File::create(&path).map_err(io(&path))?;
+        csv_out::write_tracks(BufWriter::new(f), &tracks.tracks)
+            .map_err(|source| ReportError::Csv { path: path.display().to_string(), source })?;
+        if options.plots {
+            let title = format!("{} — rope elements of {} m through the wrap", scene.name, tracks.element_length_m);
+            plot_track::plot_tracks(&scene_dir.join("track.png"), &title, &tracks.tracks, scene.classical.mu)?;
+        }
     }
     if options.plots {
         let at = scene.t_s.map_or_else(String::new, |t| format!("t = {t} s, "));

@@ -9,6 +9,7 @@ mod derive;
 mod design_checks;
 mod loads;
 mod time;
+pub mod track;
 mod trip;
 
 pub use design_checks::DesignResult;
@@ -75,6 +76,11 @@ pub enum RunError {
     Level2 { scene: String, source: Level2Error },
     #[error("scene \"{scene}\": {source}")]
     Level4 { scene: String, source: Level4Error },
+    #[error(
+        "scene \"{scene}\": track_*: rope elements are followed on the rigid lining (level 2); this scene's wrap \
+         runs at level 3 on the elastic lining. Run it with --level 2, or follow the elements in a scene without the lining"
+    )]
+    TracksAtLevel3 { scene: String },
     #[error("scene \"{scene}\": level 3: {source}")]
     Level3 { scene: String, source: Level3Error },
     #[error("scene \"{scene}\": {source}")]
@@ -151,6 +157,8 @@ pub struct SceneResult {
     /// The masses hanging below the tangent points at the state the margins are measured from
     /// (kg, all ropes): a mass-loaded scene's, a duty cycle's at its worst instant.
     pub hanging_kg: Option<[f64; 2]>,
+    /// Rope elements followed through the wrap (time scenes whose sheet asks for them).
+    pub tracks: Option<track::TrackOutput>,
 }
 
 impl SceneResult {
@@ -282,6 +290,7 @@ fn empty(scene: &Scene, plan: Plan, classical: Classical) -> SceneResult {
         slip_onset: None,
         rope_dynamics_safety_factor: None,
         hanging_kg: None,
+        tracks: None,
     }
 }
 

@@ -15,6 +15,7 @@ mod machine;
 mod outputs;
 mod raw;
 mod requirements;
+mod track;
 mod validate;
 
 pub use diag::{Diagnostic, SheetError};

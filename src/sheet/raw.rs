@@ -110,6 +110,12 @@ pub struct RawScene {
     pub time_step_s: Option<Spanned<f64>>,
     pub return_after_s: Option<Spanned<f64>>,
     pub outputs: Option<Spanned<Vec<Spanned<String>>>>,
+    /// Rope elements followed through the wrap (time scenes).
+    pub track_entry_s: Option<Spanned<Vec<f64>>>,
+    pub track_start_deg: Option<Spanned<Vec<f64>>>,
+    pub track_anchor_m: Option<Spanned<Vec<f64>>>,
+    pub track_length_m: Option<Spanned<f64>>,
+    pub track_step_s: Option<Spanned<f64>>,
 }
 
 #[derive(Debug, Deserialize)]

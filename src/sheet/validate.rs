@@ -413,8 +413,9 @@ fn scenes(
             }
         };
         let outputs = kind.as_ref().and_then(|k| super::outputs::outputs(c, at, &raw.outputs, k));
-        match (name, kind, outputs) {
-            (Some(name), Some(kind), Some(outputs)) => out.push(Scene { name, kind, outputs }),
+        let tracks = kind.as_ref().and_then(|k| super::track::tracks(c, at, raw, k));
+        match (name, kind, outputs, tracks) {
+            (Some(name), Some(kind), Some(outputs), Some(tracks)) => out.push(Scene { name, kind, outputs, tracks }),
             _ => all_ok = false,
         }
     }
