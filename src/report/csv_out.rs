@@ -50,8 +50,14 @@ pub fn write_distribution<W: Write>(out: W, blocks: &[&Distribution]) -> csv::Re
 }
 
 /// history.csv: one row per reported time (INTERFACE.md's columns), then the extension columns
-/// `anchor1_n,anchor2_n` (tension per rope at the conveyance anchors; empty but for duty cycles).
-pub fn write_history<W: Write>(out: W, rows: &[HistoryRow], anchors_n: &[[f64; 2]]) -> csv::Result<()> {
+/// `anchor1_n,anchor2_n,mid1_n,mid2_n` (tension per rope at the conveyance anchors and halfway down
+/// each hanging rope; empty but for duty cycles with the ropes' dynamics).
+pub fn write_history<W: Write>(
+    out: W,
+    rows: &[HistoryRow],
+    anchors_n: &[[f64; 2]],
+    midpoints_n: &[[f64; 2]],
+) -> csv::Result<()> {
     let mut w = csv::Writer::from_writer(out);
     w.write_record([
         "t_s",
@@ -67,10 +73,13 @@ pub fn write_history<W: Write>(out: W, rows: &[HistoryRow], anchors_n: &[[f64; 2
         "gross_slip",
         "anchor1_n",
         "anchor2_n",
+        "mid1_n",
+        "mid2_n",
     ])?;
     let opt = |v: Option<f64>| v.map_or_else(String::new, |v| v.to_string());
     for (i, r) in rows.iter().enumerate() {
         let anchors = anchors_n.get(i);
+        let mids = midpoints_n.get(i);
         w.write_record([
             r.t_s.to_string(),
             r.t1_n.to_string(),
@@ -85,6 +94,8 @@ pub fn write_history<W: Write>(out: W, rows: &[HistoryRow], anchors_n: &[[f64; 2
             r.gross_slip.to_string(),
             opt(anchors.map(|a| a[0])),
             opt(anchors.map(|a| a[1])),
+            opt(mids.map(|a| a[0])),
+            opt(mids.map(|a| a[1])),
         ])?;
     }
     w.flush()?;

@@ -138,7 +138,7 @@ fn write_scene(
     if let Some(history) = &scene.history {
         let path = scene_dir.join("history.csv");
         let f = File::create(&path).map_err(io(&path))?;
-        csv_out::write_history(BufWriter::new(f), &history.rows, &history.anchors_n)
+        csv_out::write_history(BufWriter::new(f), &history.rows, &history.anchors_n, &history.midpoints_n)
             .map_err(|source| ReportError::Csv { path: path.display().to_string(), source })?;
     }
     if let Some(tracks) = &scene.tracks {
@@ -169,7 +169,8 @@ fn write_scene(
             };
             let title = format!("{} — history, level {}", scene.name, scene.plan.level);
             let path = scene_dir.join("history.png");
-            plot_history::plot_history(&path, &title, &history.rows, &history.anchors_n, min, &history.code_sf)?;
+            let ropes = plot_history::Suspended { anchors_n: &history.anchors_n, midpoints_n: &history.midpoints_n };
+            plot_history::plot_history(&path, &title, &history.rows, ropes, min, &history.code_sf)?;
             let times: Vec<f64> = history.rows.iter().map(|r| r.t_s).collect();
             let jdp: Vec<Option<f64>> = history.rows.iter().map(|r| r.jdp_deg).collect();
             let title = format!("{} — friction utilization over the wrap (θ–t)", scene.name);

@@ -14,6 +14,9 @@ const T2: RGBColor = RGBColor(200, 90, 20);
 /// Anchor tensions: lighter shades of the side colours.
 const ANCHOR1: RGBColor = RGBColor(110, 160, 230);
 const ANCHOR2: RGBColor = RGBColor(240, 170, 110);
+/// Midpoint tensions: between the tangent-point and the anchor shades.
+const MID1: RGBColor = RGBColor(60, 110, 200);
+const MID2: RGBColor = RGBColor(225, 130, 60);
 const SPEED: RGBColor = RGBColor(20, 130, 60);
 const ACCEL: RGBColor = RGBColor(140, 60, 160);
 const POS: RGBColor = RGBColor(200, 40, 30);
@@ -23,19 +26,26 @@ const SLIP_BG: RGBColor = RGBColor(255, 205, 205);
 const MAP_MAX_COLUMNS: usize = 900;
 
 /// history.png: end tensions, speed and acceleration, JDP and arcs, safety factor over time.
-/// `anchors_n`: tension per rope at the conveyance anchors per row (duty cycles; else empty),
-/// drawn thin beside T1 and T2. `code_sf`: the code's safety factor on rigid ropes over time,
+/// `ropes`: tension per rope at the conveyance anchors and halfway down the hanging ropes per
+/// row (duty cycles; else empty), drawn beside T1 and T2. `code_sf`: the code's safety factor on rigid ropes over time,
 /// `(t, σ)` (duty cycles with the ropes' dynamics, whose rows then carry the level-4 value;
 /// else empty).
 pub fn plot_history(
     path: &Path,
     title: &str,
     rows: &[HistoryRow],
-    anchors_n: &[[f64; 2]],
+    ropes: Suspended,
     safety_factor_min: f64,
     code_sf: &[(f64, f64)],
 ) -> Result<(), PlotError> {
-    render(path, (1200, 1300), title, |body| draw_history(body, rows, anchors_n, safety_factor_min, code_sf))
+    render(path, (1200, 1300), title, |body| draw_history(body, rows, ropes, safety_factor_min, code_sf))
+}
+
+/// Tensions along the suspended ropes per history row (N per rope; empty but for duty cycles).
+#[derive(Clone, Copy)]
+pub struct Suspended<'a> {
+    pub anchors_n: &'a [[f64; 2]],
+    pub midpoints_n: &'a [[f64; 2]],
 }
 
 fn time_range(times: impl Iterator<Item = f64>) -> (f64, f64) {
@@ -83,7 +93,7 @@ fn slip_intervals(rows: &[HistoryRow]) -> Vec<(f64, f64)> {
 fn draw_history(
     body: &Area,
     rows: &[HistoryRow],
-    anchors_n: &[[f64; 2]],
+    ropes: Suspended,
     sf_min: f64,
     code_sf: &[(f64, f64)],
 ) -> Result<(), String> {
@@ -105,12 +115,16 @@ fn draw_history(
         ("T1 (side 1)", T1, series(&|r| Some(kn(r.t1_n))), false),
         ("T2 (side 2)", T2, series(&|r| Some(kn(r.t2_n))), false),
     ];
-    if !anchors_n.is_empty() {
-        let anchor = |side: usize| -> Vec<(f64, f64)> {
-            rows.iter().zip(anchors_n).map(|(r, a)| (r.t_s, kn(a[side]))).filter(|p| p.1.is_finite()).collect()
-        };
-        tensions.push(("side-1 anchor (conveyance 1)", ANCHOR1, anchor(0), false));
-        tensions.push(("side-2 anchor (conveyance 2)", ANCHOR2, anchor(1), false));
+    let along = |values: &[[f64; 2]], side: usize| -> Vec<(f64, f64)> {
+        rows.iter().zip(values).map(|(r, a)| (r.t_s, kn(a[side]))).filter(|p| p.1.is_finite()).collect()
+    };
+    if !ropes.anchors_n.is_empty() {
+        tensions.push(("side-1 anchor (conveyance 1)", ANCHOR1, along(ropes.anchors_n, 0), false));
+        tensions.push(("side-2 anchor (conveyance 2)", ANCHOR2, along(ropes.anchors_n, 1), false));
+    }
+    if !ropes.midpoints_n.is_empty() {
+        tensions.push(("side-1 rope, halfway down", MID1, along(ropes.midpoints_n, 0), false));
+        tensions.push(("side-2 rope, halfway down", MID2, along(ropes.midpoints_n, 1), false));
     }
     type Panel<'a> = (&'a str, Vec<Series<'a>>, Option<(f64, f64)>);
     let panels_spec: Vec<Panel> = vec![

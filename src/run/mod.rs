@@ -116,6 +116,9 @@ pub struct HistoryOutput {
     /// Duty cycles: tension per rope at the side-1 and side-2 conveyance anchors at each row's
     /// time (N); empty for other scenes.
     pub anchors_n: Vec<[f64; 2]>,
+    /// Duty cycles with the ropes' dynamics: tension per rope halfway down the side-1 and side-2
+    /// hanging ropes at each row's time (N); empty otherwise.
+    pub midpoints_n: Vec<[f64; 2]>,
     /// Duty cycles with the ropes' dynamics: the code's safety factor on rigid ropes over time,
     /// `(t, σ)`, beside the rows' level-4 value; empty otherwise.
     pub code_sf: Vec<(f64, f64)>,

@@ -90,6 +90,7 @@ pub(super) fn run_duty_cycle(
         result.rope_dynamics_safety_factor = trip::code_and_rope_dynamics(design, &mut result.classical, &code);
         if let Some(history) = &mut result.history {
             history.anchors_n = history.rows.iter().map(|r| level4::anchors_at(dynamics, r.t_s)).collect();
+            history.midpoints_n = history.rows.iter().map(|r| level4::midpoints_at(dynamics, r.t_s)).collect();
             history.code_sf = trip::code_series(design, rigid);
         }
     }
@@ -197,6 +198,7 @@ fn run_samples(
         map: run.map,
         stats: run.stats,
         anchors_n: Vec::new(),
+        midpoints_n: Vec::new(),
         code_sf: Vec::new(),
     });
     result.nodes = Some(options.nodes);
