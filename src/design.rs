@@ -27,7 +27,44 @@ pub struct Design {
     pub machine: Machine,
     /// The load-case matrix of the `[load_cases]` section, when the sheet has one.
     pub load_cases: Option<LoadCases>,
+    /// Figures overlaying one quantity from several scenes (`[[compare]]`).
+    pub compare: Vec<Compare>,
 }
+
+/// A `[[compare]]` figure: one quantity of several time scenes over time, side by side.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Compare {
+    /// Names the files `compare/<name>.png` (and `.csv`).
+    pub name: String,
+    pub scenes: Vec<String>,
+    pub quantity: CompareQuantity,
+}
+
+/// What a `[[compare]]` figure overlays.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CompareQuantity {
+    /// The first followed element of each scene (contact and friction force, impulse, θ).
+    Track,
+    /// A column of history.csv.
+    History(&'static str),
+}
+
+/// The history.csv columns a `[[compare]]` figure can overlay.
+pub const COMPARE_COLUMNS: [&str; 13] = [
+    "t1_n",
+    "t2_n",
+    "speed_m_s",
+    "accel_m_s2",
+    "jdp_deg",
+    "positive_arc_deg",
+    "reverse_arc_deg",
+    "max_utilization",
+    "safety_factor",
+    "anchor1_n",
+    "anchor2_n",
+    "mid1_n",
+    "mid2_n",
+];
 
 /// The title block of the calculation report, echoed as the sheet gives it.
 #[derive(Debug, Clone, PartialEq, Eq, Default)]

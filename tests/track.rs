@@ -279,3 +279,23 @@ fn bad_track_keys_name_file_line_scene_and_key() {
         "{err}"
     );
 }
+
+#[test]
+fn bad_compare_tables_name_file_line_and_key() {
+    let text = "[pulley]\ndiameter_m = 5.0\nmu = 0.25\nwrap_angle_deg = 180.0\n\n[rope]\ncount = 1\n\
+        mass_per_m_kg = 10.0\nea_n = 1.0e8\n\n[[scene]]\nname = \"h\"\nkind = \"history\"\nt_s = [0.0, 1.0]\n\
+        t1_n = [1.0e5, 1.0e5]\nt2_n = [1.0e5, 1.0e5]\nspeed_m_s = [0.0, 0.0]\n\n[[scene]]\nname = \"l\"\n\
+        kind = \"loads\"\nt1_n = 1.0e5\nt2_n = 1.0e5\n\n[[compare]]\nname = \"a\"\nscenes = [\"h\", \"l\", \"x\"]\n\
+        quantity = \"track\"\n\n[[compare]]\nname = \"b\"\nscenes = [\"h\"]\nquantity = \"tension\"\n";
+    let err = sheet::parse("bad.toml", text).expect_err("invalid").to_string();
+    assert!(
+        err.contains("bad.toml:27:11: scene \"h\": compare[1].scenes[0] = \"h\": this scene follows no rope element"),
+        "{err}"
+    );
+    assert!(err.contains("bad.toml:27:16: compare[1].scenes[1] = \"l\": a loads scene has no history"), "{err}");
+    assert!(
+        err.contains("bad.toml:27:21: compare[1].scenes[2] = \"x\": no scene of this name; the sheet has h, l"),
+        "{err}"
+    );
+    assert!(err.contains("bad.toml:33:12: compare[2].quantity = \"tension\": unknown quantity"), "{err}");
+}

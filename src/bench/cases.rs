@@ -149,6 +149,7 @@ fn bench_design(name: &str, kind: SceneKind) -> Design {
         lining: None,
         machine: crate::design::Machine::default(),
         load_cases: None,
+        compare: Vec::new(),
         // The model levels are timed: the derived margins and fit are left out.
         scenes: vec![Scene {
             name: name.into(),

@@ -8,6 +8,7 @@
 
 pub mod accuracy;
 pub mod checklist;
+pub mod compare;
 pub mod csv_out;
 pub mod html;
 pub mod matrix;
@@ -58,6 +59,8 @@ pub struct ReportOptions<'a> {
     pub plots: bool,
     /// The calculation report (`report.html`, `checks.xlsx`) of this design, when wanted.
     pub document: Option<(&'a crate::design::Design, &'a html::Provenance)>,
+    /// Figures overlaying one quantity of several scenes (`compare/`).
+    pub compare: &'a [crate::design::Compare],
 }
 
 /// Writes the complete report for `run` to `dir`, atomically.
@@ -100,6 +103,7 @@ fn write_into(dir: &Path, summary: &Summary, run: &RunResult, options: ReportOpt
             .map_err(|source| ReportError::Csv { path: path.display().to_string(), source })?;
     }
     run.scenes.par_iter().try_for_each(|scene| write_scene(dir, summary, scene, options))?;
+    compare::write(dir, options.compare, &run.scenes, options.plots)?;
     if let Some((design, provenance)) = options.document {
         write_document(dir, design, provenance, run)?;
     }

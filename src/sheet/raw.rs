@@ -154,3 +154,12 @@ pub struct RawLining {
     pub contact_width_m: Option<Spanned<f64>>,
     pub rope_inertia: Option<Spanned<bool>>,
 }
+
+/// A `[[compare]]` table: a figure overlaying one quantity of several scenes.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawCompare {
+    pub name: Option<Spanned<String>>,
+    pub scenes: Option<Spanned<Vec<Spanned<String>>>>,
+    pub quantity: Option<Spanned<String>>,
+}

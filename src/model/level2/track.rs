@@ -15,8 +15,8 @@
 //! tangent point while the centre is off the pulley): tension, contact force `n`, friction `q`,
 //! utilization `|q|/(μn)` and state.
 //!
-//! The impulse turns down where `F` changes from the sign of the motion to the other sign (the
-//! paper's reading of the demarcation point on an element): that instant is found by Brent's
+//! The impulse turns down where `F` changes from the sign of the motion to the other sign,
+//! beyond 0.001·μN either way (the paper's reading of the demarcation point on an element): that instant is found by Brent's
 //! method on `F(t)` between the two rows that bracket it, each trial advancing a copy of the
 //! simulation from the earlier row.
 
@@ -26,6 +26,9 @@ use super::{Level2Error, Profile};
 use crate::contact::{ContactLaw, NodeState};
 use crate::design::HistorySample;
 use crate::roots::{self, RootStats};
+
+/// Friction below this fraction of its Coulomb bound counts as none (the arcs' threshold).
+const ARC_THRESHOLD: f64 = 1e-3;
 
 /// Tolerance of the turn-down instant (s).
 pub const TURN_DOWN_TOL_S: f64 = 1e-9;
@@ -115,7 +118,7 @@ pub fn run_tracks(
             if track.turn_down.is_none()
                 && let (Some(prev), Some((t_before, earlier))) = (track.rows.last(), before.as_ref())
                 && prev.t_s == *t_before
-                && turns_down(prev, &row, on, turn.omega_per_s(0.5 * (prev.t_s + t)))
+                && turns_down(prev, &row, on, params.mu, turn.omega_per_s(0.5 * (prev.t_s + t)))
             {
                 let probe = Probe { sim: earlier, turn: &turn, element: e, half };
                 track.turn_down = Some(probe.turn_down(prev, t, &mut roots)?);
@@ -129,14 +132,16 @@ pub fn run_tracks(
 }
 
 /// Whether the friction force on an element goes from the sign of the motion `omega` to the
-/// other sign between rows `a` and `b`: against the motion by more than round-off of the
-/// tension (1e-9 of it), or exactly zero while the element lies wholly on the pulley (`on`: a
-/// stuck stretch without friction; an element leaving the pulley loses its force too, but that
-/// is no reversal).
-fn turns_down(a: &TrackRow, b: &TrackRow, on: bool, omega: f64) -> bool {
+/// other sign between rows `a` and `b`. As for the arcs of the wrap, friction counts only
+/// beyond 0.001 of its Coulomb bound μN: from above +0.001·μN (along the motion) to below
+/// −0.001·μN, or to exactly zero while the element lies wholly on the pulley (`on`: a stuck
+/// stretch without friction; an element leaving the pulley loses its force too, but that is no
+/// reversal).
+fn turns_down(a: &TrackRow, b: &TrackRow, on: bool, mu: f64, omega: f64) -> bool {
     let s = if omega >= 0.0 { 1.0 } else { -1.0 };
-    let round_off = 1e-9 * b.tension_n.abs();
-    s * a.friction_force_n > round_off && (s * b.friction_force_n < -round_off || (on && b.friction_force_n == 0.0))
+    let along = |r: &TrackRow| s * r.friction_force_n > ARC_THRESHOLD * mu * r.contact_force_n;
+    let against = |r: &TrackRow| s * r.friction_force_n < -ARC_THRESHOLD * mu * r.contact_force_n;
+    along(a) && (against(b) || (on && b.friction_force_n == 0.0))
 }
 
 /// The times of the rows: every `step_s` from the first sample, every sample, and every instant
