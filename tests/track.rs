@@ -105,6 +105,7 @@ fn an_element_through_steady_rolling_follows_creep_theory() {
     // with F'' ≤ 2ω²μ²n1 = 1e5 N/s², i.e. 0.015 N·s, plus the kinks at the arc's ends (the
     // same order): 1e-5 of the 8000 N·s impulse covers both.
     assert!(worst_j < 1e-5 * total, "running impulse off the closed form by {worst_j} N·s");
+    println!("creep theory: |Δq| ≤ {worst_q:e} N/rad, |ΔF| ≤ {worst_f:e} N, |ΔJ| ≤ {worst_j:e} N·s of {total} N·s");
     // Friction never turns against the motion in steady rolling with T1 > T2.
     assert_eq!(track.turn_down, None);
 }
@@ -163,6 +164,11 @@ fn impulse_over_elements_tiling_the_rope_balances_the_end_tensions() {
     let d = tiled("[0.0, 1.0, 3.0, 3.0, 1.0, 0.0]", &degs);
     let tracks = tracks(&d);
     let sum: f64 = tracks.iter().map(Track::impulse_n_s).sum();
+    println!(
+        "{} elements: Σ impulse − ∫(T1 − T2) dt = {:e} relative",
+        tracks.len(),
+        (sum - RAMPS_IMPULSE_N_S) / RAMPS_IMPULSE_N_S
+    );
     // At every row the elements' forces telescope to T(0) − T(α) = T1 − T2, and the rows include
     // every sample time, so the trapezoidal rule on their sum is exact for the piecewise-linear
     // T1 − T2: what is left is round-off, 1e-9 of the impulse.
@@ -251,6 +257,7 @@ fn the_impulse_turns_down_where_friction_reverses() {
     // The root is converged to 1e-9 s; the state is exact (no grid): 1e-6 s covers the bisection
     // of the boundary above and round-off.
     assert!((turn.t_s - t_star).abs() < 1e-6, "turns down at {} s, closed form {t_star} s", turn.t_s);
+    println!("turn-down at {} s, closed form {t_star} s", turn.t_s);
     assert!((turn.theta_deg.to_radians() - w * (t_star - t_e)).abs() < 1e-6);
     let before = track.rows.iter().rfind(|r| r.t_s < turn.t_s).expect("a row before");
     let after = track.rows.iter().find(|r| r.t_s >= turn.t_s).expect("a row after");
