@@ -205,8 +205,8 @@ fn two_processes_writing_the_same_out_leave_one_whole_report() {
     fs::write(&b, sheet_b()).expect("write");
     let out = tmp.path().join("out");
     let exe = assert_cmd::cargo::cargo_bin("wrapcalc");
-    let whole_a = [MARKER, "a1", "a2", "summary.csv", "summary.json"];
-    let whole_b = [MARKER, "b1", "summary.csv", "summary.json"];
+    let whole_a = [MARKER, "a1", "a2", "checks.xlsx", "report.html", "summary.csv", "summary.json"];
+    let whole_b = [MARKER, "b1", "checks.xlsx", "report.html", "summary.csv", "summary.json"];
     for round in 0..3 {
         // Each process pauses between moving the old report aside and moving its own in, so
         // that the two meet where an unguarded writer would find the other's half-done swap.
