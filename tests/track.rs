@@ -306,3 +306,13 @@ fn bad_compare_tables_name_file_line_and_key() {
     );
     assert!(err.contains("bad.toml:33:12: compare[2].quantity = \"tension\": unknown quantity"), "{err}");
 }
+
+#[test]
+fn tracks_refuse_a_scene_that_runs_below_the_wrap_model() {
+    let d = design(
+        "[[scene]]\nname = \"checks-only\"\nkind = \"history\"\nt_s = [0.0, 1.0]\nt1_n = [2.0e5, 2.0e5]\n\
+         t2_n = [1.9e5, 1.9e5]\nspeed_m_s = [1.0, 1.0]\noutputs = [\"checks\"]\ntrack_entry_s = [0.5]\n",
+    );
+    let err = run_one(&d).expect_err("refused").to_string();
+    assert!(err.contains("scene \"checks-only\": track_*") && err.contains("runs at level 0"), "{err}");
+}

@@ -81,6 +81,11 @@ pub enum RunError {
          runs at level 3 on the elastic lining. Run it with --level 2, or follow the elements in a scene without the lining"
     )]
     TracksAtLevel3 { scene: String },
+    #[error(
+        "scene \"{scene}\": track_*: rope elements are followed by the wrap model (level 2 or more); this scene runs at \
+         level {level}. Ask for \"history\" or \"distribution\" in its outputs, or do not force --level {level}"
+    )]
+    TracksBelowLevel2 { scene: String, level: u8 },
     #[error("scene \"{scene}\": level 3: {source}")]
     Level3 { scene: String, source: Level3Error },
     #[error("scene \"{scene}\": {source}")]

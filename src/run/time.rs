@@ -166,6 +166,9 @@ fn run_samples(
     result.t_s = samples.last().map(|s| s.t_s);
     result.worst = level0::worst_instant(design, &states);
     if result.plan.level < 2 {
+        if scene.tracks.is_some() {
+            return Err(RunError::TracksBelowLevel2 { scene: scene.name.clone(), level: result.plan.level });
+        }
         return Ok(result);
     }
     let first = states[0].1;
