@@ -79,3 +79,42 @@ fn x_of(t: f64) -> f64 {
     let v = v22 + a * (s - s * s / 4.0);
     x + v * (t - 22.0 - s).max(0.0)
 }
+
+/// The mirror image of the test hoist: the sides swapped (counterweight 12 t on side 1, cage
+/// 10 t on side 2) and the trip lowered, from where a lift of the same profile ends (a lowering
+/// trip starts there: L1 = L1₀ − D, L2 = L2₀ + D, tails the other way, D the profile's travel).
+/// Side 1 then does what side 2 did: every midpoint tension swaps sides, to round-off.
+#[test]
+fn midpoint_tensions_mirror_when_the_sides_swap() {
+    let travel = x_of(29.0);
+    let mirrored = SHEET
+        .replace(
+            "conveyance1_kg = 10000.0\nconveyance2_kg = 12000.0",
+            "conveyance1_kg = 12000.0\nconveyance2_kg = 10000.0",
+        )
+        .replace(
+            "side1_length_m = 300.0\nside2_length_m = 50.0\ntail1_length_m = 100.0\ntail2_length_m = 100.0",
+            &format!(
+                "side1_length_m = {:.17}\nside2_length_m = {:.17}\ntail1_length_m = {:.17}\ntail2_length_m = {:.17}",
+                50.0 + travel,
+                300.0 - travel,
+                100.0 - travel,
+                100.0 + travel
+            ),
+        )
+        .replace("kind = \"duty-cycle\"\n", "kind = \"duty-cycle\"\ndirection = \"lower\"\n");
+    assert_ne!(mirrored, SHEET);
+    let d: Design = sheet::parse("mirror.toml", &mirrored).expect("valid sheet");
+    let scenes: Vec<_> = d.scenes.iter().collect();
+    let m = run::run(&d, &scenes, Options { nodes: 90, ..Options::default() }).expect("runs").scenes.remove(0);
+    let a = run_gentle();
+    let (ha, hm) = (a.history.as_ref().expect("history"), m.history.as_ref().expect("history"));
+    assert_eq!(ha.rows.len(), hm.rows.len());
+    let mut worst: f64 = 0.0;
+    for (p, q) in ha.midpoints_n.iter().zip(&hm.midpoints_n) {
+        worst = worst.max(((p[0] - q[1]) / p[0]).abs()).max(((p[1] - q[0]) / p[1]).abs());
+    }
+    // The same arithmetic on swapped sides; the hanging lengths differ by the round-off of
+    // (50 + D) − D: 1e-9 is far above that and far below any physical difference.
+    assert!(worst < 1e-9, "midpoints not mirrored: {worst:e}");
+}
