@@ -27,7 +27,44 @@ pub struct Design {
     pub machine: Machine,
     /// The load-case matrix of the `[load_cases]` section, when the sheet has one.
     pub load_cases: Option<LoadCases>,
+    /// Figures overlaying one quantity from several scenes (`[[compare]]`).
+    pub compare: Vec<Compare>,
 }
+
+/// A `[[compare]]` figure: one quantity of several time scenes over time, side by side.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Compare {
+    /// Names the files `compare/<name>.png` (and `.csv`).
+    pub name: String,
+    pub scenes: Vec<String>,
+    pub quantity: CompareQuantity,
+}
+
+/// What a `[[compare]]` figure overlays.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CompareQuantity {
+    /// The first followed element of each scene (contact and friction force, impulse, θ).
+    Track,
+    /// A column of history.csv.
+    History(&'static str),
+}
+
+/// The history.csv columns a `[[compare]]` figure can overlay.
+pub const COMPARE_COLUMNS: [&str; 13] = [
+    "t1_n",
+    "t2_n",
+    "speed_m_s",
+    "accel_m_s2",
+    "jdp_deg",
+    "positive_arc_deg",
+    "reverse_arc_deg",
+    "max_utilization",
+    "safety_factor",
+    "anchor1_n",
+    "anchor2_n",
+    "mid1_n",
+    "mid2_n",
+];
 
 /// The title block of the calculation report, echoed as the sheet gives it.
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
@@ -265,6 +302,30 @@ pub struct Scene {
     pub kind: SceneKind,
     /// What the scene asks for (sheet key `outputs`; default: everything its kind can give).
     pub outputs: Outputs,
+    /// Rope elements to follow through the wrap (time scenes; sheet keys `track_*`).
+    pub tracks: Option<Tracks>,
+}
+
+/// Where a followed rope element sits on the rope (its centre).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum ElementAt {
+    /// It enters the wrap at this time (s): at θ = 0 when the rope runs towards side 2, at θ = α
+    /// when it runs towards side 1.
+    EntryS(f64),
+    /// It lies at this angle of the wrap (deg) when the scene starts.
+    StartDeg(f64),
+    /// It lies this far along the rope from the side-1 conveyance anchor (m, duty cycles).
+    AnchorM(f64),
+}
+
+/// Rope elements a time scene follows through the wrap (`<scene>/track.csv`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Tracks {
+    pub elements: Vec<ElementAt>,
+    /// Length of each element along the rope (m).
+    pub element_length_m: f64,
+    /// Time step of the track rows (s); `None`: one degree of wrap at the top speed.
+    pub step_s: Option<f64>,
 }
 
 /// One thing a scene can ask for (docs/physics.md §7); the planner runs the cheapest level that gives all

@@ -400,7 +400,12 @@ fn run_command(args: RunArgs) -> anyhow::Result<bool> {
     let provenance = report::html::Provenance::of(&args.sheet, std::env::args().collect())
         .map_err(|e| anyhow::anyhow!("{}: cannot read the sheet again for its SHA-256: {e}", design.sheet))?;
     let document = (!args.no_report).then_some((&design, &provenance));
-    report::write(&out_dir, &summary, &result, report::ReportOptions { plots: !args.no_plots, document })?;
+    report::write(
+        &out_dir,
+        &summary,
+        &result,
+        report::ReportOptions { plots: !args.no_plots, document, compare: &design.compare },
+    )?;
     print_result(&design, &result, args.format, args.quiet);
     if !args.quiet && args.format == Format::Table {
         println!("report written to {}", out_dir.display());

@@ -101,12 +101,14 @@ fn design(name: &str, samples: Vec<HistorySample>) -> Design {
         lining: Some(Lining { shear_stiffness_n_per_m2: SHEAR_STIFFNESS_N_PER_M2, rope_inertia: false }),
         machine: crate::design::Machine::default(),
         load_cases: None,
+        compare: Vec::new(),
         document: crate::design::Document::default(),
         // The model levels are timed: the derived margins and fit are left out.
         scenes: vec![Scene {
             name: name.into(),
             outputs: Outputs::all_for(&kind).without(Output::Margins).without(Output::Fit),
             kind,
+            tracks: None,
         }],
     }
 }

@@ -162,11 +162,13 @@ fn bench_design(name: &str, kind: SceneKind) -> Design {
         lining: None,
         machine: crate::design::Machine::default(),
         load_cases: None,
+        compare: Vec::new(),
         // The model levels are timed: the derived margins and fit are left out.
         scenes: vec![Scene {
             name: name.into(),
             outputs: Outputs::all_for(&kind).without(Output::Margins).without(Output::Fit),
             kind,
+            tracks: None,
         }],
     }
 }

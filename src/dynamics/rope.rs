@@ -356,6 +356,22 @@ impl SideState {
         c.end_load_n - c.end_mass_kg * self.a.last().copied().unwrap_or(0.0)
     }
 
+    /// Total tension of the side halfway down its hanging length, N: the element tension
+    /// `P_i = k_e (q_i − q_{i−1}) + β k_e (v_i − v_{i−1})` (q₀ = 0 at the tangent point), the
+    /// mean of the two elements meeting at the middle node for an even `n`, the middle
+    /// element's for an odd `n`. Linear elements with consistent loads give the exact tension
+    /// at an element's midpoint in static equilibrium (it varies linearly there), so the mean at
+    /// the node is exact too.
+    pub fn mid_tension_n(&self, c: &Coeffs) -> f64 {
+        let n = self.q.len();
+        let element = |i: usize| {
+            // Element i (1-based) joins nodes i − 1 and i.
+            let (q0, v0) = if i == 1 { (0.0, 0.0) } else { (self.q[i - 2], self.v[i - 2]) };
+            c.ke * ((self.q[i - 1] - q0) + c.beta_s * (self.v[i - 1] - v0))
+        };
+        if n.is_multiple_of(2) { 0.5 * (element(n / 2) + element(n / 2 + 1)) } else { element(n / 2 + 1) }
+    }
+
     /// Elastic displacement of the end mass (rope elongation at the conveyance), m.
     pub fn end_stretch_m(&self) -> f64 {
         self.q.last().copied().unwrap_or(0.0)

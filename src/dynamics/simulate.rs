@@ -53,6 +53,9 @@ pub struct DynSample {
     pub anchor1_n: f64,
     /// Tension per rope at the side-2 anchor, N.
     pub anchor2_n: f64,
+    /// Tension per rope halfway down the side-1 and side-2 hanging ropes, N.
+    pub mid1_n: f64,
+    pub mid2_n: f64,
     /// Elastic elongation of the side-1 ropes at the conveyance (downward displacement of the
     /// conveyance relative to the rigid motion), m.
     pub stretch1_m: f64,
@@ -269,6 +272,8 @@ pub(super) fn sample_of(
         t2_n: sides[1].state.top_tension_n(&sides[1].coeffs) / ropes,
         anchor1_n: sides[0].state.anchor_tension_n(&sides[0].coeffs) / ropes,
         anchor2_n: sides[1].state.anchor_tension_n(&sides[1].coeffs) / ropes,
+        mid1_n: sides[0].state.mid_tension_n(&sides[0].coeffs) / ropes,
+        mid2_n: sides[1].state.mid_tension_n(&sides[1].coeffs) / ropes,
         stretch1_m: sides[0].state.end_stretch_m(),
         stretch2_m: sides[1].state.end_stretch_m(),
         energy_j: sides.iter().map(|s| s.coeffs.energy_j(&s.state.q, &s.state.v)).sum::<f64>(),

@@ -254,13 +254,25 @@ pub fn end_history(samples: &[DynSample]) -> Vec<HistorySample> {
 /// Tension per rope at the two conveyance anchors at time `t_s` (N), interpolated linearly
 /// between the dynamics' samples (clamped to the first and last sample).
 pub fn anchors_at(samples: &[DynSample], t_s: f64) -> [f64; 2] {
+    pair_at(samples, t_s, |s| [s.anchor1_n, s.anchor2_n])
+}
+
+/// Tension per rope halfway down the side-1 and side-2 hanging ropes at time `t_s` (N),
+/// interpolated like [`anchors_at`].
+pub fn midpoints_at(samples: &[DynSample], t_s: f64) -> [f64; 2] {
+    pair_at(samples, t_s, |s| [s.mid1_n, s.mid2_n])
+}
+
+/// A pair of a sample's values at `t_s`, linear between samples, clamped at the ends.
+fn pair_at(samples: &[DynSample], t_s: f64, of: impl Fn(&DynSample) -> [f64; 2]) -> [f64; 2] {
     let i = samples.partition_point(|s| s.t_s <= t_s);
     match (i.checked_sub(1).and_then(|j| samples.get(j)), samples.get(i)) {
         (Some(a), Some(b)) if b.t_s > a.t_s => {
             let w = (t_s - a.t_s) / (b.t_s - a.t_s);
-            [a.anchor1_n + w * (b.anchor1_n - a.anchor1_n), a.anchor2_n + w * (b.anchor2_n - a.anchor2_n)]
+            let (x, y) = (of(a), of(b));
+            [x[0] + w * (y[0] - x[0]), x[1] + w * (y[1] - x[1])]
         }
-        (Some(s), _) | (None, Some(s)) => [s.anchor1_n, s.anchor2_n],
+        (Some(s), _) | (None, Some(s)) => of(s),
         (None, None) => [f64::NAN, f64::NAN],
     }
 }

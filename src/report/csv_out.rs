@@ -53,8 +53,14 @@ pub fn write_distribution<W: Write>(out: W, blocks: &[&Distribution]) -> csv::Re
 }
 
 /// history.csv: one row per reported time (docs/interface.md's columns), then the extension columns
-/// `anchor1_n,anchor2_n` (tension per rope at the conveyance anchors; empty but for duty cycles).
-pub fn write_history<W: Write>(out: W, rows: &[HistoryRow], anchors_n: &[[f64; 2]]) -> csv::Result<()> {
+/// `anchor1_n,anchor2_n,mid1_n,mid2_n` (tension per rope at the conveyance anchors and halfway down
+/// each hanging rope; empty but for duty cycles with the ropes' dynamics).
+pub fn write_history<W: Write>(
+    out: W,
+    rows: &[HistoryRow],
+    anchors_n: &[[f64; 2]],
+    midpoints_n: &[[f64; 2]],
+) -> csv::Result<()> {
     let mut w = csv::Writer::from_writer(out);
     w.write_record([
         "t_s",
@@ -70,10 +76,13 @@ pub fn write_history<W: Write>(out: W, rows: &[HistoryRow], anchors_n: &[[f64; 2
         "gross_slip",
         "anchor1_n",
         "anchor2_n",
+        "mid1_n",
+        "mid2_n",
     ])?;
     let opt = |v: Option<f64>| v.map_or_else(String::new, |v| v.to_string());
     for (i, r) in rows.iter().enumerate() {
         let anchors = anchors_n.get(i);
+        let mids = midpoints_n.get(i);
         w.write_record([
             r.t_s.to_string(),
             r.t1_n.to_string(),
@@ -88,7 +97,46 @@ pub fn write_history<W: Write>(out: W, rows: &[HistoryRow], anchors_n: &[[f64; 2
             r.gross_slip.to_string(),
             opt(anchors.map(|a| a[0])),
             opt(anchors.map(|a| a[1])),
+            opt(mids.map(|a| a[0])),
+            opt(mids.map(|a| a[1])),
         ])?;
+    }
+    w.flush()?;
+    Ok(())
+}
+
+/// track.csv: one row per element and reported time while the element is on the pulley.
+pub fn write_tracks<W: Write>(out: W, tracks: &[crate::model::level2::track::Track]) -> csv::Result<()> {
+    let mut w = csv::Writer::from_writer(out);
+    w.write_record([
+        "element",
+        "t_s",
+        "theta_deg",
+        "tension_n",
+        "normal_n_per_rad",
+        "friction_n_per_rad",
+        "utilization",
+        "state",
+        "contact_force_n",
+        "friction_force_n",
+        "impulse_n_s",
+    ])?;
+    for track in tracks {
+        for r in &track.rows {
+            w.write_record([
+                track.label.clone(),
+                r.t_s.to_string(),
+                r.theta_deg.to_string(),
+                r.tension_n.to_string(),
+                r.normal_n_per_rad.to_string(),
+                r.friction_n_per_rad.to_string(),
+                r.utilization.to_string(),
+                r.state.as_str().to_string(),
+                r.contact_force_n.to_string(),
+                r.friction_force_n.to_string(),
+                r.impulse_n_s.to_string(),
+            ])?;
+        }
     }
     w.flush()?;
     Ok(())

@@ -8,6 +8,7 @@
 
 pub mod accuracy;
 pub mod checklist;
+pub mod compare;
 pub mod csv_out;
 pub mod history_figure;
 pub mod html;
@@ -16,8 +17,10 @@ pub mod plot;
 pub mod plot_bench;
 pub mod plot_colorbar;
 pub mod plot_history;
+pub mod plot_panels;
 pub mod plot_series;
 pub mod plot_sweep;
+pub mod plot_track;
 pub mod plot_wrap;
 pub mod plot_zones;
 pub mod summary;
@@ -61,6 +64,8 @@ pub struct ReportOptions<'a> {
     pub plots: bool,
     /// The calculation report (`report.html`, `checks.xlsx`) of this design, when wanted.
     pub document: Option<(&'a crate::design::Design, &'a html::Provenance)>,
+    /// Figures overlaying one quantity of several scenes (`compare/`).
+    pub compare: &'a [crate::design::Compare],
 }
 
 /// Writes the complete report for `run` to `dir`, atomically.
@@ -103,6 +108,7 @@ fn write_into(dir: &Path, summary: &Summary, run: &RunResult, options: ReportOpt
             .map_err(|source| ReportError::Csv { path: path.display().to_string(), source })?;
     }
     run.scenes.par_iter().try_for_each(|scene| write_scene(dir, summary, scene, options))?;
+    compare::write(dir, options.compare, &run.scenes, options.plots)?;
     if let Some((design, provenance)) = options.document {
         write_document(dir, design, provenance, run)?;
     }
@@ -141,8 +147,18 @@ fn write_scene(
     if let Some(history) = &scene.history {
         let path = scene_dir.join("history.csv");
         let f = File::create(&path).map_err(io(&path))?;
-        csv_out::write_history(BufWriter::new(f), &history.rows, &history.anchors_n)
+        csv_out::write_history(BufWriter::new(f), &history.rows, &history.anchors_n, &history.midpoints_n)
             .map_err(|source| ReportError::Csv { path: path.display().to_string(), source })?;
+    }
+    if let Some(tracks) = &scene.tracks {
+        let path = scene_dir.join("track.csv");
+        let f = File::create(&path).map_err(io(&path))?;
+        csv_out::write_tracks(BufWriter::new(f), &tracks.tracks)
+            .map_err(|source| ReportError::Csv { path: path.display().to_string(), source })?;
+        if options.plots {
+            let title = format!("{} — rope elements of {} m through the wrap", scene.name, tracks.element_length_m);
+            plot_track::plot_tracks(&scene_dir.join("track.png"), &title, &tracks.tracks, scene.classical.mu)?;
+        }
     }
     if options.plots {
         let at = scene.t_s.map_or_else(String::new, |t| format!("t = {t} s, "));
@@ -173,6 +189,7 @@ fn write_scene(
             };
             let plot = plot_history::HistoryPlot {
                 anchors_n: &history.anchors_n,
+                midpoints_n: &history.midpoints_n,
                 code_sf: &history.code_sf,
                 minima,
                 radius_m: history.pulley_radius_m,

@@ -17,6 +17,9 @@ use std::path::Path;
 /// Anchor tensions: lighter shades of the side colours.
 const ANCHOR1: RGBColor = RGBColor(110, 160, 230);
 const ANCHOR2: RGBColor = RGBColor(240, 170, 110);
+/// Halfway down the side-1 and side-2 hanging ropes (darker than the anchors).
+const MID1: RGBColor = RGBColor(60, 110, 200);
+const MID2: RGBColor = RGBColor(225, 130, 60);
 const SPEED: RGBColor = RGBColor(20, 130, 60);
 const ACCEL: RGBColor = RGBColor(140, 60, 160);
 const SLIP_BG: RGBColor = RGBColor(255, 205, 205);
@@ -29,6 +32,9 @@ pub struct HistoryPlot<'a> {
     /// Tension per rope at the conveyance anchors per row (duty cycles; else empty), drawn
     /// thin beside T1 and T2.
     pub anchors_n: &'a [[f64; 2]],
+    /// Tension per rope halfway down each hanging rope per row (duty cycles with the ropes'
+    /// dynamics; else empty), drawn beside the anchors.
+    pub midpoints_n: &'a [[f64; 2]],
     /// The code's safety factor on rigid ropes over time, `(t, σ)` (duty cycles with the
     /// ropes' dynamics, whose rows then carry the level-4 value; else empty).
     pub code_sf: &'a [(f64, f64)],
@@ -68,8 +74,8 @@ fn slip_intervals(rows: &[HistoryRow]) -> Vec<(f64, f64)> {
     out
 }
 
-/// The tension lines: T1, T2 and, for duty cycles, the anchor tensions (kN).
-fn tension_lines(rows: &[HistoryRow], anchors_n: &[[f64; 2]]) -> Vec<Line> {
+/// The tension lines: T1, T2 and, for duty cycles, the anchor and midpoint tensions (kN).
+fn tension_lines(rows: &[HistoryRow], anchors_n: &[[f64; 2]], midpoints_n: &[[f64; 2]]) -> Vec<Line> {
     let kn = |v: f64| v / 1e3;
     let series =
         |f: &dyn Fn(&HistoryRow) -> f64| rows.iter().map(|r| (r.t_s, f(r))).filter(|p| p.1.is_finite()).collect();
@@ -77,12 +83,16 @@ fn tension_lines(rows: &[HistoryRow], anchors_n: &[[f64; 2]]) -> Vec<Line> {
         Line::new("T1 (side 1)", T1, Stroke::Solid(3), series(&|r| kn(r.t1_n))),
         Line::new("T2 (side 2)", T2, Stroke::Solid(3), series(&|r| kn(r.t2_n))),
     ];
+    let along = |values: &[[f64; 2]], side: usize| -> Vec<(f64, f64)> {
+        rows.iter().zip(values).map(|(r, a)| (r.t_s, kn(a[side]))).filter(|p| p.1.is_finite()).collect()
+    };
     if !anchors_n.is_empty() {
-        let anchor = |side: usize| -> Vec<(f64, f64)> {
-            rows.iter().zip(anchors_n).map(|(r, a)| (r.t_s, kn(a[side]))).filter(|p| p.1.is_finite()).collect()
-        };
-        lines.push(Line::new("side-1 anchor (conveyance 1)", ANCHOR1, Stroke::Solid(2), anchor(0)));
-        lines.push(Line::new("side-2 anchor (conveyance 2)", ANCHOR2, Stroke::Solid(2), anchor(1)));
+        lines.push(Line::new("side-1 anchor (conveyance 1)", ANCHOR1, Stroke::Solid(2), along(anchors_n, 0)));
+        lines.push(Line::new("side-2 anchor (conveyance 2)", ANCHOR2, Stroke::Solid(2), along(anchors_n, 1)));
+    }
+    if !midpoints_n.is_empty() {
+        lines.push(Line::new("side-1 rope, halfway down", MID1, Stroke::Solid(2), along(midpoints_n, 0)));
+        lines.push(Line::new("side-2 rope, halfway down", MID2, Stroke::Solid(2), along(midpoints_n, 1)));
     }
     lines
 }
@@ -101,7 +111,7 @@ fn draw_history(body: &Area, rows: &[HistoryRow], plot: HistoryPlot) -> Result<(
     let sf = safety_panel(rows, plot.code_sf, plot.minima);
     let sf_lines: Vec<Line> = sf.lines.iter().chain(&sf.minima).cloned().collect();
     let panels_spec: [Panel; 4] = [
-        ("tension (kN per rope)", tension_lines(rows, plot.anchors_n), None),
+        ("tension (kN per rope)", tension_lines(rows, plot.anchors_n, plot.midpoints_n), None),
         (
             "speed (m/s) / accel. (m/s²)",
             vec![

@@ -155,6 +155,48 @@ pub struct SceneJson {
     pub cost: Option<Estimate>,
     /// Duty cycles with an emergency stop: what it reached, with its masses.
     pub stop: Option<StopReport>,
+    /// Rope elements followed through the wrap (scenes with `track_*` keys only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub tracks: Option<Vec<TrackJson>>,
+}
+
+/// One followed element in summary.json: when it was on the pulley, its largest forces, its
+/// impulse and where the impulse turned down (null when it did not).
+#[derive(Debug, Clone, Serialize)]
+pub struct TrackJson {
+    pub element: String,
+    pub length_m: f64,
+    pub first_t_s: Option<f64>,
+    pub last_t_s: Option<f64>,
+    pub max_contact_force_n: f64,
+    pub max_friction_force_n: f64,
+    pub min_friction_force_n: f64,
+    pub impulse_n_s: f64,
+    pub turn_down_t_s: Option<f64>,
+    pub turn_down_theta_deg: Option<f64>,
+    pub turn_down_impulse_n_s: Option<f64>,
+}
+
+impl TrackJson {
+    fn of(t: &crate::model::level2::track::Track, length_m: f64) -> Self {
+        let fold = |f: &dyn Fn(&crate::model::level2::track::TrackRow) -> f64, max: bool| {
+            let it = t.rows.iter().map(f);
+            if max { it.fold(0.0, f64::max) } else { it.fold(0.0, f64::min) }
+        };
+        Self {
+            element: t.label.clone(),
+            length_m,
+            first_t_s: t.rows.first().map(|r| r.t_s),
+            last_t_s: t.rows.last().map(|r| r.t_s),
+            max_contact_force_n: fold(&|r| r.contact_force_n, true),
+            max_friction_force_n: fold(&|r| r.friction_force_n, true),
+            min_friction_force_n: fold(&|r| r.friction_force_n, false),
+            impulse_n_s: t.impulse_n_s(),
+            turn_down_t_s: t.turn_down.map(|d| d.t_s),
+            turn_down_theta_deg: t.turn_down.map(|d| d.theta_deg),
+            turn_down_impulse_n_s: t.turn_down.map(|d| d.impulse_n_s),
+        }
+    }
 }
 
 /// The whole summary.json document.
@@ -197,6 +239,10 @@ impl Summary {
                     fit: s.fit.clone(),
                     cost: s.cost.clone(),
                     stop: s.stop,
+                    tracks: s
+                        .tracks
+                        .as_ref()
+                        .map(|o| o.tracks.iter().map(|t| TrackJson::of(t, o.element_length_m)).collect()),
                 })
                 .collect(),
             design_checks: run.design.as_ref().map(|d| d.checks.clone()),

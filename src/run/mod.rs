@@ -9,6 +9,7 @@ mod derive;
 mod design_checks;
 mod loads;
 mod time;
+pub mod track;
 mod trip;
 
 pub use design_checks::DesignResult;
@@ -75,6 +76,16 @@ pub enum RunError {
     Level2 { scene: String, source: Level2Error },
     #[error("scene \"{scene}\": {source}")]
     Level4 { scene: String, source: Level4Error },
+    #[error(
+        "scene \"{scene}\": track_*: rope elements are followed on the rigid lining (level 2); this scene's wrap \
+         runs at level 3 on the elastic lining. Run it with --level 2, or follow the elements in a scene without the lining"
+    )]
+    TracksAtLevel3 { scene: String },
+    #[error(
+        "scene \"{scene}\": track_*: rope elements are followed by the wrap model (level 2 or more); this scene runs at \
+         level {level}. Ask for \"history\" or \"distribution\" in its outputs, or do not force --level {level}"
+    )]
+    TracksBelowLevel2 { scene: String, level: u8 },
     #[error("scene \"{scene}\": level 3: {source}")]
     Level3 { scene: String, source: Level3Error },
     #[error("scene \"{scene}\": {source}")]
@@ -110,6 +121,9 @@ pub struct HistoryOutput {
     /// Duty cycles: tension per rope at the side-1 and side-2 conveyance anchors at each row's
     /// time (N); empty for other scenes.
     pub anchors_n: Vec<[f64; 2]>,
+    /// Duty cycles with the ropes' dynamics: tension per rope halfway down the side-1 and side-2
+    /// hanging ropes at each row's time (N); empty otherwise.
+    pub midpoints_n: Vec<[f64; 2]>,
     /// Duty cycles with the ropes' dynamics: the code's safety factor on rigid ropes over time,
     /// `(t, σ)`, beside the rows' level-4 value; empty otherwise.
     pub code_sf: Vec<(f64, f64)>,
@@ -153,6 +167,8 @@ pub struct SceneResult {
     /// The masses hanging below the tangent points at the state the margins are measured from
     /// (kg, all ropes): a mass-loaded scene's, a duty cycle's at its worst instant.
     pub hanging_kg: Option<[f64; 2]>,
+    /// Rope elements followed through the wrap (time scenes whose sheet asks for them).
+    pub tracks: Option<track::TrackOutput>,
 }
 
 impl SceneResult {
@@ -284,6 +300,7 @@ fn empty(scene: &Scene, plan: Plan, classical: Classical) -> SceneResult {
         slip_onset: None,
         rope_dynamics_safety_factor: None,
         hanging_kg: None,
+        tracks: None,
     }
 }
 

@@ -23,7 +23,19 @@ pub(super) fn run_history(
     options: Options,
 ) -> Result<SceneResult, RunError> {
     let output = level2::Output { snapshots_s: &history.snapshots_s, step_s: history.output_step_s, sample_rows: true };
-    let input = Samples { samples: &history.samples, accel_m_s2: None, direction_before: history.direction, output };
+    let travel = match history.samples.iter().map(|s| s.speed_m_s).find(|v| *v != 0.0) {
+        Some(v) if v < 0.0 => Direction::Lower,
+        Some(_) => Direction::Lift,
+        None => history.direction,
+    };
+    let input = Samples {
+        samples: &history.samples,
+        accel_m_s2: None,
+        direction_before: history.direction,
+        travel,
+        side1_length_m: None,
+        output,
+    };
     run_samples(design, scene, input, plan, options)
 }
 
@@ -64,13 +76,21 @@ pub(super) fn run_duty_cycle(
     let end_s = trip.samples.last().map_or(0.0, |s| s.t_s);
     let snapshots_s: Vec<f64> = cycle.snapshots_s.iter().copied().filter(|t| *t <= end_s).collect();
     let output = level2::Output { snapshots_s: &snapshots_s, step_s: Some(cycle.output_step_s), sample_rows: false };
-    let input = Samples { samples: &trip.samples, accel_m_s2: Some(&accel), direction_before: before, output };
+    let input = Samples {
+        samples: &trip.samples,
+        accel_m_s2: Some(&accel),
+        direction_before: before,
+        travel: cycle.direction,
+        side1_length_m: Some(params.side1_length0_m),
+        output,
+    };
     let mut result = run_samples(design, scene, input, plan, options)?;
     if let Some((dynamics, rigid)) = &dynamics {
         let code = trip::code_classical(design, rigid);
         result.rope_dynamics_safety_factor = trip::code_and_rope_dynamics(design, &mut result.classical, &code);
         if let Some(history) = &mut result.history {
             history.anchors_n = history.rows.iter().map(|r| level4::anchors_at(dynamics, r.t_s)).collect();
+            history.midpoints_n = history.rows.iter().map(|r| level4::midpoints_at(dynamics, r.t_s)).collect();
             history.code_sf = trip::code_series(design, rigid);
         }
     }
@@ -109,6 +129,10 @@ struct Samples<'a> {
     accel_m_s2: Option<&'a [f64]>,
     /// Which way the rope ran before the first sample.
     direction_before: Direction,
+    /// Which way it runs in the scene (its first motion).
+    travel: Direction,
+    /// Hanging length of side 1 at the first sample (m), when the scene has a hoist.
+    side1_length_m: Option<f64>,
     /// When the wrap reports (rows and snapshots).
     output: level2::Output<'a>,
 }
@@ -122,7 +146,7 @@ fn run_samples(
     plan: Plan,
     options: Options,
 ) -> Result<SceneResult, RunError> {
-    let Samples { samples, accel_m_s2, direction_before: direction, output } = input;
+    let Samples { samples, accel_m_s2, direction_before: direction, travel, side1_length_m, output } = input;
     let states: Vec<(f64, EndState)> = samples
         .iter()
         .enumerate()
@@ -142,6 +166,9 @@ fn run_samples(
     result.t_s = samples.last().map(|s| s.t_s);
     result.worst = level0::worst_instant(design, &states);
     if result.plan.level < 2 {
+        if scene.tracks.is_some() {
+            return Err(RunError::TracksBelowLevel2 { scene: scene.name.clone(), level: result.plan.level });
+        }
         return Ok(result);
     }
     let first = states[0].1;
@@ -174,11 +201,28 @@ fn run_samples(
         map: run.map,
         stats: run.stats,
         anchors_n: Vec::new(),
+        midpoints_n: Vec::new(),
         code_sf: Vec::new(),
         pulley_radius_m: 0.5 * design.pulley.diameter_m,
     });
     result.nodes = Some(options.nodes);
+    if let Some(tracks) = &scene.tracks {
+        if planner::wrap_level(&result.plan, design.lining.is_some()) == 3 {
+            return Err(RunError::TracksAtLevel3 { scene: scene.name.clone() });
+        }
+        let start = level2_initial(design, initial);
+        let out = super::track::run(design, scene, tracks, samples, start, travel, side1_length_m, options)?;
+        result.tracks = Some(out);
+    }
     Ok(result)
+}
+
+/// The rigid-lining state a history starts from.
+fn level2_initial(design: &Design, initial: Initial) -> Profile {
+    match initial {
+        Initial::Uniform(t) => Profile::uniform(design.pulley.wrap_angle_rad, t, design.pulley.mu),
+        Initial::Rolling { level1, .. } => Profile::from_field(&level1.field, design.pulley.mu),
+    }
 }
 
 /// The wrap's state when a history starts.
@@ -235,10 +279,7 @@ pub(super) fn wrap_history(
         }
         (3, None) => Err(PlanError::NoLining { scene: scene.name.clone() }.into()),
         _ => {
-            let initial = match initial {
-                Initial::Uniform(t) => Profile::uniform(alpha, t, design.pulley.mu),
-                Initial::Rolling { level1, .. } => Profile::from_field(&level1.field, design.pulley.mu),
-            };
+            let initial = level2_initial(design, initial);
             level2::run_history(params(design, options.solver), samples, output, initial, options.nodes)
                 .map(|run| (run, None))
                 .map_err(|source| RunError::Level2 { scene: scene.name.clone(), source })

@@ -5,6 +5,7 @@
 //! not hide errors in the others; then every value is checked (finite, in range, consistent).
 //! Each diagnostic names the file, line:column, scene, key path, the bad value and what is allowed.
 
+mod compare;
 mod diag;
 mod document;
 mod history;
@@ -15,6 +16,7 @@ mod machine;
 mod outputs;
 mod raw;
 mod requirements;
+mod track;
 mod validate;
 
 pub use diag::{Diagnostic, SheetError};
@@ -40,6 +42,7 @@ const TOP_LEVEL_KEYS: &[&str] = &[
     "brake",
     "load_cases",
     "document",
+    "compare",
 ];
 
 /// Reads and validates a sheet file.
@@ -107,6 +110,10 @@ pub fn parse(file: &str, text: &str) -> Result<Design, SheetError> {
             "brake" => {
                 sections.present.push("brake");
                 sections.brake = section(&mut c, value, "brake");
+            }
+            "compare" => {
+                sections.present.push("compare");
+                sections.compare = section(&mut c, value, "compare");
             }
             "load_cases" => {
                 sections.present.push("load_cases");

@@ -110,6 +110,12 @@ pub struct RawScene {
     pub time_step_s: Option<Spanned<f64>>,
     pub return_after_s: Option<Spanned<f64>>,
     pub outputs: Option<Spanned<Vec<Spanned<String>>>>,
+    /// Rope elements followed through the wrap (time scenes).
+    pub track_entry_s: Option<Spanned<Vec<f64>>>,
+    pub track_start_deg: Option<Spanned<Vec<f64>>>,
+    pub track_anchor_m: Option<Spanned<Vec<f64>>>,
+    pub track_length_m: Option<Spanned<f64>>,
+    pub track_step_s: Option<Spanned<f64>>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -147,4 +153,13 @@ pub struct RawLining {
     pub shear_modulus_pa: Option<Spanned<f64>>,
     pub contact_width_m: Option<Spanned<f64>>,
     pub rope_inertia: Option<Spanned<bool>>,
+}
+
+/// A `[[compare]]` table: a figure overlaying one quantity of several scenes.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawCompare {
+    pub name: Option<Spanned<String>>,
+    pub scenes: Option<Spanned<Vec<Spanned<String>>>>,
+    pub quantity: Option<Spanned<String>>,
 }

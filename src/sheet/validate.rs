@@ -36,6 +36,7 @@ pub struct Sections {
     pub brake: Option<Spanned<RawBrake>>,
     pub load_cases: Option<Spanned<RawLoadCases>>,
     pub document: Option<Spanned<super::document::RawDocument>>,
+    pub compare: Option<Spanned<Vec<Spanned<super::raw::RawCompare>>>>,
 }
 
 /// One `[[scene]]` table: its label (`scene[i]`) and contents when they deserialized.
@@ -182,6 +183,7 @@ pub fn design(c: &mut Collector, s: Sections) -> Option<Design> {
     };
     let lining = super::lining::lining_section(c, &s.lining, &s.present, &s.rope, rope.as_ref());
     let document = super::document::document(c, &s.document);
+    let compare = super::compare::compare(c, &s.compare, s.present.contains(&"compare"), scenes.as_deref());
     Some(Design {
         sheet: c.file.to_string(),
         title,
@@ -195,6 +197,7 @@ pub fn design(c: &mut Collector, s: Sections) -> Option<Design> {
         lining: lining?,
         machine: machine?,
         load_cases: load_cases?,
+        compare: compare?,
     })
 }
 
@@ -317,7 +320,7 @@ pub(super) fn direction_keyword(c: &mut Collector, at: At, d: &Spanned<String>) 
 }
 
 /// Scene names become directory names in the report.
-fn valid_scene_name(name: &str) -> bool {
+pub(super) fn valid_scene_name(name: &str) -> bool {
     !name.is_empty()
         && name.len() <= 100
         && !name.starts_with('.')
@@ -413,8 +416,9 @@ fn scenes(
             }
         };
         let outputs = kind.as_ref().and_then(|k| super::outputs::outputs(c, at, &raw.outputs, k));
-        match (name, kind, outputs) {
-            (Some(name), Some(kind), Some(outputs)) => out.push(Scene { name, kind, outputs }),
+        let tracks = kind.as_ref().and_then(|k| super::track::tracks(c, at, raw, k));
+        match (name, kind, outputs, tracks) {
+            (Some(name), Some(kind), Some(outputs), Some(tracks)) => out.push(Scene { name, kind, outputs, tracks }),
             _ => all_ok = false,
         }
     }

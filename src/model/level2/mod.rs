@@ -16,6 +16,8 @@ pub mod qp;
 pub mod repair;
 pub mod schedule;
 pub mod simulate;
+pub mod track;
+pub mod turn;
 
 use crate::contact::ContactLaw;
 use crate::derived::{self, WrapSummary};

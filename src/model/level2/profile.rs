@@ -103,6 +103,29 @@ impl Profile {
         self.piece(i).tension_n(theta_rad)
     }
 
+    /// The piece holding θ (the first whose end reaches it), in the wrap's frame.
+    pub fn piece_at(&self, theta_rad: f64) -> Piece {
+        let xi = theta_rad - self.phi_rad;
+        self.piece(self.pieces.partition_point(|p| p.theta1_rad < xi).min(self.pieces.len() - 1))
+    }
+
+    /// `∫_a^b T dθ` over `0 ≤ a ≤ b ≤ α` (N·rad), exact piece by piece.
+    pub fn integral_n_rad(&self, a: f64, b: f64) -> f64 {
+        let first = self.pieces.partition_point(|p| p.theta1_rad < a - self.phi_rad).min(self.pieces.len() - 1);
+        let mut sum = 0.0;
+        for i in first..self.pieces.len() {
+            let p = self.piece(i);
+            let (lo, hi) = (p.theta0_rad.max(a), p.theta1_rad.min(b));
+            if hi > lo {
+                sum += p.integral_n_rad(lo, hi);
+            }
+            if p.theta1_rad >= b {
+                break;
+            }
+        }
+        sum
+    }
+
     /// Tension at the θ = 0 end and at the θ = α end.
     pub fn end_tensions_n(&self) -> (f64, f64) {
         let m = self.pieces.len();

@@ -1,0 +1,250 @@
+//! Rope elements followed through the wrap: what one piece of rope feels as the pulley carries
+//! it from the entry to the exit (docs/physics.md, "Rope elements through the wrap").
+//!
+//! On a rigid lining a material point of the rope keeps its coordinate `ξ = θ − φ` ([`super::turn`]),
+//! so an element of length ℓ (`2h = ℓ/R` rad) centred at `φ_e` covers `θ ∈ [φ(t) − φ_e − h,
+//! φ(t) − φ_e + h]`. While any of it is on the pulley (clipped to `[a, b] ⊂ [0, α]`) the wrap acts
+//! on it with
+//!
+//! - the friction force `F = ∫_a^b q dθ = T(a) − T(b)` (N, positive in +θ; `dT/dθ = −q`),
+//! - the contact force `N = ∫_a^b (T − m'v²) dθ` (N),
+//!
+//! both exact from the closed-form state, and the running friction impulse `J(t) = ∫ F dt`
+//! (trapezoidal rule on the track's rows). Because `F` telescopes, elements that tile the rope
+//! carry `Σ F = T1 − T2` at every instant. Per radian, at the element's centre (at the nearer
+//! tangent point while the centre is off the pulley): tension, contact force `n`, friction `q`,
+//! utilization `|q|/(μn)` and state.
+//!
+//! The impulse turns down where `F` changes from the sign of the motion to the other sign,
+//! beyond 0.001·μN either way (the paper's reading of the demarcation point on an element): that instant is found by Brent's
+//! method on `F(t)` between the two rows that bracket it, each trial advancing a copy of the
+//! simulation from the earlier row.
+
+use super::simulate::{Params, Simulation};
+use super::turn::PulleyTurn;
+use super::{Level2Error, Profile};
+use crate::contact::{ContactLaw, NodeState};
+use crate::design::HistorySample;
+use crate::roots::{self, RootStats};
+
+/// Friction below this fraction of its Coulomb bound counts as none (the arcs' threshold).
+const ARC_THRESHOLD: f64 = 1e-3;
+
+/// Tolerance of the turn-down instant (s).
+pub const TURN_DOWN_TOL_S: f64 = 1e-9;
+
+/// A rope element to follow: the turn φ_e at which its centre is (or would be) at θ = 0.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Element {
+    pub label: String,
+    pub phi_rad: f64,
+}
+
+/// One row of track.csv.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TrackRow {
+    pub t_s: f64,
+    /// Angle of the element's centre (deg; outside `[0, α]` while only part of it is on the pulley).
+    pub theta_deg: f64,
+    pub tension_n: f64,
+    pub normal_n_per_rad: f64,
+    pub friction_n_per_rad: f64,
+    pub utilization: f64,
+    pub state: NodeState,
+    /// Forces on the whole element (N).
+    pub contact_force_n: f64,
+    pub friction_force_n: f64,
+    /// Running friction impulse since the element first touched the pulley (N·s).
+    pub impulse_n_s: f64,
+}
+
+/// Where an element's friction impulse turns down.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TurnDown {
+    pub t_s: f64,
+    pub theta_deg: f64,
+    pub impulse_n_s: f64,
+}
+
+/// One element's track.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Track {
+    pub label: String,
+    pub rows: Vec<TrackRow>,
+    pub turn_down: Option<TurnDown>,
+}
+
+impl Track {
+    /// The impulse at the last row (N·s).
+    pub fn impulse_n_s(&self) -> f64 {
+        self.rows.last().map_or(0.0, |r| r.impulse_n_s)
+    }
+}
+
+/// Follows `elements` of length `element_length_m` through the history from `initial`, with a
+/// row every `step_s` (and at every sample, every entry and exit of an element).
+pub fn run_tracks(
+    params: Params,
+    samples: &[HistorySample],
+    initial: Profile,
+    elements: &[Element],
+    element_length_m: f64,
+    step_s: f64,
+) -> Result<(Vec<Track>, RootStats), Level2Error> {
+    let turn = PulleyTurn::new(samples, params.radius_m);
+    let half = 0.5 * element_length_m / params.radius_m;
+    let alpha = params.wrap_angle_rad;
+    let times = grid(samples, &turn, elements, half, alpha, step_s);
+    let mut sim = Simulation::new(params, samples, initial);
+    sim.settle()?;
+    let mut tracks: Vec<Track> =
+        elements.iter().map(|e| Track { label: e.label.clone(), rows: Vec::new(), turn_down: None }).collect();
+    let mut roots = RootStats::default();
+    // Tolerance of "on the pulley" at an entry or exit instant (round-off of φ).
+    let slack = 1e-9 * (1.0 + alpha);
+    let mut before: Option<(f64, Simulation)> = None;
+    for &t in &times {
+        sim.advance_to(t)?;
+        let phi = turn.at(t);
+        let mut any = false;
+        for (e, track) in elements.iter().zip(tracks.iter_mut()) {
+            let centre = phi - e.phi_rad;
+            if centre < -half - slack || centre > alpha + half + slack {
+                continue;
+            }
+            any = true;
+            let row = row_at(&sim, t, centre, half, track.rows.last());
+            let on = centre >= half && centre <= alpha - half;
+            if track.turn_down.is_none()
+                && let (Some(prev), Some((t_before, earlier))) = (track.rows.last(), before.as_ref())
+                && prev.t_s == *t_before
+                && turns_down(prev, &row, on, params.mu, turn.omega_per_s(0.5 * (prev.t_s + t)))
+            {
+                let probe = Probe { sim: earlier, turn: &turn, element: e, half };
+                track.turn_down = Some(probe.turn_down(prev, t, &mut roots)?);
+            }
+            track.rows.push(row);
+        }
+        // The state a turn-down search starts from (only needed while an element is on the pulley).
+        before = any.then(|| (t, sim.clone()));
+    }
+    Ok((tracks, roots))
+}
+
+/// Whether the friction force on an element goes from the sign of the motion `omega` to the
+/// other sign between rows `a` and `b`. As for the arcs of the wrap, friction counts only
+/// beyond 0.001 of its Coulomb bound μN: from above +0.001·μN (along the motion) to below
+/// −0.001·μN, or to exactly zero while the element lies wholly on the pulley (`on`: a stuck
+/// stretch without friction; an element leaving the pulley loses its force too, but that is no
+/// reversal).
+fn turns_down(a: &TrackRow, b: &TrackRow, on: bool, mu: f64, omega: f64) -> bool {
+    let s = if omega >= 0.0 { 1.0 } else { -1.0 };
+    let along = |r: &TrackRow| s * r.friction_force_n > ARC_THRESHOLD * mu * r.contact_force_n;
+    let against = |r: &TrackRow| s * r.friction_force_n < -ARC_THRESHOLD * mu * r.contact_force_n;
+    along(a) && (against(b) || (on && b.friction_force_n == 0.0))
+}
+
+/// The times of the rows: every `step_s` from the first sample, every sample, and every instant
+/// an element's ends cross a tangent point; sorted, no repeats.
+fn grid(
+    samples: &[HistorySample],
+    turn: &PulleyTurn,
+    elements: &[Element],
+    half: f64,
+    alpha: f64,
+    step_s: f64,
+) -> Vec<f64> {
+    let (t0, t1) = (samples[0].t_s, samples[samples.len() - 1].t_s);
+    let steps = ((t1 - t0) / step_s).floor() as usize;
+    let mut times: Vec<f64> = (0..=steps).map(|k| t0 + k as f64 * step_s).filter(|t| *t < t1).collect();
+    times.extend(samples.iter().map(|s| s.t_s));
+    times.push(t1);
+    for e in elements {
+        for target in [e.phi_rad - half, e.phi_rad + alpha + half] {
+            times.extend(turn.crossings(target, t0, t1));
+        }
+    }
+    times.sort_by(f64::total_cmp);
+    times.dedup();
+    times
+}
+
+/// The part `[a, b]` of the wrap an element centred at `centre` covers (empty: a ≥ b).
+fn covered(centre: f64, half: f64, alpha: f64) -> (f64, f64) {
+    ((centre - half).clamp(0.0, alpha), (centre + half).clamp(0.0, alpha))
+}
+
+/// The friction force on the element centred at `centre` (N).
+fn friction_force_n(sim: &Simulation, centre: f64, half: f64) -> f64 {
+    let (a, b) = covered(centre, half, sim.params.wrap_angle_rad);
+    if b <= a { 0.0 } else { sim.profile.tension_n(a) - sim.profile.tension_n(b) }
+}
+
+/// A row of the element centred at `centre` in the state `sim` holds at `t`, its impulse
+/// carried on from `prev` (trapezoidal rule).
+fn row_at(sim: &Simulation, t: f64, centre: f64, half: f64, prev: Option<&TrackRow>) -> TrackRow {
+    let alpha = sim.params.wrap_angle_rad;
+    let law = ContactLaw::new(sim.params.mu, sim.centrifugal_n);
+    let (a, b) = covered(centre, half, alpha);
+    let (friction_force_n, contact_force_n) = if b <= a {
+        (0.0, 0.0)
+    } else {
+        let profile = &sim.profile;
+        (profile.tension_n(a) - profile.tension_n(b), profile.integral_n_rad(a, b) - sim.centrifugal_n * (b - a))
+    };
+    let theta = centre.clamp(0.0, alpha);
+    let (tension_n, q) = sim.profile.piece_at(theta).tension_friction(theta);
+    let friction_n_per_rad = law.clamp_friction(tension_n, q);
+    let utilization = law.utilization_of(tension_n, friction_n_per_rad);
+    let impulse_n_s = prev.map_or(0.0, |p| p.impulse_n_s + 0.5 * (p.friction_force_n + friction_force_n) * (t - p.t_s));
+    TrackRow {
+        t_s: t,
+        theta_deg: centre.to_degrees(),
+        tension_n,
+        normal_n_per_rad: law.normal_n_per_rad(tension_n),
+        friction_n_per_rad,
+        utilization,
+        state: law.state(utilization, friction_n_per_rad),
+        contact_force_n,
+        friction_force_n,
+        impulse_n_s,
+    }
+}
+
+/// Evaluates an element's friction force between two rows by advancing a copy of the state.
+struct Probe<'a, 'b> {
+    sim: &'a Simulation<'b>,
+    turn: &'a PulleyTurn,
+    element: &'a Element,
+    half: f64,
+}
+
+impl Probe<'_, '_> {
+    /// The friction force at `t` (≥ the copy's time); NaN where the model fails.
+    fn force_n(&self, t: f64) -> f64 {
+        let mut sim = self.sim.clone();
+        match sim.advance_to(t) {
+            Ok(()) => friction_force_n(&sim, self.turn.at(t) - self.element.phi_rad, self.half),
+            Err(_) => f64::NAN,
+        }
+    }
+
+    /// The first instant after `prev` at which the force leaves the sign of the motion: the root
+    /// of `s·F` (a force that vanishes over a stuck stretch counts as the other sign, so that
+    /// the root is where it first reaches zero).
+    fn turn_down(&self, prev: &TrackRow, t1: f64, roots: &mut RootStats) -> Result<TurnDown, Level2Error> {
+        let s = if self.turn.omega_per_s(0.5 * (prev.t_s + t1)) >= 0.0 { 1.0 } else { -1.0 };
+        let floor = 1e-12 * prev.friction_force_n.abs();
+        let f = |t: f64| {
+            let g = s * self.force_n(t);
+            if g > 0.0 { g } else { g - floor }
+        };
+        let t = roots::bracketed(f, prev.t_s, t1, TURN_DOWN_TOL_S, roots)?;
+        // F is linear in t near its zero: the impulse gained since `prev` is F's triangle.
+        Ok(TurnDown {
+            t_s: t,
+            theta_deg: (self.turn.at(t) - self.element.phi_rad).to_degrees(),
+            impulse_n_s: prev.impulse_n_s + 0.5 * prev.friction_force_n * (t - prev.t_s),
+        })
+    }
+}

@@ -1,0 +1,75 @@
+//! Figures of stacked panels of lines over a common x axis: `track.png` (rope elements through
+//! the wrap) and the `[[compare]]` figures that overlay one quantity from several scenes.
+
+use super::plot::{Area, PlotError, draw_legend, e, padded_range, render, stacked_mesh, stacked_panel};
+use plotters::element::DashedPathElement;
+use plotters::prelude::*;
+use std::path::Path;
+
+/// Colours of successive lines (elements, scenes): the sweep figures' palette.
+pub(super) use super::plot_sweep::PALETTE;
+
+/// One line of a panel.
+#[derive(Debug, Clone)]
+pub struct Line {
+    pub label: String,
+    pub color: RGBColor,
+    pub points: Vec<(f64, f64)>,
+    /// Dashed (a bound or a reference) rather than solid.
+    pub dashed: bool,
+    /// Points marked with a circle (an event on the line), not joined.
+    pub markers: bool,
+}
+
+impl Line {
+    pub fn solid(label: impl Into<String>, color: RGBColor, points: Vec<(f64, f64)>) -> Self {
+        Self { label: label.into(), color, points, dashed: false, markers: false }
+    }
+}
+
+/// One panel: its y description and lines.
+#[derive(Debug, Clone)]
+pub struct Panel {
+    pub y_desc: String,
+    pub lines: Vec<Line>,
+}
+
+/// Draws `panels` stacked over the x range of their points, `x_desc` under the bottom one.
+pub fn plot_panels(path: &Path, title: &str, x_desc: &str, panels: &[Panel]) -> Result<(), PlotError> {
+    let height = 120 + 330 * panels.len().max(1) as u32;
+    render(path, (1200, height), title, |body| draw(body, x_desc, panels))
+}
+
+fn draw(body: &Area, x_desc: &str, panels: &[Panel]) -> Result<(), String> {
+    let areas = body.split_evenly((panels.len().max(1), 1));
+    let xs = panels.iter().flat_map(|p| p.lines.iter().flat_map(|l| l.points.iter().map(|q| q.0)));
+    let x = padded_range(xs, 0.0);
+    let x = if x == (0.0, 1.0) { x } else { (x.0 + 0.05 * (x.1 - x.0) / 1.12, x.1 - 0.05 * (x.1 - x.0) / 1.12) };
+    for (i, (area, panel)) in areas.iter().zip(panels).enumerate() {
+        let y = padded_range(panel.lines.iter().flat_map(|l| l.points.iter().map(|p| p.1)), 0.01);
+        let bottom = i + 1 == panels.len();
+        let mut chart = stacked_panel(area, x, y, bottom)?;
+        stacked_mesh(&mut chart, x, y, bottom.then_some(x_desc), &panel.y_desc)?;
+        for line in &panel.lines {
+            let color = line.color;
+            let points: Vec<(f64, f64)> =
+                line.points.iter().copied().filter(|p| p.0.is_finite() && p.1.is_finite()).collect();
+            let drawn = if line.markers {
+                chart.draw_series(points.iter().map(|&p| Circle::new(p, 6, color.filled()))).map_err(e)?
+            } else if line.dashed {
+                chart
+                    .draw_series(std::iter::once(DashedPathElement::new(points, 8, 5, color.stroke_width(2))))
+                    .map_err(e)?
+            } else {
+                chart.draw_series(LineSeries::new(points, color.stroke_width(3))).map_err(e)?
+            };
+            if !line.label.is_empty() {
+                drawn
+                    .label(line.label.clone())
+                    .legend(move |(px, py)| Rectangle::new([(px, py - 3), (px + 24, py + 3)], color.filled()));
+            }
+        }
+        draw_legend(&mut chart, SeriesLabelPosition::UpperRight, 15)?;
+    }
+    Ok(())
+}
