@@ -33,7 +33,7 @@ fn tracks(d: &Design) -> Vec<Track> {
     run_one(d).expect("run").tracks.expect("the scene follows elements").tracks
 }
 
-/// Steady rolling, v = 5 m/s (ω = 2 rad/s), T1 = 2e5 N, T2 = 1.6e5 N: creep theory (MODEL §4)
+/// Steady rolling, v = 5 m/s (ω = 2 rad/s), T1 = 2e5 N, T2 = 1.6e5 N: creep theory (docs/physics.md §4)
 /// puts the idle arc at the entry, T = T1 on [0, α − β], and the active arc [α − β, α] with
 /// n = T − m'v² = n1·e^{−μ(θ − (α − β))}, q = μn (positive friction), where m'v² = 250 N,
 /// n1 = 199 750, n2 = 159 750, β = ln(n1/n2)/μ = 0.893 93 rad = 51.22°.
@@ -111,7 +111,7 @@ fn an_element_through_steady_rolling_follows_creep_theory() {
 }
 
 /// At rest the rope does not move: an element keeps its angle while T1 is raised from T0 to
-/// k·T0 = 1.15·T0 (MODEL §5): at the end the slip zone at the side-1 end is
+/// k·T0 = 1.15·T0 (docs/physics.md §5): at the end the slip zone at the side-1 end is
 /// [0, ln(k)/μ] = [0, 32.03°] with T = k·T0·e^{−μθ}, q = μT, and the rope beyond it keeps T0, q = 0.
 #[test]
 fn an_element_at_rest_stays_at_one_angle() {
@@ -222,7 +222,7 @@ fn tracks_mirror_when_the_sides_swap() {
 /// The paper's picture on one element: rope entering at constant speed v = 2 m/s (ω = 0.8 rad/s)
 /// while T1 rises at Ṫ1 = 1000 N/s from 1.8e5 N and T2 = 2e5 N holds. Stuck rope keeps the
 /// entry tension of its instant, T = T1(t − θ/ω), so it carries positive friction q = Ṫ1/ω
-/// (MODEL §9); at the exit the reverse slip zone holds T = c + n2·e^{−μ(α − θ)} from its stick
+/// (docs/physics.md §9); at the exit the reverse slip zone holds T = c + n2·e^{−μ(α − θ)} from its stick
 /// boundary θ_b, where the two meet. An element of ℓ = 0.5 m (h = 0.1 rad)
 /// feels F = T(a) − T(b) > 0 until enough of it is in the reverse zone: the impulse turns down
 /// at the root of F(t), found here by bisection on this closed form.
