@@ -1,10 +1,10 @@
 //! `loads` scenes: level 0, creep theory (level 1), or a steady run-through at level 2–3.
 
-use super::time::{Initial, wrap_history};
+use super::wrap_run::{Initial, steady_run, wrap_history};
 use super::{Options, RunError, SceneResult, WrapResult, empty};
 use crate::derived;
-use crate::design::{Design, Direction, EndLoads, HistorySample, LoadsScene, Scene};
-use crate::model::level0::{self, EndState};
+use crate::design::{Design, EndLoads, LoadsScene, Scene};
+use crate::model::level0;
 use crate::model::level1;
 use crate::model::level2;
 use crate::planner::Plan;
@@ -64,23 +64,4 @@ pub(super) fn run_loads(
         }
     }
     Ok(result)
-}
-
-/// Creep speed used to reach the state "after the rope last ran" for a scene at rest (m/s):
-/// slow enough that its m'v² (1e-6 m²/s² times m') is negligible against the tension, as the
-/// state at rest assumes. Neither level 2's nor level 3's cost depends on the speed.
-const CREEP_SPEED_M_S: f64 = 1e-3;
-
-/// A history that runs the rope 1.5 wrap lengths through the wrap at constant loads, ending
-/// at the scene's own speed.
-pub(super) fn steady_run(design: &Design, state: &EndState, direction: Direction) -> Vec<HistorySample> {
-    let run_speed = if state.speed_m_s != 0.0 { state.speed_m_s } else { CREEP_SPEED_M_S * direction.sign() };
-    let length_m = 1.5 * design.pulley.wrap_angle_rad * 0.5 * design.pulley.diameter_m;
-    let t_run = length_m / run_speed.abs();
-    let at = |t_s: f64, speed_m_s: f64| HistorySample { t_s, t1_n: state.t1_n, t2_n: state.t2_n, speed_m_s };
-    let mut samples = vec![at(0.0, run_speed), at(t_run, run_speed)];
-    if state.speed_m_s == 0.0 {
-        samples.push(at(t_run * 1.001, 0.0));
-    }
-    samples
 }

@@ -11,6 +11,7 @@ mod loads;
 mod time;
 pub mod track;
 mod trip;
+mod wrap_run;
 
 pub use design_checks::DesignResult;
 pub use trip::ROPE_DYNAMICS_CHECK;

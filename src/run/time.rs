@@ -2,18 +2,17 @@
 //! tensions come from the suspended ropes of level 4), level 0 over every sample, then the wrap
 //! through them at level 2 or 3.
 
-use super::loads::steady_run;
 use super::trip::{self, Trip};
-use super::{HistoryOutput, Options, RunError, SceneResult, WrapResult, empty, params};
+use super::wrap_run::{Initial, level2_initial, wrap_history};
+use super::{HistoryOutput, Options, RunError, SceneResult, WrapResult, empty};
 use crate::design::{Design, Direction, DutyCycleScene, HistorySample, HistoryScene, Hoist, Scene};
 use crate::dynamics::Kinematics;
 use crate::model::level0::{self, EndState};
 use crate::model::level1;
-use crate::model::level2::{self, Profile};
-use crate::model::level3;
+use crate::model::level2;
 use crate::model::level4::{self, Level4Error};
 use crate::model::stop;
-use crate::planner::{self, Plan, PlanError};
+use crate::planner::{self, Plan};
 
 pub(super) fn run_history(
     design: &Design,
@@ -215,74 +214,4 @@ fn run_samples(
         result.tracks = Some(out);
     }
     Ok(result)
-}
-
-/// The rigid-lining state a history starts from.
-fn level2_initial(design: &Design, initial: Initial) -> Profile {
-    match initial {
-        Initial::Uniform(t) => Profile::uniform(design.pulley.wrap_angle_rad, t, design.pulley.mu),
-        Initial::Rolling { level1, .. } => Profile::from_field(&level1.field, design.pulley.mu),
-    }
-}
-
-/// The wrap's state when a history starts.
-#[derive(Clone, Copy)]
-pub(super) enum Initial<'a> {
-    /// Uniform tension (N).
-    Uniform(f64),
-    /// The state after the rope last ran in `direction` under the loads `first`: creep
-    /// theory's steady rolling on a rigid lining (level 2); on an elastic lining (level 3) the
-    /// state those loads reach when the rope runs 1.5 wrap lengths through the wrap.
-    Rolling { level1: &'a level1::SteadyRolling, first: EndState, direction: Direction },
-}
-
-/// Runs the wrap through a history at the plan's wrap level (2, or 3 on an elastic lining), with
-/// the level-3 solver counters (its run-in included) when it ran at level 3.
-pub(super) fn wrap_history(
-    design: &Design,
-    scene: &Scene,
-    plan: &Plan,
-    samples: &[HistorySample],
-    output: level2::Output,
-    initial: Initial,
-    options: Options,
-) -> Result<(level2::HistoryRun, Option<level3::Level3Stats>), RunError> {
-    let alpha = design.pulley.wrap_angle_rad;
-    match (planner::wrap_level(plan, design.lining.is_some()), design.lining) {
-        (3, Some(lining)) => {
-            let params = level3::Params {
-                wrap: params(design, options.solver),
-                shear_stiffness_n_per_m2: lining.shear_stiffness_n_per_m2,
-                bending_stiffness_n_m2: design.rope.bending_stiffness_n_m2,
-                rope_inertia: lining.rope_inertia,
-                max_iter: level3::MAX_ITER,
-                travel_step_rad: level3::TRAVEL_STEP_RAD,
-            };
-            let err = |source| RunError::Level3 { scene: scene.name.clone(), source };
-            let mut stats = level3::Level3Stats::default();
-            let initial = match initial {
-                Initial::Uniform(t) => level3::State::uniform(alpha, options.nodes, t),
-                Initial::Rolling { first, direction, .. } => {
-                    let run_in = steady_run(design, &first, direction);
-                    let entry = if run_in[0].speed_m_s >= 0.0 { first.t1_n } else { first.t2_n };
-                    let start = level3::State::uniform(alpha, options.nodes, entry);
-                    let mut sim = level3::Simulation::new(params, &run_in, start).map_err(err)?;
-                    sim.settle().map_err(err)?;
-                    sim.advance_to(run_in.last().map_or(0.0, |s| s.t_s)).map_err(err)?;
-                    stats = sim.level3;
-                    sim.state
-                }
-            };
-            let (run, run_stats) = level3::run_history(params, samples, output, initial).map_err(err)?;
-            stats.add(&run_stats);
-            Ok((run, Some(stats)))
-        }
-        (3, None) => Err(PlanError::NoLining { scene: scene.name.clone() }.into()),
-        _ => {
-            let initial = level2_initial(design, initial);
-            level2::run_history(params(design, options.solver), samples, output, initial, options.nodes)
-                .map(|run| (run, None))
-                .map_err(|source| RunError::Level2 { scene: scene.name.clone(), source })
-        }
-    }
 }
