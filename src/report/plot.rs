@@ -34,7 +34,9 @@ const SLIP_NEG: RGBColor = RGBColor(200, 224, 255);
 #[derive(Debug, thiserror::Error)]
 #[error("cannot draw {path}: {message}")]
 pub struct PlotError {
+    /// The figure's file.
     pub path: String,
+    /// What the drawing backend reported.
     pub message: String,
 }
 
