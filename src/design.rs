@@ -6,19 +6,26 @@ pub use crate::requirements::{DEFAULT_SAFETY_FACTOR_SOURCE, Limit, Requirements,
 /// Standard gravity, used unless the sheet gives `g_m_s2`.
 pub const STANDARD_GRAVITY_M_S2: f64 = 9.81;
 
+/// A validated design sheet: pulley, ropes, requirements, hoist, machine and scenes (SI).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Design {
     /// The sheet's file name as given on the command line (for messages and reports).
     pub sheet: String,
+    /// The design's title (`title`; empty when not given).
     pub title: String,
     /// The report's title block (the `[document]` section; every field optional).
     pub document: Document,
+    /// Gravity g (m/s²).
     pub g_m_s2: f64,
+    /// The friction pulley and its wrap.
     pub pulley: Pulley,
+    /// The hoisting ropes.
     pub rope: Rope,
+    /// The limits the checks use, each with its source.
     pub requirements: Requirements,
     /// The hoist that `duty-cycle` scenes run (the `[hoist]` section), when the sheet has one.
     pub hoist: Option<Hoist>,
+    /// The scenes, in sheet order.
     pub scenes: Vec<Scene>,
     /// The elastic lining of level 3 (the `[lining]` section), when the sheet has one: it
     /// switches level 3 on for the scenes that run the wrap in time.
@@ -69,11 +76,17 @@ pub const COMPARE_COLUMNS: [&str; 13] = [
 /// The title block of the calculation report, echoed as the sheet gives it.
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
 pub struct Document {
+    /// Project name.
     pub project: Option<String>,
+    /// Title of the calculation.
     pub title: Option<String>,
+    /// Revision of the document.
     pub revision: Option<String>,
+    /// Who wrote the calculation.
     pub author: Option<String>,
+    /// Who checked it.
     pub checker: Option<String>,
+    /// Date of issue, as the sheet writes it.
     pub date: Option<String>,
 }
 
@@ -81,6 +94,7 @@ pub struct Document {
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[error("--scene {name:?}: no such scene; the sheet has: {known}")]
 pub struct UnknownScene {
+    /// The name asked for.
     pub name: String,
     /// The sheet's scene names, comma-separated.
     pub known: String,
@@ -134,14 +148,17 @@ pub struct Hoist {
     pub conveyance2_kg: f64,
     /// Structural damping ratio of the hoisting ropes' longitudinal modes.
     pub rope_damping_ratio: f64,
+    /// Number of tail (balance) ropes.
     pub tail_count: u32,
     /// Mass per metre of one tail (balance) rope (kg/m).
     pub tail_mass_per_m_kg: f64,
     /// Hanging lengths at the start of a cycle: tangent point → conveyance (m).
     pub side1_length_m: f64,
+    /// Hanging length on side 2: tangent point → conveyance (m).
     pub side2_length_m: f64,
     /// Tail rope hanging below each conveyance at the start (m).
     pub tail1_length_m: f64,
+    /// Tail rope hanging below the side-2 conveyance at the start (m).
     pub tail2_length_m: f64,
     /// The normal motion profile, lifting side 1 (stages in order).
     pub stages: Vec<MotionStage>,
@@ -152,9 +169,13 @@ pub struct Hoist {
 /// Without a duration the stage lasts until the hoist stops.
 #[derive(Debug, Clone, PartialEq)]
 pub struct MotionStage {
+    /// Label of the stage.
     pub name: String,
+    /// Length of the stage (s); `None`: until the hoist stops.
     pub duration_s: Option<f64>,
+    /// Acceleration at the stage's end (m/s², side 1 upward positive).
     pub accel_m_s2: f64,
+    /// Jump to `accel_m_s2` at the stage's start instead of ramping.
     pub step: bool,
 }
 
@@ -174,6 +195,7 @@ pub struct DutyCycleScene {
     /// Emergency braking by the sheet's `[brake]`: at this time the drive trips and the pulley
     /// becomes a body that the brake stops (docs/physics.md §11).
     pub brake_stop_s: Option<f64>,
+    /// Extra times whose distribution is reported (s).
     pub snapshots_s: Vec<f64>,
     /// Time between history rows (s).
     pub output_step_s: f64,
@@ -181,35 +203,50 @@ pub struct DutyCycleScene {
     pub time_step_s: f64,
 }
 
+/// An imposed emergency deceleration of a duty cycle.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct EmergencyStop {
+    /// Time of the stop (s).
     pub at_s: f64,
+    /// Deceleration imposed until the hoist stops (m/s², > 0).
     pub decel_m_s2: f64,
 }
 
+/// The friction pulley.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Pulley {
+    /// Friction pulley diameter D (m; R = D/2).
     pub diameter_m: f64,
+    /// Friction coefficient μ rope–lining.
     pub mu: f64,
+    /// Wrap angle α (rad).
     pub wrap_angle_rad: f64,
+    /// Whether α was given or computed from the guide geometry.
     pub wrap_source: WrapSource,
 }
 
 /// Where the wrap angle came from.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum WrapSource {
+    /// Given in the sheet (`wrap_angle_deg`).
     Given,
     /// Computed from the guide-pulley geometry (docs/physics.md §3).
     GuidePulley {
+        /// Guide sheave diameter (m).
         diameter_m: f64,
+        /// Vertical distance h_v of the pulley and guide centres (m).
         vertical_m: f64,
+        /// Horizontal distance h_h of the pulley and guide centres (m).
         horizontal_m: f64,
     },
 }
 
+/// The hoisting ropes; every quantity is of one rope unless named otherwise.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Rope {
+    /// Number of hoisting ropes n.
     pub count: u32,
+    /// Mass per metre m' of one rope (kg/m).
     pub mass_per_m_kg: f64,
     /// Axial stiffness EA of one rope (N).
     pub ea_n: f64,
@@ -228,7 +265,9 @@ pub struct Machine {
     /// Friction pulley with the motor rotor (and gear) reduced to the pulley axis (kg·m²; 0
     /// when the sheet gives none). It matters once the drive lets go: in an emergency stop.
     pub pulley_inertia_kg_m2: f64,
+    /// The guide sheave, when the sheet has one.
     pub guide: Option<GuideSheave>,
+    /// The safety brake (`[brake]`), when the sheet has one.
     pub brake: Option<Brake>,
 }
 
@@ -236,6 +275,7 @@ pub struct Machine {
 /// its side whenever the rope accelerates.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct GuideSheave {
+    /// Guide sheave diameter (m).
     pub diameter_m: f64,
     /// The side whose rope runs over it (1 or 2).
     pub side: u8,
@@ -251,7 +291,9 @@ pub struct GuideSheave {
 pub struct Brake {
     /// Total brake force at the friction pulley's rim, M_b/R (N).
     pub force_n: f64,
+    /// Time from the trip to the first brake force (s).
     pub idle_time_s: f64,
+    /// Time of the linear rise to the full force (s).
     pub build_up_s: f64,
 }
 
@@ -259,15 +301,21 @@ pub struct Brake {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, serde::Serialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum Phase {
+    /// The hoist accelerates to full speed.
     Accelerating,
+    /// The hoist runs at full speed.
     FullSpeed,
+    /// The hoist decelerates to rest.
     Decelerating,
+    /// An emergency stop.
     Emergency,
 }
 
 impl Phase {
+    /// Every phase, in travel order.
     pub const ALL: [Phase; 4] = [Phase::Accelerating, Phase::FullSpeed, Phase::Decelerating, Phase::Emergency];
 
+    /// The keyword in the sheet and the reports (`full-speed`, …).
     pub fn keyword(self) -> &'static str {
         match self {
             Phase::Accelerating => "accelerating",
@@ -282,7 +330,9 @@ impl Phase {
 /// `[hoist]`, at level 0, and the phases in `rope_dynamics` also with the ropes' dynamics.
 #[derive(Debug, Clone, PartialEq)]
 pub struct LoadCases {
+    /// Payloads on the side-1 conveyance (kg).
     pub payloads_kg: Vec<f64>,
+    /// Trip directions.
     pub directions: Vec<Direction>,
     /// Positions as fractions of the travel (0: side 1 at the bottom, 1: at the top).
     pub positions: Vec<f64>,
@@ -296,9 +346,12 @@ pub struct LoadCases {
     pub time_step_s: f64,
 }
 
+/// One scenario of the sheet (`[[scene]]`).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Scene {
+    /// The scene's name.
     pub name: String,
+    /// What it describes: end loads, a load history or a hoisting cycle.
     pub kind: SceneKind,
     /// What the scene asks for (sheet key `outputs`; default: everything its kind can give).
     pub outputs: Outputs,
@@ -345,6 +398,7 @@ pub enum Output {
 }
 
 impl Output {
+    /// Every output.
     pub const ALL: [Output; 5] = [Output::Checks, Output::Margins, Output::Distribution, Output::History, Output::Fit];
 
     /// The keyword in the sheet's `outputs` array.
@@ -358,6 +412,7 @@ impl Output {
         }
     }
 
+    /// The output with this keyword, if any.
     pub fn from_keyword(word: &str) -> Option<Self> {
         Self::ALL.into_iter().find(|o| o.keyword() == word)
     }
@@ -372,6 +427,7 @@ impl Output {
 pub struct Outputs(u8);
 
 impl Outputs {
+    /// The set of these outputs.
     pub fn of(outputs: &[Output]) -> Self {
         Self(outputs.iter().fold(0, |bits, o| bits | o.bit()))
     }
@@ -384,14 +440,17 @@ impl Outputs {
         }
     }
 
+    /// Whether the set holds `output`.
     pub fn contains(self, output: Output) -> bool {
         self.0 & output.bit() != 0
     }
 
+    /// The set with `output` added.
     pub fn with(self, output: Output) -> Self {
         Self(self.0 | output.bit())
     }
 
+    /// The set without `output`.
     pub fn without(self, output: Output) -> Self {
         Self(self.0 & !output.bit())
     }
@@ -408,13 +467,18 @@ impl Outputs {
 }
 
 #[derive(Debug, Clone, PartialEq)]
+/// What a scene describes.
 pub enum SceneKind {
+    /// Constant end loads: one steady state.
     Loads(LoadsScene),
+    /// A load history at the rope ends.
     History(HistoryScene),
+    /// A hoisting cycle of the `[hoist]`.
     DutyCycle(DutyCycleScene),
 }
 
 impl SceneKind {
+    /// The kind's keyword in the sheet (`loads`, `history`, `duty-cycle`).
     pub fn name(&self) -> &'static str {
         match self {
             SceneKind::Loads(_) => "loads",
@@ -427,9 +491,13 @@ impl SceneKind {
 /// One sample of a load history: tensions per rope at the tangent points and rope speed.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct HistorySample {
+    /// Time of the sample (s).
     pub t_s: f64,
+    /// Side-1 tension per rope (N).
     pub t1_n: f64,
+    /// Side-2 tension per rope (N).
     pub t2_n: f64,
+    /// Rope speed (m/s, > 0 side 1 → side 2).
     pub speed_m_s: f64,
 }
 
@@ -449,6 +517,7 @@ pub struct HistoryScene {
 /// A steady state under constant end loads (docs/interface.md §2, `kind = "loads"`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LoadsScene {
+    /// The loads at the rope ends.
     pub ends: EndLoads,
     /// Acceleration of side 1 upward (m/s²).
     pub accel_m_s2: f64,
@@ -458,6 +527,7 @@ pub struct LoadsScene {
     pub direction: Direction,
 }
 
+/// The end loads of a `loads` scene.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum EndLoads {
     /// Everything hanging below each tangent point, all ropes together (kg).
@@ -469,7 +539,9 @@ pub enum EndLoads {
 /// Travel direction: `Lift` = side 1 goes up, the rope runs from side 1 to side 2 (v > 0).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Direction {
+    /// Side 1 goes up (v > 0).
     Lift,
+    /// Side 1 goes down (v < 0).
     Lower,
 }
 

@@ -26,14 +26,19 @@ pub const ELEMENTS_PER_SIDE: usize = 24;
 /// Why a duty cycle could not run.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum Level4Error {
+    /// The suspended ropes' dynamics failed.
     #[error(transparent)]
     Dynamics(#[from] DynamicsError),
+    /// The emergency stop is set at or after the end of the motion profile.
     #[error("emergency_stop_s = {at_s} s is not before the end of the motion profile ({duration_s:.3} s)")]
     EmergencyAfterEnd { at_s: f64, duration_s: f64 },
+    /// The emergency stop is set while the hoist is at rest.
     #[error("emergency_stop_s = {at_s} s: the hoist is at rest then, there is no motion to brake")]
     EmergencyAtRest { at_s: f64 },
+    /// A duty cycle without a `[hoist]` section.
     #[error("a duty-cycle scene needs the sheet's [hoist] section")]
     NoHoist,
+    /// A rope would leave the pulley: its tension falls to m'v² at a tangent point.
     #[error(
         "slack rope on {side} at t = {t:.3} s: {model} give a tension of {tension:.1} N per rope at its tangent point \
          (v = {v:.3} m/s), but a rope stays on the pulley only while its tension exceeds m'v² = {c:.1} N; it would \
@@ -47,8 +52,10 @@ pub enum Level4Error {
         short = slack.centrifugal_n - slack.tension_n
     )]
     SlackRope { slack: Box<SlackRope>, level: u8, advice: String },
+    /// A brake stop without a `[brake]` section.
     #[error("an emergency stop by the brake needs the sheet's [brake] section")]
     NoBrake,
+    /// The stop by the brake could not be computed.
     #[error(transparent)]
     Brake(#[from] BrakeError),
 }
@@ -103,7 +110,7 @@ pub fn stages(hoist: &Hoist, direction: Direction) -> Vec<Stage> {
         .collect()
 }
 
-/// The profile of `stages` up to the trip instant `at_s` ([`stages_until`]). The hoist must be
+/// The profile of `stages` up to the trip instant `at_s` (`stages_until`). The hoist must be
 /// moving then.
 pub fn profile_until(stages: &[Stage], at_s: f64) -> Result<MotionProfile, Level4Error> {
     Ok(MotionProfile::new(&stages_until(stages, at_s)?)?)
@@ -358,12 +365,15 @@ impl<'a> StopTrials<'a> {
 /// so the contact force n = T − m'v² (docs/physics.md §2) is gone.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SlackRope {
+    /// The side whose rope goes slack.
     pub side: Side,
+    /// Time of the sample (s).
     pub t_s: f64,
     /// Tension per rope at that side's tangent point (N); ≤ 0 when the rope has gone slack.
     pub tension_n: f64,
     /// m'v² (N): the tension needed to keep the rope on the pulley.
     pub centrifugal_n: f64,
+    /// Rope speed then (m/s, > 0 side 1 → side 2).
     pub speed_m_s: f64,
 }
 

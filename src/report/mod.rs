@@ -36,16 +36,22 @@ use std::path::Path;
 use summary::Summary;
 pub use target::ReportKind;
 
+/// Why a report could not be written.
 #[derive(Debug, thiserror::Error)]
 pub enum ReportError {
+    /// A file or directory could not be written.
     #[error("cannot write the report to {path}: {source}")]
     Io { path: String, source: std::io::Error },
+    /// A CSV file could not be written.
     #[error("cannot write {path}: {source}")]
     Csv { path: String, source: csv::Error },
+    /// A figure could not be drawn.
     #[error(transparent)]
     Plot(#[from] plot::PlotError),
+    /// The workbook could not be written.
     #[error("cannot write {path}: {source}")]
     Xlsx { path: String, source: rust_xlsxwriter::XlsxError },
+    /// The output path holds something wrapcalc did not write; it is left untouched.
     #[error(
         "{path}: not written, and left as it is: {reason}. wrapcalc replaces only a report it wrote itself \
          (a directory holding a {marker} file); give --out a new or an empty directory, or move this one away",
@@ -61,6 +67,7 @@ pub(crate) fn io(path: &Path) -> impl FnOnce(std::io::Error) -> ReportError + '_
 /// What to write besides the summary.
 #[derive(Clone, Copy)]
 pub struct ReportOptions<'a> {
+    /// Draw the PNG figures.
     pub plots: bool,
     /// The calculation report (`report.html`, `checks.xlsx`) of this design, when wanted.
     pub document: Option<(&'a crate::design::Design, &'a html::Provenance)>,

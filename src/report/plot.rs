@@ -33,7 +33,9 @@ const JDP: RGBColor = RGBColor(20, 130, 60);
 #[derive(Debug, thiserror::Error)]
 #[error("cannot draw {path}: {message}")]
 pub struct PlotError {
+    /// The figure's file.
     pub path: String,
+    /// What the drawing backend reported.
     pub message: String,
 }
 

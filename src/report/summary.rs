@@ -16,68 +16,107 @@ use serde::Serialize;
 /// One scene's scalar fields, in the order docs/interface.md lists them; `None` is null / empty.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct SceneSummary {
+    /// The scene's name in the sheet.
     pub name: String,
+    /// Its kind: `loads`, `history` or `duty-cycle`.
     pub kind: &'static str,
+    /// The model level that ran (0–4).
     pub level: u8,
+    /// Why the planner chose that level (or that it was forced).
     pub level_reason: String,
+    /// Time of the reported state (s); `None` for a `loads` scene.
     pub t_s: Option<f64>,
+    /// Side-1 end tension per rope of the reported state (N).
     pub t1_n: f64,
+    /// Side-2 end tension per rope of the reported state (N).
     pub t2_n: f64,
+    /// Rope speed of the reported state (m/s, > 0 side 1 → side 2).
     pub speed_m_s: f64,
+    /// Acceleration of the reported state (m/s²).
     pub accel_m_s2: f64,
+    /// Friction coefficient μ rope–lining.
     pub mu: f64,
+    /// Wrap angle α (deg).
     pub wrap_angle_deg: f64,
+    /// The Euler limit e^{μα}.
     pub euler_limit: f64,
+    /// (T_hi − m'v²)/(T_lo − m'v²).
     pub tension_ratio: f64,
+    /// (T_lo − m'v²)(e^{μα} − 1)/(T_hi − T_lo) of this state; `None` when T1 = T2.
     pub safety_factor: Option<f64>,
+    /// The safety factor at rest (a = 0, v = 0).
     pub static_safety_factor: Option<f64>,
+    /// The dynamic safety factor (docs/interface.md §3.3); `None` without a state in motion.
     pub dynamic_safety_factor: Option<f64>,
+    /// Dynamic angle β = ln(ratio)/μ (deg).
     pub dynamic_angle_deg: f64,
+    /// Reserve angle α − β (deg).
     pub reserve_angle_deg: f64,
+    /// Arc with |q| < 0.001μn (deg); `None` at level 0.
     pub idle_arc_deg: Option<f64>,
+    /// Arc with q > 0.001μn (deg); `None` at level 0.
     pub positive_arc_deg: Option<f64>,
+    /// Arc with q < −0.001μn (deg); `None` at level 0.
     pub reverse_arc_deg: Option<f64>,
+    /// The demarcation point θ_JDP (deg); `None` where there is none.
     pub jdp_deg: Option<f64>,
+    /// Largest |q|/(μn) over the wrap; `None` at level 0.
     pub max_utilization: Option<f64>,
+    /// Whether the reported state slips grossly.
     pub gross_slip: bool,
+    /// The friction coefficient at which the state would just slip, ln(ratio)/α.
     pub critical_mu: f64,
+    /// Whether no check of the scene fails.
     pub checks_pass: bool,
+    /// Wrap nodes, or level-3 segments; `None` at level 0.
     pub nodes: Option<usize>,
+    /// The scene's run time (ms).
     pub runtime_ms: f64,
     /// Extension: centrifugal tension m'v² per rope (N).
     pub centrifugal_n: f64,
     /// Extension (time scenes): the reported row with the lowest safety factor, and its time.
     pub worst_t_s: Option<f64>,
+    /// The lowest safety factor of the history rows (at `worst_t_s`).
     pub worst_safety_factor: Option<f64>,
     /// Extension (`margins`): extra side-1 payload (kg, all ropes) before gross slip, and before
     /// the safety factor falls to its minimum; braking deceleration (m/s²) before gross slip and
     /// before the dynamic safety factor falls to its minimum. Null when the search found no such
     /// value (its verdict in summary.json says why).
     pub payload_margin_kg: Option<f64>,
+    /// Extra side-1 payload (kg, all ropes) before the safety factor falls to its minimum.
     pub payload_margin_sf_kg: Option<f64>,
+    /// Braking deceleration (m/s²) before gross slip.
     pub braking_margin_m_s2: Option<f64>,
+    /// Braking deceleration (m/s²) before the dynamic safety factor falls to its minimum.
     pub braking_margin_sf_m_s2: Option<f64>,
     /// Extension (`fit`): the creep-theory active arc fitted to the distribution, and the RMS
     /// residual relative to the range of T over the wrap (0: exactly the classical picture).
     pub fit_active_arc_deg: Option<f64>,
+    /// RMS residual of the fit relative to the range of T over the wrap.
     pub fit_rms_residual_rel: Option<f64>,
     /// Extension (duty cycles with the ropes' dynamics): the lowest dynamic safety factor in
     /// motion with them; `dynamic_safety_factor` is then the code value, on rigid ropes.
     pub rope_dynamics_safety_factor: Option<f64>,
     /// Extension (duty cycles): the onset of gross slip, where the trip ends (time, ratio).
     pub slip_onset_t_s: Option<f64>,
+    /// The tension ratio at the onset of gross slip.
     pub slip_onset_ratio: Option<f64>,
     /// Extension (duty cycles with an emergency stop): the deceleration reached (mean from full
     /// brake force to standstill), its peak, the slip-limited deceleration on rigid ropes, the
     /// stopping time from the trip and the stopping distance.
     pub emergency_decel_m_s2: Option<f64>,
+    /// Peak deceleration of the emergency stop (m/s²).
     pub emergency_peak_decel_m_s2: Option<f64>,
+    /// The rigid-rope deceleration at which the stop would slip grossly (m/s²).
     pub slip_limited_decel_m_s2: Option<f64>,
+    /// Time from the trip to standstill (s).
     pub stopping_time_s: Option<f64>,
+    /// Distance from the trip to standstill (m).
     pub stopping_distance_m: Option<f64>,
 }
 
 impl SceneSummary {
+    /// The scalar fields of one scene's result.
     pub fn of(r: &SceneResult) -> Self {
         let c = &r.classical;
         let w = r.wrap.as_ref().map(|w| &w.summary);
@@ -139,8 +178,11 @@ impl SceneSummary {
 #[derive(Debug, Clone, Serialize)]
 pub struct SceneJson {
     #[serde(flatten)]
+    /// The scalar fields of §3.3 of docs/interface.md, flattened into the scene.
     pub summary: SceneSummary,
+    /// The scene's design checks.
     pub checks: Vec<Check>,
+    /// Calls and iterations of argmin's Brent method on the distribution (level 1 and up).
     pub root_finding: Option<RootStats>,
     /// Increments, node events and clarabel verdicts of the discrete level.
     pub solver: Option<StepStats>,
@@ -202,13 +244,19 @@ impl TrackJson {
 /// The whole summary.json document.
 #[derive(Debug, Clone, Serialize)]
 pub struct Summary {
+    /// The sheet's path as given.
     pub sheet: String,
+    /// The sheet's title.
     pub title: String,
+    /// wrapcalc's version.
     pub version: &'static str,
+    /// Whether no check of the run fails.
     pub all_checks_pass: bool,
+    /// The run's wall time (ms).
     pub runtime_ms: f64,
     /// Extension: the limits the checks used, each with its source.
     pub requirements: Requirements,
+    /// Every scene that ran, in sheet order.
     pub scenes: Vec<SceneJson>,
     /// Extension (a whole sheet run): the checks of the design as a whole — beside anti-slip,
     /// then the load-case matrix's — each with its governing case.
@@ -218,6 +266,7 @@ pub struct Summary {
 }
 
 impl Summary {
+    /// The summary of a run of a design.
     pub fn of(design: &Design, run: &RunResult) -> Self {
         Self {
             sheet: design.sheet.clone(),
@@ -250,6 +299,7 @@ impl Summary {
         }
     }
 
+    /// The document as pretty-printed JSON.
     pub fn to_json(&self) -> String {
         // Serializing plain structs of finite numbers and strings cannot fail.
         serde_json::to_string_pretty(self).unwrap_or_else(|e| format!("{{\"error\": \"{e}\"}}"))

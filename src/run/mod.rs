@@ -1,7 +1,7 @@
 //! Runs a design: plans each scene, runs its model level, derives the wrap quantities.
 //!
-//! Stages per scene: plan ([`crate::planner`]) → the model level of its kind ([`loads`]: level 0,
-//! 1 or a steady run-through at 2–3; [`time`]: histories and duty cycles, level 0 over the
+//! Stages per scene: plan ([`crate::planner`]) → the model level of its kind (`loads`: level 0,
+//! 1 or a steady run-through at 2–3; `time`: histories and duty cycles, level 0 over the
 //! samples, then the wrap at level 2–3, the suspended ropes of level 4) → the answers derived
 //! from the result ([`derive`]: margins, creep-theory fit, every number finite).
 
@@ -42,8 +42,11 @@ pub const DEFAULT_NODES: usize = 180;
 pub const MAX_NODES: usize = 1_000_000;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+/// How a run is made: the level asked for, the grid, the solver and the cost limit.
 pub struct Options {
+    /// What is asked for: the checks only, or everything at the planner's or a forced level.
     pub request: Request,
+    /// Wrap nodes of the output grid and of the discrete levels (level 3: its segments).
     pub nodes: usize,
     /// Solver of the discrete level's increments.
     pub solver: Solver,
@@ -64,18 +67,25 @@ impl Default for Options {
 }
 
 #[derive(Debug, thiserror::Error)]
+/// Why a run fails.
 pub enum RunError {
     #[error(transparent)]
+    /// The scene cannot run at the level asked for.
     Plan(#[from] PlanError),
     #[error("scene \"{scene}\": {source}")]
+    /// Root finding on a scene's distribution failed.
     Roots { scene: String, source: RootError },
     #[error("scene \"{scene}\": non-finite result for {field}; the inputs are outside what the model can represent")]
+    /// A result came out non-finite.
     NonFinite { scene: String, field: &'static str },
     #[error("--nodes {0}: expected a node count from 1 to {MAX_NODES}")]
+    /// `--nodes` outside 1 ..= [`MAX_NODES`].
     Nodes(usize),
     #[error("scene \"{scene}\": {source}")]
+    /// The level-2 simulation of a scene failed.
     Level2 { scene: String, source: Level2Error },
     #[error("scene \"{scene}\": {source}")]
+    /// The level-4 rope dynamics of a scene failed.
     Level4 { scene: String, source: Level4Error },
     #[error(
         "scene \"{scene}\": track_*: rope elements are followed on the rigid lining (level 2); this scene's wrap \
@@ -88,9 +98,12 @@ pub enum RunError {
     )]
     TracksBelowLevel2 { scene: String, level: u8 },
     #[error("scene \"{scene}\": level 3: {source}")]
+    /// The level-3 simulation of a scene failed.
     Level3 { scene: String, source: Level3Error },
     #[error("scene \"{scene}\": {source}")]
+    /// The creep-theory fit of a scene failed.
     Fit { scene: String, source: FitError },
+    /// A scene's estimated cost exceeds the limit; refused before anything runs.
     #[error(
         "scene \"{scene}\": refused before running: it would take about {time} on one core (limit {limit_s} s, \
          --cost-limit-s) and keep {rows:.0} history rows, about {memory:.2} GB (limit {memory_limit:.1} GB). \
@@ -109,15 +122,20 @@ pub enum RunError {
 /// The wrap distribution of a scene (levels ≥ 1).
 #[derive(Debug, Clone, PartialEq)]
 pub struct WrapResult {
+    /// Arcs, JDP, utilization and root-finding tallies of the distribution.
     pub summary: WrapSummary,
+    /// T, n, q and the stick/slip state at every node.
     pub distribution: Distribution,
 }
 
 /// What a time scene adds: history rows, the θ–t utilization map, solver tallies.
 #[derive(Debug, Clone, PartialEq)]
 pub struct HistoryOutput {
+    /// One row per sample, snapshot and output step.
     pub rows: Vec<HistoryRow>,
+    /// Utilization signed by friction (+ positive, − reverse) per row, on equally spaced angles.
     pub map: Vec<Vec<f64>>,
+    /// Increments, node events and solver verdicts of the discrete level.
     pub stats: StepStats,
     /// Duty cycles: tension per rope at the side-1 and side-2 conveyance anchors at each row's
     /// time (N); empty for other scenes.
@@ -133,15 +151,21 @@ pub struct HistoryOutput {
 }
 
 #[derive(Debug, Clone, PartialEq)]
+/// Everything one scene's run gives.
 pub struct SceneResult {
+    /// The scene's name in the sheet.
     pub name: String,
+    /// Its kind: `loads`, `history` or `duty-cycle`.
     pub kind: &'static str,
+    /// The level it ran at, and why.
     pub plan: Plan,
+    /// The level-0 (Euler/capstan) answer of the reported state, with its checks.
     pub classical: Classical,
     /// The reported (final) state of the wrap.
     pub wrap: Option<WrapResult>,
     /// Distributions at snapshot times before the final state.
     pub snapshots: Vec<Distribution>,
+    /// Time scenes: history rows, utilization map and solver tallies.
     pub history: Option<HistoryOutput>,
     /// Time of the reported state (time scenes).
     pub t_s: Option<f64>,
@@ -154,7 +178,9 @@ pub struct SceneResult {
     pub fit: Option<CreepFit>,
     /// Level-3 solver counters of the scene (its run-in included), when the wrap ran at level 3.
     pub level3: Option<Level3Stats>,
+    /// Wrap nodes, or level-3 segments; `None` at level 0.
     pub nodes: Option<usize>,
+    /// The scene's run time (ms).
     pub runtime_ms: f64,
     /// The run time estimated before the scene ran, and the work it stands for.
     pub cost: Option<Estimate>,
@@ -173,20 +199,25 @@ pub struct SceneResult {
 }
 
 impl SceneResult {
+    /// Whether no check of the scene fails.
     pub fn checks_pass(&self) -> bool {
         self.classical.checks_pass()
     }
 }
 
 #[derive(Debug, Clone, PartialEq)]
+/// Everything a run gives: each scene's result and, for a whole sheet, the design's.
 pub struct RunResult {
+    /// Every scene that ran, in the order given.
     pub scenes: Vec<SceneResult>,
     /// The design as a whole ([`run_all`]): the load-case matrix and the checks beside anti-slip.
     pub design: Option<DesignResult>,
+    /// The run's wall time (ms).
     pub runtime_ms: f64,
 }
 
 impl RunResult {
+    /// Whether no check of a scene or of the design as a whole fails.
     pub fn all_checks_pass(&self) -> bool {
         self.scenes.iter().all(SceneResult::checks_pass) && self.design.as_ref().is_none_or(DesignResult::checks_pass)
     }
