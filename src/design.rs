@@ -43,7 +43,9 @@ pub struct Design {
 pub struct Compare {
     /// Names the files `compare/<name>.png` (and `.csv`).
     pub name: String,
+    /// Names of the time scenes overlaid, in the order of the sheet's `scenes` list.
     pub scenes: Vec<String>,
+    /// The quantity overlaid: the followed element's track or a history.csv column.
     pub quantity: CompareQuantity,
 }
 
@@ -374,6 +376,7 @@ pub enum ElementAt {
 /// Rope elements a time scene follows through the wrap (`<scene>/track.csv`).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Tracks {
+    /// Where each followed element sits on the rope, in sheet order (one track per element).
     pub elements: Vec<ElementAt>,
     /// Length of each element along the rope (m).
     pub element_length_m: f64,
@@ -531,9 +534,19 @@ pub struct LoadsScene {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum EndLoads {
     /// Everything hanging below each tangent point, all ropes together (kg).
-    Masses { m1_kg: f64, m2_kg: f64 },
+    Masses {
+        /// Mass hanging below the side-1 tangent point, all ropes together (kg).
+        m1_kg: f64,
+        /// Mass hanging below the side-2 tangent point, all ropes together (kg).
+        m2_kg: f64,
+    },
     /// Tension per rope at each tangent point in this state (N).
-    Tensions { t1_n: f64, t2_n: f64 },
+    Tensions {
+        /// Tension per rope at the side-1 tangent point (N).
+        t1_n: f64,
+        /// Tension per rope at the side-2 tangent point (N).
+        t2_n: f64,
+    },
 }
 
 /// Travel direction: `Lift` = side 1 goes up, the rope runs from side 1 to side 2 (v > 0).

@@ -53,8 +53,9 @@ pub struct DynSample {
     pub anchor1_n: f64,
     /// Tension per rope at the side-2 anchor, N.
     pub anchor2_n: f64,
-    /// Tension per rope halfway down the side-1 and side-2 hanging ropes, N.
+    /// Tension per rope halfway down the side-1 hanging rope, N.
     pub mid1_n: f64,
+    /// Tension per rope halfway down the side-2 hanging rope, N.
     pub mid2_n: f64,
     /// Elastic elongation of the side-1 ropes at the conveyance (downward displacement of the
     /// conveyance relative to the rigid motion), m.

@@ -31,10 +31,18 @@ pub enum Level4Error {
     Dynamics(#[from] DynamicsError),
     /// The emergency stop is set at or after the end of the motion profile.
     #[error("emergency_stop_s = {at_s} s is not before the end of the motion profile ({duration_s:.3} s)")]
-    EmergencyAfterEnd { at_s: f64, duration_s: f64 },
+    EmergencyAfterEnd {
+        /// The scene's `emergency_stop_s` (s).
+        at_s: f64,
+        /// Duration of the motion profile (s).
+        duration_s: f64,
+    },
     /// The emergency stop is set while the hoist is at rest.
     #[error("emergency_stop_s = {at_s} s: the hoist is at rest then, there is no motion to brake")]
-    EmergencyAtRest { at_s: f64 },
+    EmergencyAtRest {
+        /// The scene's `emergency_stop_s` (s).
+        at_s: f64,
+    },
     /// A duty cycle without a `[hoist]` section.
     #[error("a duty-cycle scene needs the sheet's [hoist] section")]
     NoHoist,
@@ -51,7 +59,14 @@ pub enum Level4Error {
         c = slack.centrifugal_n,
         short = slack.centrifugal_n - slack.tension_n
     )]
-    SlackRope { slack: Box<SlackRope>, level: u8, advice: String },
+    SlackRope {
+        /// Where and when the rope goes slack, with its tension and m'v².
+        slack: Box<SlackRope>,
+        /// The model level that found it: 0 (rigid ropes) or 4 (the suspended ropes' dynamics).
+        level: u8,
+        /// What to change to keep the rope on the pulley (see [`slack_advice`]).
+        advice: String,
+    },
     /// A brake stop without a `[brake]` section.
     #[error("an emergency stop by the brake needs the sheet's [brake] section")]
     NoBrake,

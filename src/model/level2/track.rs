@@ -36,23 +36,34 @@ pub const TURN_DOWN_TOL_S: f64 = 1e-9;
 /// A rope element to follow: the turn φ_e at which its centre is (or would be) at θ = 0.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Element {
+    /// How the sheet placed the element (e.g. `entry 10 s`), the track's name in track.csv.
     pub label: String,
+    /// The pulley's turn φ_e (rad; φ grows while v > 0) at which the element's centre is (or
+    /// would be) at θ = 0.
     pub phi_rad: f64,
 }
 
 /// One row of track.csv.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TrackRow {
+    /// Time of the row (s).
     pub t_s: f64,
     /// Angle of the element's centre (deg; outside `[0, α]` while only part of it is on the pulley).
     pub theta_deg: f64,
+    /// Tension per rope at the element's centre (at the nearer tangent point while the centre is
+    /// off the pulley), N.
     pub tension_n: f64,
+    /// Contact force per radian there, `n = T − m'v²` (N/rad).
     pub normal_n_per_rad: f64,
+    /// Friction on the rope per radian there, positive in +θ (`dT/dθ = −q`), N/rad.
     pub friction_n_per_rad: f64,
+    /// Utilization of friction there, `|q|/(μn)` (0 to 1).
     pub utilization: f64,
+    /// Stick or creep there.
     pub state: NodeState,
-    /// Forces on the whole element (N).
+    /// Contact force on the whole element, `N = ∫ (T − m'v²) dθ` over its part on the pulley (N).
     pub contact_force_n: f64,
+    /// Friction force on the whole element, `F = ∫ q dθ = T(a) − T(b)`, positive in +θ (N).
     pub friction_force_n: f64,
     /// Running friction impulse since the element first touched the pulley (N·s).
     pub impulse_n_s: f64,
@@ -61,16 +72,22 @@ pub struct TrackRow {
 /// Where an element's friction impulse turns down.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TurnDown {
+    /// The instant the impulse turns down (s).
     pub t_s: f64,
+    /// Angle of the element's centre at that instant (deg).
     pub theta_deg: f64,
+    /// The friction impulse reached there, its extreme value (N·s).
     pub impulse_n_s: f64,
 }
 
 /// One element's track.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Track {
+    /// The element's label (see [`Element::label`]).
     pub label: String,
+    /// The rows while any of the element is on the pulley, in time order.
     pub rows: Vec<TrackRow>,
+    /// Where the impulse turns down; `None` when the friction force never reverses.
     pub turn_down: Option<TurnDown>,
 }
 
