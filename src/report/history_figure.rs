@@ -8,7 +8,9 @@ use super::plot_series::{Line, Stroke, jdp_runs};
 use crate::model::level2::HistoryRow;
 use plotters::prelude::*;
 
+/// Colour of side 1's line (T1; the safety factor this instant).
 pub const T1: RGBColor = RGBColor(20, 70, 160);
+/// Colour of side 2's line (T2; the code's rigid-rope safety factor).
 pub const T2: RGBColor = RGBColor(200, 90, 20);
 const POS: RGBColor = RGBColor(200, 40, 30);
 const REV: RGBColor = RGBColor(30, 80, 190);
@@ -22,7 +24,9 @@ pub const JDP_JUMP_DEG: f64 = 10.0;
 /// The anti-slip minima of the design: σ_s at rest, σ_d in motion.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Minima {
+    /// Static anti-slip minimum σ_s, applied at rest (dimensionless).
     pub static_min: f64,
+    /// Dynamic anti-slip minimum σ_d, applied in motion (dimensionless).
     pub dynamic_min: f64,
 }
 

@@ -41,23 +41,43 @@ pub use target::ReportKind;
 pub enum ReportError {
     /// A file or directory could not be written.
     #[error("cannot write the report to {path}: {source}")]
-    Io { path: String, source: std::io::Error },
+    Io {
+        /// The file or directory that could not be written.
+        path: String,
+        /// The operating system's error.
+        source: std::io::Error,
+    },
     /// A CSV file could not be written.
     #[error("cannot write {path}: {source}")]
-    Csv { path: String, source: csv::Error },
+    Csv {
+        /// The CSV file.
+        path: String,
+        /// The CSV writer's error.
+        source: csv::Error,
+    },
     /// A figure could not be drawn.
     #[error(transparent)]
     Plot(#[from] plot::PlotError),
     /// The workbook could not be written.
     #[error("cannot write {path}: {source}")]
-    Xlsx { path: String, source: rust_xlsxwriter::XlsxError },
+    Xlsx {
+        /// The workbook file.
+        path: String,
+        /// The workbook writer's error.
+        source: rust_xlsxwriter::XlsxError,
+    },
     /// The output path holds something wrapcalc did not write; it is left untouched.
     #[error(
         "{path}: not written, and left as it is: {reason}. wrapcalc replaces only a report it wrote itself \
          (a directory holding a {marker} file); give --out a new or an empty directory, or move this one away",
         marker = target::MARKER
     )]
-    Refused { path: String, reason: String },
+    Refused {
+        /// The output path given.
+        path: String,
+        /// What it holds that wrapcalc did not write.
+        reason: String,
+    },
 }
 
 pub(crate) fn io(path: &Path) -> impl FnOnce(std::io::Error) -> ReportError + '_ {

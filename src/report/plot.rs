@@ -160,15 +160,23 @@ pub fn plot_distribution(path: &Path, title: &str, dist: &Distribution) -> Resul
 /// the JDP and each panel's legend.
 #[derive(Debug, Clone, PartialEq)]
 pub struct DistributionFigure {
+    /// End of the θ axis (deg): the wrap angle α.
     pub x_max_deg: f64,
+    /// Tension per rope over the wrap, `(θ deg, T kN)`.
     pub tension: Vec<(f64, f64)>,
+    /// Friction on the rope over the wrap, positive in +θ, `(θ deg, q kN/rad)`.
     pub friction: Vec<(f64, f64)>,
-    /// +μn and −μn.
+    /// +μn, the upper Coulomb limit of q, `(θ deg, kN/rad)`.
     pub upper: Vec<(f64, f64)>,
+    /// −μn, the lower Coulomb limit of q, `(θ deg, kN/rad)`.
     pub lower: Vec<(f64, f64)>,
+    /// The JDP (deg from the side-1 tangent point), when the wrap has one on the axis.
     pub jdp_deg: Option<f64>,
+    /// The zones shaded behind both panels.
     pub shades: Vec<ZoneShade>,
+    /// The tension panel's legend: the tension line, the zones and the JDP.
     pub tension_legend: Vec<LegendEntry>,
+    /// The friction panel's legend: the friction line, the Coulomb limits, the zones and the JDP.
     pub friction_legend: Vec<LegendEntry>,
 }
 

@@ -12,9 +12,13 @@ pub const BAR_AREA_W: u32 = 210;
 /// `(value, label)`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ColourBar {
+    /// The bar's title: the quantity it colours.
     pub title: String,
+    /// The values at the bottom and the top of the bar, in the quantity's unit.
     pub range: (f64, f64),
+    /// The colour bands, `(from, to, colour)`, bottom to top.
     pub steps: Vec<(f64, f64, RGBColor)>,
+    /// The ticks, `(value, label)`; an empty label prints the value.
     pub ticks: Vec<(f64, String)>,
 }
 

@@ -38,6 +38,7 @@ pub struct HistoryPlot<'a> {
     /// The code's safety factor on rigid ropes over time, `(t, σ)` (duty cycles with the
     /// ropes' dynamics, whose rows then carry the level-4 value; else empty).
     pub code_sf: &'a [(f64, f64)],
+    /// The design's anti-slip minima, drawn on the safety-factor panel where they apply.
     pub minima: Minima,
     /// The pulley's radius (m): stuck rope carries the JDP round at v/R.
     pub radius_m: f64,

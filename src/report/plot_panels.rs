@@ -12,8 +12,11 @@ pub(super) use super::plot_sweep::PALETTE;
 /// One line of a panel.
 #[derive(Debug, Clone)]
 pub struct Line {
+    /// The legend's text for the line (an element or a scene).
     pub label: String,
+    /// The line's colour.
     pub color: RGBColor,
+    /// The points `(x, y)` in the units of the figure's axes, joined in order.
     pub points: Vec<(f64, f64)>,
     /// Dashed (a bound or a reference) rather than solid.
     pub dashed: bool,
@@ -22,6 +25,7 @@ pub struct Line {
 }
 
 impl Line {
+    /// A solid line through `points`, without markers.
     pub fn solid(label: impl Into<String>, color: RGBColor, points: Vec<(f64, f64)>) -> Self {
         Self { label: label.into(), color, points, dashed: false, markers: false }
     }
@@ -30,7 +34,9 @@ impl Line {
 /// One panel: its y description and lines.
 #[derive(Debug, Clone)]
 pub struct Panel {
+    /// The y axis' description: the quantity and its unit.
     pub y_desc: String,
+    /// The panel's lines, drawn in order and listed in its legend.
     pub lines: Vec<Line>,
 }
 

@@ -11,16 +11,23 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 /// How a line is stroked.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Stroke {
+    /// A solid line this many pixels wide.
     Solid(u32),
+    /// A dashed line this many pixels wide.
     Dashed(u32),
 }
 
 /// A labelled line of a panel, drawn as its runs.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Line {
+    /// The legend's text for the line.
     pub label: String,
+    /// The line's colour.
     pub color: RGBColor,
+    /// The line's width and dash.
     pub stroke: Stroke,
+    /// The polylines the line is drawn as, `(x, y)` in the axes' units; a gap between runs is
+    /// where the quantity is absent or jumps.
     pub runs: Vec<Vec<(f64, f64)>>,
 }
 
@@ -39,6 +46,7 @@ impl Line {
         }
     }
 
+    /// Every point of every run, in order.
     pub fn points(&self) -> impl Iterator<Item = &(f64, f64)> {
         self.runs.iter().flatten()
     }

@@ -85,10 +85,15 @@ fn scene_order(rows: &[SweepRow]) -> Vec<String> {
 /// line, and the intervals of the key where a line runs above the range (marked off scale).
 #[derive(Debug, Clone, PartialEq)]
 pub struct SweepPanel {
+    /// The y axis' description: the quantity and its unit.
     pub y_desc: &'static str,
+    /// The panel's lines over the swept key, one per scene (and per arc sign).
     pub lines: Vec<Line>,
+    /// The y range drawn, in the quantity's unit.
     pub y_range: (f64, f64),
+    /// The note written across the panel when it has no line (empty: none).
     pub empty_note: &'static str,
+    /// The intervals `(from, to)` of the swept key where a line runs above `y_range`.
     pub clipped: Vec<(f64, f64)>,
 }
 

@@ -33,8 +33,11 @@ const FRICTION_DEPTH: f64 = 0.5;
 /// picture coordinates).
 #[derive(Debug, Clone, PartialEq)]
 pub struct FrictionArc {
+    /// Where the stretch starts (deg from the side-1 tangent point).
     pub start_deg: f64,
+    /// Where it ends (deg, ≥ `start_deg`).
     pub end_deg: f64,
+    /// Positive friction (q > 0, in +θ) rather than reverse (q < 0).
     pub positive: bool,
     /// The band: along the rim from start to end, then back along |q|.
     pub polygon: Vec<(f64, f64)>,
@@ -43,15 +46,19 @@ pub struct FrictionArc {
 /// What wrap_diagram.png shows.
 #[derive(Debug, Clone, PartialEq)]
 pub struct WrapDiagram {
+    /// The wrap angle α (deg).
     pub wrap_angle_deg: f64,
     /// The tension curve, from θ = 0 to α.
     pub tension: Vec<(f64, f64)>,
     /// The Coulomb limit μn, from θ = 0 to α.
     pub limit: Vec<(f64, f64)>,
+    /// The positive and reverse stretches in +θ order, each with its band.
     pub arcs: Vec<FrictionArc>,
+    /// The JDP (deg from the side-1 tangent point), drawn as a radial line, when there is one.
     pub jdp_deg: Option<f64>,
     /// The tensions at θ = 0 and θ = α (kN).
     pub end_tensions_kn: (f64, f64),
+    /// The legend: the tension scale, the Coulomb limit, the arcs present and the JDP.
     pub legend: Vec<LegendEntry>,
 }
 

@@ -11,7 +11,9 @@ use plotters::style::RGBColor;
 /// A legend entry's symbol: a line (colour, width in px, dashed) or a filled box.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Swatch {
+    /// A line segment: colour, width (px), dashed.
     Line(RGBColor, u32, bool),
+    /// A filled box (a shaded zone or band).
     Fill(RGBColor),
 }
 
@@ -21,9 +23,13 @@ pub type LegendEntry = (Swatch, String);
 /// How a stretch at the Coulomb limit is shaded.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum ZoneKind {
+    /// Positive friction (q > 0, in +θ) at the limit, the rope not sliding on the lining.
     PositiveAtLimit,
+    /// Positive friction at the limit, the rope sliding on the lining.
     PositiveSlipping,
+    /// Reverse friction (q < 0) at the limit, the rope not sliding on the lining.
     ReverseAtLimit,
+    /// Reverse friction at the limit, the rope sliding on the lining.
     ReverseSlipping,
 }
 
@@ -32,6 +38,7 @@ impl ZoneKind {
     pub const ALL: [ZoneKind; 4] =
         [ZoneKind::PositiveAtLimit, ZoneKind::PositiveSlipping, ZoneKind::ReverseAtLimit, ZoneKind::ReverseSlipping];
 
+    /// The kind's legend text.
     pub fn label(self) -> &'static str {
         match self {
             ZoneKind::PositiveAtLimit => "positive friction at the Coulomb limit (no slip)",
@@ -51,6 +58,7 @@ impl ZoneKind {
         }
     }
 
+    /// Whether the rope slides on the lining in this kind of zone.
     pub fn slipping(self) -> bool {
         matches!(self, ZoneKind::PositiveSlipping | ZoneKind::ReverseSlipping)
     }
@@ -59,8 +67,11 @@ impl ZoneKind {
 /// A shaded stretch of the wrap, in degrees.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ZoneShade {
+    /// Where the stretch starts (deg from the side-1 tangent point).
     pub start_deg: f64,
+    /// Where it ends (deg, ≥ `start_deg`).
     pub end_deg: f64,
+    /// How it is shaded.
     pub kind: ZoneKind,
 }
 

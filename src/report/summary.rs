@@ -206,16 +206,27 @@ pub struct SceneJson {
 /// impulse and where the impulse turned down (null when it did not).
 #[derive(Debug, Clone, Serialize)]
 pub struct TrackJson {
+    /// The element's label, as in track.csv.
     pub element: String,
+    /// Length of the element along the rope (m).
     pub length_m: f64,
+    /// First time any of the element is on the pulley (s); null when it never is.
     pub first_t_s: Option<f64>,
+    /// Last time any of it is on the pulley (s); null when it never is.
     pub last_t_s: Option<f64>,
+    /// Largest contact force on the whole element (N; 0 when it never touches the pulley).
     pub max_contact_force_n: f64,
+    /// Largest friction force on the element, positive in +θ (N; at least 0).
     pub max_friction_force_n: f64,
+    /// Smallest friction force on the element, positive in +θ (N; at most 0).
     pub min_friction_force_n: f64,
+    /// Friction impulse `∫ F dt` at the element's last row (N·s, positive in +θ).
     pub impulse_n_s: f64,
+    /// When the impulse turns down (s); null when it does not.
     pub turn_down_t_s: Option<f64>,
+    /// Angle of the element's centre then (deg from the side-1 tangent point).
     pub turn_down_theta_deg: Option<f64>,
+    /// The impulse reached then (N·s).
     pub turn_down_impulse_n_s: Option<f64>,
 }
 
