@@ -74,35 +74,75 @@ pub enum RunError {
     Plan(#[from] PlanError),
     #[error("scene \"{scene}\": {source}")]
     /// Root finding on a scene's distribution failed.
-    Roots { scene: String, source: RootError },
+    Roots {
+        /// The scene's name.
+        scene: String,
+        /// The root finder's error.
+        source: RootError,
+    },
     #[error("scene \"{scene}\": non-finite result for {field}; the inputs are outside what the model can represent")]
     /// A result came out non-finite.
-    NonFinite { scene: String, field: &'static str },
+    NonFinite {
+        /// The scene's name.
+        scene: String,
+        /// The result that came out non-finite.
+        field: &'static str,
+    },
     #[error("--nodes {0}: expected a node count from 1 to {MAX_NODES}")]
     /// `--nodes` outside 1 ..= [`MAX_NODES`].
     Nodes(usize),
     #[error("scene \"{scene}\": {source}")]
     /// The level-2 simulation of a scene failed.
-    Level2 { scene: String, source: Level2Error },
+    Level2 {
+        /// The scene's name.
+        scene: String,
+        /// What failed in the level-2 simulation.
+        source: Level2Error,
+    },
     #[error("scene \"{scene}\": {source}")]
     /// The level-4 rope dynamics of a scene failed.
-    Level4 { scene: String, source: Level4Error },
+    Level4 {
+        /// The scene's name.
+        scene: String,
+        /// What failed in the rope dynamics.
+        source: Level4Error,
+    },
     #[error(
         "scene \"{scene}\": track_*: rope elements are followed on the rigid lining (level 2); this scene's wrap \
          runs at level 3 on the elastic lining. Run it with --level 2, or follow the elements in a scene without the lining"
     )]
-    TracksAtLevel3 { scene: String },
+    /// Rope elements are asked for in a scene whose wrap runs on the elastic lining (level 3).
+    TracksAtLevel3 {
+        /// The scene's name.
+        scene: String,
+    },
     #[error(
         "scene \"{scene}\": track_*: rope elements are followed by the wrap model (level 2 or more); this scene runs at \
          level {level}. Ask for \"history\" or \"distribution\" in its outputs, or do not force --level {level}"
     )]
-    TracksBelowLevel2 { scene: String, level: u8 },
+    /// Rope elements are asked for in a scene that runs below the wrap model (level 0 or 1).
+    TracksBelowLevel2 {
+        /// The scene's name.
+        scene: String,
+        /// The level the scene runs at.
+        level: u8,
+    },
     #[error("scene \"{scene}\": level 3: {source}")]
     /// The level-3 simulation of a scene failed.
-    Level3 { scene: String, source: Level3Error },
+    Level3 {
+        /// The scene's name.
+        scene: String,
+        /// What failed in the level-3 simulation.
+        source: Level3Error,
+    },
     #[error("scene \"{scene}\": {source}")]
     /// The creep-theory fit of a scene failed.
-    Fit { scene: String, source: FitError },
+    Fit {
+        /// The scene's name.
+        scene: String,
+        /// What failed in the fit.
+        source: FitError,
+    },
     /// A scene's estimated cost exceeds the limit; refused before anything runs.
     #[error(
         "scene \"{scene}\": refused before running: it would take about {time} on one core (limit {limit_s} s, \
@@ -116,7 +156,14 @@ pub enum RunError {
         work = estimate.describe(),
         drivers = estimate.drivers.join(", ")
     )]
-    Costly { scene: String, estimate: Box<Estimate>, limit_s: u64 },
+    Costly {
+        /// The scene's name.
+        scene: String,
+        /// The cost estimated before the scene ran.
+        estimate: Box<Estimate>,
+        /// The limit on one core's run time, `--cost-limit-s` (s).
+        limit_s: u64,
+    },
 }
 
 /// The wrap distribution of a scene (levels ≥ 1).

@@ -13,8 +13,11 @@ const ROWS_AT_REST: f64 = 1000.0;
 /// What a scene's tracks report.
 #[derive(Debug, Clone, PartialEq)]
 pub struct TrackOutput {
+    /// Length of each element along the rope (m).
     pub element_length_m: f64,
+    /// Time step of the track rows (s): the sheet's, else [`default_step_s`].
     pub step_s: f64,
+    /// One track per element, in sheet order.
     pub tracks: Vec<Track>,
 }
 
