@@ -13,6 +13,8 @@
 //! (α); v > 0 means the rope travels side 1 → side 2; friction q on the rope is positive in +θ
 //! and `dT/dθ = −q`; tensions are per rope; SI units, angles reported in degrees.
 
+#![warn(missing_docs)]
+
 pub mod bench;
 pub mod check;
 pub mod contact;
