@@ -53,7 +53,7 @@ pub fn elements(
 }
 
 /// The rows' step: the sheet's, else one degree of wrap at the scene's top speed (at rest,
-/// [`ROWS_AT_REST`] rows over the scene).
+/// 1000 rows over the scene).
 pub fn default_step_s(samples: &[HistorySample], radius_m: f64) -> f64 {
     let span = samples[samples.len() - 1].t_s - samples[0].t_s;
     let v_max = samples.iter().map(|s| s.speed_m_s.abs()).fold(0.0, f64::max);
