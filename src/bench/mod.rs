@@ -11,6 +11,7 @@ pub mod bound;
 pub mod cases;
 pub mod measure;
 pub mod output;
+pub mod plot;
 pub mod scaling;
 
 use crate::model::level2::{Level2Error, Solver};

@@ -1,8 +1,9 @@
 //! The bench report: `bench.csv` (one row per point), `scaling.csv` (fitted slopes) and
 //! `bench.png` (error against run time), put in place whole or not at all.
 
+use super::plot;
 use super::{BenchRow, Scaling};
-use crate::report::{self, ReportError, plot_bench};
+use crate::report::{self, ReportError};
 use std::fs::File;
 use std::io::BufWriter;
 use std::path::Path;
@@ -12,7 +13,7 @@ pub fn write(dir: &Path, rows: &[BenchRow], scaling: &[Scaling]) -> Result<(), R
     report::write_dir(dir, report::ReportKind::Bench, |staged| {
         write_csv(&staged.join("bench.csv"), rows)?;
         write_csv(&staged.join("scaling.csv"), scaling)?;
-        plot_bench::plot_bench(&staged.join("bench.png"), rows)?;
+        plot::plot_bench(&staged.join("bench.png"), rows)?;
         Ok(())
     })
 }

@@ -40,16 +40,16 @@ pub struct PlotError {
 }
 
 /// The drawing area of a PNG plot.
-pub(super) type Area<'b> = DrawingArea<BitMapBackend<'b>, Shift>;
-pub(super) type Chart<'a, 'b> = ChartContext<'a, BitMapBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+pub(crate) type Area<'b> = DrawingArea<BitMapBackend<'b>, Shift>;
+pub(crate) type Chart<'a, 'b> = ChartContext<'a, BitMapBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
 
 /// Registers the embedded font once; false if it could not be registered.
-pub(super) fn font_ready() -> bool {
+pub(crate) fn font_ready() -> bool {
     static READY: OnceLock<bool> = OnceLock::new();
     *READY.get_or_init(|| register_font(FAMILY, FontStyle::Normal, FONT_BYTES).is_ok())
 }
 
-pub(super) fn font(size: u32) -> FontDesc<'static> {
+pub(crate) fn font(size: u32) -> FontDesc<'static> {
     (FAMILY, size).into_font()
 }
 
@@ -58,7 +58,7 @@ fn fail_at(path: &Path) -> impl Fn(String) -> PlotError + '_ {
 }
 
 /// Draws a `size` PNG at `path` with `draw` under a centred caption.
-pub(super) fn render(
+pub(crate) fn render(
     path: &Path,
     size: (u32, u32),
     title: &str,
@@ -81,7 +81,7 @@ pub(super) fn render(
 
 /// One panel of a figure of stacked panels over a common x (history, sweep): `x` × `y`, room
 /// for the x labels on the `bottom` panel only.
-pub(super) fn stacked_panel<'a, 'b>(
+pub(crate) fn stacked_panel<'a, 'b>(
     area: &'a Area<'b>,
     x: (f64, f64),
     y: (f64, f64),
@@ -97,7 +97,7 @@ pub(super) fn stacked_panel<'a, 'b>(
 
 /// The axes and grid of a stacked panel over `x` × `y`, with the x description only where
 /// `x_desc` is given (the bottom panel).
-pub(super) fn stacked_mesh(
+pub(crate) fn stacked_mesh(
     chart: &mut Chart,
     x: (f64, f64),
     y: (f64, f64),
@@ -120,13 +120,13 @@ pub(super) fn stacked_mesh(
 }
 
 /// A drawing error as the message of a [`PlotError`].
-pub(super) fn e<E: std::fmt::Display>(err: E) -> String {
+pub(crate) fn e<E: std::fmt::Display>(err: E) -> String {
     err.to_string()
 }
 
 /// The legend of a chart at `position`, in the embedded font of `font_px` pixels, on a
 /// translucent white box with a grey border (the style of every wrapcalc plot).
-pub(super) fn draw_legend<'a, DB, CT>(
+pub(crate) fn draw_legend<'a, DB, CT>(
     chart: &mut ChartContext<'a, DB, CT>,
     position: SeriesLabelPosition,
     font_px: u32,
@@ -361,7 +361,7 @@ fn thick_line(chart: &Chart, points: &[(f64, f64)], color: RGBColor) -> Result<(
 
 /// Data range of the finite values, padded by 6 % of the span and at least `rel_min` of the
 /// magnitude, never empty and never infinite.
-pub(super) fn padded_range(values: impl Iterator<Item = f64>, rel_min: f64) -> (f64, f64) {
+pub(crate) fn padded_range(values: impl Iterator<Item = f64>, rel_min: f64) -> (f64, f64) {
     let (lo, hi) =
         values.filter(|v| v.is_finite()).fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| (lo.min(v), hi.max(v)));
     if lo > hi {
@@ -378,7 +378,7 @@ pub(super) fn padded_range(values: impl Iterator<Item = f64>, rel_min: f64) -> (
 
 /// A tick-label formatter for an axis over [lo, hi]: as many decimals as about eight ticks
 /// need, in scientific notation for magnitudes a plain number would spell out too long.
-pub(super) fn tick_format(lo: f64, hi: f64) -> impl Fn(&f64) -> String {
+pub(crate) fn tick_format(lo: f64, hi: f64) -> impl Fn(&f64) -> String {
     let (mag, step) = (lo.abs().max(hi.abs()), (hi - lo) / 8.0);
     let digits = |x: f64| if x.is_finite() { x.ceil().clamp(0.0, 9.0) as usize } else { 0 };
     let sci = mag >= 1e6 || (mag > 0.0 && mag < 1e-4);
@@ -396,7 +396,7 @@ pub(super) fn tick_format(lo: f64, hi: f64) -> impl Fn(&f64) -> String {
 /// Level 1's steady distribution for T1 = 248.5 kN, T2 = 211.9 kN (μ = 0.25, α = 187.42°,
 /// N = 180) at `speed_m_s`, sides swapped when `mirror` (T1 ↔ T2, v → −v): a test input.
 #[cfg(test)]
-pub(super) fn steady_distribution(speed_m_s: f64, mirror: bool) -> Distribution {
+pub(crate) fn steady_distribution(speed_m_s: f64, mirror: bool) -> Distribution {
     use crate::derived;
     use crate::model::level0::EndState;
     use crate::model::level1::steady_rolling;

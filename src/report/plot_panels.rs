@@ -7,7 +7,7 @@ use plotters::prelude::*;
 use std::path::Path;
 
 /// Colours of successive lines (elements, scenes): the sweep figures' palette.
-pub(super) use super::plot_sweep::PALETTE;
+pub(super) use super::plot_series::PALETTE;
 
 /// One line of a panel.
 #[derive(Debug, Clone)]

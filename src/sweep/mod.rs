@@ -4,17 +4,18 @@
 //! Stages, one module each: [`grid`] (the `--vary` and `--shard` specs, the points) →
 //! [`apply`] (a point's values set in the sheet, validated by the sheet parser) → [`run`]
 //! (the points in parallel, rows in point order) → [`csv`] (sweep.csv, read and written) →
-//! [`merge`] (shards joined). The plot is [`crate::report::plot_sweep`].
+//! [`merge`] (shards joined). The plot is [`plot`].
 
 pub mod apply;
 pub mod csv;
 pub mod grid;
 pub mod merge;
+pub mod plot;
 pub mod run;
 
+use crate::report::ReportError;
 use crate::report::plot::PlotError;
 use crate::report::target::{self, Existing, ReportKind};
-use crate::report::{ReportError, plot_sweep};
 use crate::run::{MAX_NODES, Options, RunError};
 use crate::sheet::SheetError;
 use apply::Template;
@@ -169,7 +170,7 @@ pub fn write(dir: &Path, csv_name: &str, file: &SweepFile, plot: bool) -> Result
     out.flush().map_err(|e| fail(&staged_csv)(&e))?;
     let mut names = vec![csv_name];
     if plot {
-        plot_sweep::plot_sweep(&staging.path().join(SWEEP_PNG), &file.keys, &file.rows)?;
+        plot::plot_sweep(&staging.path().join(SWEEP_PNG), &file.keys, &file.rows)?;
         names.push(SWEEP_PNG);
     }
     let mut written = Vec::new();

@@ -1,9 +1,9 @@
 //! `bench.png`: error against run time, log–log, one curve per level and solver (colour) and
 //! case (marker), the end points of each curve labelled with their node count or time step.
 
-use super::plot::{PlotError, draw_legend, font, render};
-use crate::bench::BenchRow;
+use super::BenchRow;
 use crate::model::level2::Solver;
+use crate::report::plot::{PlotError, draw_legend, font, render};
 use plotters::prelude::*;
 use std::path::Path;
 

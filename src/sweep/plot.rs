@@ -6,28 +6,16 @@
 //!
 //! The safety factor plotted is the lowest one of a time scene, else the reported state's.
 
-use super::history_figure::{OFF_SCALE, clipped_intervals, mark_clipped, safety_top};
-use super::plot::{Area, PlotError, e, font, render, stacked_mesh, stacked_panel, tick_format};
-use super::plot_colorbar::{BAR_AREA_W, ColourBar, draw_colour_bar};
-use super::plot_series::{Line, Stroke, draw_line, legend_of, legend_strip};
-use super::plot_zones::Swatch;
-use crate::sweep::csv::SweepRow;
+use super::csv::SweepRow;
+use crate::report::history_figure::{OFF_SCALE, clipped_intervals, mark_clipped, safety_top};
+use crate::report::plot::{Area, PlotError, e, font, render, stacked_mesh, stacked_panel, tick_format};
+use crate::report::plot_colorbar::{BAR_AREA_W, ColourBar, draw_colour_bar};
+use crate::report::plot_series::{Line, PALETTE, Stroke, draw_line, legend_of, legend_strip};
+use crate::report::plot_zones::Swatch;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 use std::path::Path;
 
-pub(super) const PALETTE: [RGBColor; 10] = [
-    RGBColor(31, 119, 180),
-    RGBColor(214, 39, 40),
-    RGBColor(44, 160, 44),
-    RGBColor(255, 127, 14),
-    RGBColor(148, 103, 189),
-    RGBColor(140, 86, 75),
-    RGBColor(227, 119, 194),
-    RGBColor(127, 127, 127),
-    RGBColor(188, 189, 34),
-    RGBColor(23, 190, 207),
-];
 /// The required minima (static, dynamic, …), one colour each.
 const MIN_COLORS: [RGBColor; 2] = [RGBColor(200, 0, 0), RGBColor(230, 130, 0)];
 const SLIP: RGBColor = RGBColor(245, 160, 150);
