@@ -146,6 +146,19 @@ pub fn jdp_runs(rows: &[(f64, f64, Option<f64>)], radius_m: f64, jump_deg: f64) 
     runs
 }
 
+pub(crate) const PALETTE: [RGBColor; 10] = [
+    RGBColor(31, 119, 180),
+    RGBColor(214, 39, 40),
+    RGBColor(44, 160, 44),
+    RGBColor(255, 127, 14),
+    RGBColor(148, 103, 189),
+    RGBColor(140, 86, 75),
+    RGBColor(227, 119, 194),
+    RGBColor(127, 127, 127),
+    RGBColor(188, 189, 34),
+    RGBColor(23, 190, 207),
+];
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -181,16 +194,3 @@ mod tests {
         assert_eq!(jdp_runs(&gap, 2.5, 5.0), vec![vec![(0.0, 5.0)], vec![(0.2, 5.0), (0.3, 6.0)]]);
     }
 }
-
-pub(crate) const PALETTE: [RGBColor; 10] = [
-    RGBColor(31, 119, 180),
-    RGBColor(214, 39, 40),
-    RGBColor(44, 160, 44),
-    RGBColor(255, 127, 14),
-    RGBColor(148, 103, 189),
-    RGBColor(140, 86, 75),
-    RGBColor(227, 119, 194),
-    RGBColor(127, 127, 127),
-    RGBColor(188, 189, 34),
-    RGBColor(23, 190, 207),
-];
