@@ -1,7 +1,7 @@
 //! CSV reports: summary.csv (one row per scene), `<scene>/distribution.csv` and `<scene>/history.csv`.
 
 use super::summary::Summary;
-use crate::model::level2::HistoryRow;
+use crate::model::history::HistoryRow;
 use crate::wrap::Distribution;
 use std::io::Write;
 

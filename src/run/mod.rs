@@ -25,8 +25,9 @@ use crate::derived::WrapSummary;
 use crate::design::{Design, Scene, SceneKind};
 use crate::fit::{CreepFit, FitError};
 use crate::margins::Margins;
+use crate::model::history::{HistoryRow, SolverReport};
 use crate::model::level0::{Classical, EndState};
-use crate::model::level2::{HistoryRow, Level2Error, Params, Solver, StepStats};
+use crate::model::level2::{Level2Error, Params, Solver};
 use crate::model::level3::{Level3Error, Level3Stats};
 use crate::model::level4::Level4Error;
 use crate::model::stop::{SlipOnset, StopReport};
@@ -183,7 +184,7 @@ pub struct HistoryOutput {
     /// Utilization signed by friction (+ positive, − reverse) per row, on equally spaced angles.
     pub map: Vec<Vec<f64>>,
     /// Increments, node events and solver verdicts of the discrete level.
-    pub stats: StepStats,
+    pub stats: SolverReport,
     /// Duty cycles: tension per rope at the side-1 and side-2 conveyance anchors at each row's
     /// time (N); empty for other scenes.
     pub anchors_n: Vec<[f64; 2]>,

@@ -4,10 +4,12 @@
 
 use super::{Options, RunError, params};
 use crate::design::{Design, Direction, HistorySample, Scene};
+use crate::model::history::{self, HistoryRun, Output};
 use crate::model::level0::EndState;
 use crate::model::level1;
 use crate::model::level2::{self, Profile};
 use crate::model::level3;
+use crate::model::numerics::Numerics;
 use crate::planner::{self, Plan, PlanError};
 
 /// Creep speed used to reach the state "after the rope last ran" for a scene at rest (m/s):
@@ -55,10 +57,10 @@ pub(super) fn wrap_history(
     scene: &Scene,
     plan: &Plan,
     samples: &[HistorySample],
-    output: level2::Output,
+    output: Output,
     initial: Initial,
     options: Options,
-) -> Result<(level2::HistoryRun, Option<level3::Level3Stats>), RunError> {
+) -> Result<(HistoryRun, Option<level3::Level3Stats>), RunError> {
     let alpha = design.pulley.wrap_angle_rad;
     match (planner::wrap_level(plan, design.lining.is_some()), design.lining) {
         (3, Some(lining)) => {
@@ -67,8 +69,7 @@ pub(super) fn wrap_history(
                 shear_stiffness_n_per_m2: lining.shear_stiffness_n_per_m2,
                 bending_stiffness_n_m2: design.rope.bending_stiffness_n_m2,
                 rope_inertia: lining.rope_inertia,
-                max_iter: level3::MAX_ITER,
-                travel_step_rad: level3::TRAVEL_STEP_RAD,
+                numerics: Numerics::default(),
             };
             let err = |source| RunError::Level3 { scene: scene.name.clone(), source };
             let mut stats = level3::Level3Stats::default();
@@ -85,15 +86,17 @@ pub(super) fn wrap_history(
                     sim.state
                 }
             };
-            let (run, run_stats) = level3::run_history(params, samples, output, initial).map_err(err)?;
+            let sim = level3::Simulation::new(params, samples, initial).map_err(err)?;
+            let (run, run_stats) = history::run(sim, samples, output, options.nodes).map_err(err)?;
             stats.add(&run_stats);
             Ok((run, Some(stats)))
         }
         (3, None) => Err(PlanError::NoLining { scene: scene.name.clone() }.into()),
         _ => {
             let initial = level2_initial(design, initial);
-            level2::run_history(params(design, options.solver), samples, output, initial, options.nodes)
-                .map(|run| (run, None))
+            let sim = level2::Simulation::new(params(design, options.solver), samples, initial);
+            history::run(sim, samples, output, options.nodes)
+                .map(|(run, _)| (run, None))
                 .map_err(|source| RunError::Level2 { scene: scene.name.clone(), source })
         }
     }
