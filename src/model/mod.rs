@@ -14,3 +14,4 @@ pub mod level3;
 pub mod level4;
 pub mod numerics;
 pub mod stop;
+pub mod track;

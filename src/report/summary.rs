@@ -231,8 +231,8 @@ pub struct TrackJson {
 }
 
 impl TrackJson {
-    fn of(t: &crate::model::level2::track::Track, length_m: f64) -> Self {
-        let fold = |f: &dyn Fn(&crate::model::level2::track::TrackRow) -> f64, max: bool| {
+    fn of(t: &crate::model::track::Track, length_m: f64) -> Self {
+        let fold = |f: &dyn Fn(&crate::model::track::TrackRow) -> f64, max: bool| {
             let it = t.rows.iter().map(f);
             if max { it.fold(0.0, f64::max) } else { it.fold(0.0, f64::min) }
         };

@@ -109,15 +109,6 @@ pub enum RunError {
         source: Level4Error,
     },
     #[error(
-        "scene \"{scene}\": track_*: rope elements are followed on the rigid lining (level 2); this scene's wrap \
-         runs at level 3 on the elastic lining. Run it with --level 2, or follow the elements in a scene without the lining"
-    )]
-    /// Rope elements are asked for in a scene whose wrap runs on the elastic lining (level 3).
-    TracksAtLevel3 {
-        /// The scene's name.
-        scene: String,
-    },
-    #[error(
         "scene \"{scene}\": track_*: rope elements are followed by the wrap model (level 2 or more); this scene runs at \
          level {level}. Ask for \"history\" or \"distribution\" in its outputs, or do not force --level {level}"
     )]

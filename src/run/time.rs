@@ -3,7 +3,7 @@
 //! through them at level 2 or 3.
 
 use super::trip::{self, Trip};
-use super::wrap_run::{Initial, level2_initial, wrap_history};
+use super::wrap_run::{Initial, run_model, wrap_model};
 use super::{HistoryOutput, Options, RunError, SceneResult, WrapResult, empty};
 use crate::design::{Design, Direction, DutyCycleScene, HistorySample, HistoryScene, Hoist, Scene};
 use crate::dynamics::Kinematics;
@@ -12,7 +12,7 @@ use crate::model::level0::{self, EndState};
 use crate::model::level1;
 use crate::model::level4::{self, Level4Error};
 use crate::model::stop;
-use crate::planner::{self, Plan};
+use crate::planner::Plan;
 
 pub(super) fn run_history(
     design: &Design,
@@ -180,7 +180,10 @@ fn run_samples(
         None => Initial::Uniform(first.t1_n),
         Some(r) => Initial::Rolling { level1: r, first, direction },
     };
-    let (run, level3) = wrap_history(design, scene, &result.plan, samples, output, initial, options)?;
+    let model = wrap_model(design, scene, &result.plan, samples, initial, options)?;
+    // The tracks follow the same model from the same start.
+    let for_tracks = scene.tracks.as_ref().map(|_| model.clone());
+    let (run, level3) = run_model(model, scene, samples, output, options)?;
     crate::tally::add_increments(run.stats.increments);
     result.level3 = level3;
     let mut snapshots: Vec<history::Snapshot> = run.snapshots;
@@ -206,12 +209,8 @@ fn run_samples(
         pulley_radius_m: 0.5 * design.pulley.diameter_m,
     });
     result.nodes = Some(options.nodes);
-    if let Some(tracks) = &scene.tracks {
-        if planner::wrap_level(&result.plan, design.lining.is_some()) == 3 {
-            return Err(RunError::TracksAtLevel3 { scene: scene.name.clone() });
-        }
-        let start = level2_initial(design, initial);
-        let out = super::track::run(design, scene, tracks, samples, start, travel, side1_length_m, options)?;
+    if let (Some(tracks), Some(model)) = (&scene.tracks, for_tracks) {
+        let out = super::track::run(design, scene, tracks, samples, model, travel, side1_length_m)?;
         result.tracks = Some(out);
     }
     Ok(result)

@@ -11,6 +11,7 @@ pub use output::{HistoryRow, HistoryRun, MAP_COLUMNS, Output, Snapshot};
 pub use report::SolverReport;
 pub use sample::HistorySample;
 
+use crate::contact::NodeState;
 use crate::derived::WrapSummary;
 use crate::model::level0::{EndState, euler_limit};
 use crate::roots::{RootError, RootStats};
@@ -26,6 +27,23 @@ pub struct Wrap {
     pub wrap_angle_rad: f64,
     /// Rope mass per metre m', per rope (kg/m): the centrifugal term is m'v².
     pub mass_per_m_kg: f64,
+    /// Pulley radius R at the rope's centre line (m).
+    pub radius_m: f64,
+}
+
+/// The state of the wrap at one angle, per radian.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Local {
+    /// Rope tension (N).
+    pub tension_n: f64,
+    /// Contact force per radian n (N/rad).
+    pub normal_n_per_rad: f64,
+    /// Friction on the rope per radian q, positive in +θ (N/rad).
+    pub friction_n_per_rad: f64,
+    /// Utilization |q|/(μn), 0 to 1.
+    pub utilization: f64,
+    /// Stick or creep.
+    pub state: NodeState,
 }
 
 /// A model of the rope on the wrap that steps through a history whose end tensions `T1(t)`,
@@ -58,6 +76,12 @@ pub trait WrapModel {
     fn counters(&self) -> Self::Counters;
     /// The counters so far as summary.json's `solver` block.
     fn solver_report(&self) -> SolverReport;
+    /// Rope tension at θ ∈ [0, α] in the current state (N; T1 at 0, T2 at α).
+    fn tension_n(&self, theta_rad: f64) -> f64;
+    /// Contact force on the rope over `[a, b] ⊂ [0, α]`, `N = ∫_a^b n dθ` (N).
+    fn contact_force_n(&self, a_rad: f64, b_rad: f64) -> f64;
+    /// Tension, contact force and friction per radian, utilization and state at θ ∈ [0, α].
+    fn local(&self, theta_rad: f64) -> Local;
     /// Root searches of the stepping itself (those of the derived quantities are the rows').
     fn roots(&self) -> RootStats {
         RootStats::default()

@@ -19,12 +19,12 @@ pub mod repair;
 pub mod schedule;
 pub mod simulate;
 pub mod stats;
-pub mod track;
-pub mod turn;
 
 use crate::contact::ContactLaw;
 use crate::derived::{self, WrapSummary};
-use crate::model::history::{self, HistoryRun, HistorySample, MAP_COLUMNS, Output, SolverReport, Wrap, WrapModel};
+use crate::model::history::{
+    self, HistoryRun, HistorySample, Local, MAP_COLUMNS, Output, SolverReport, Wrap, WrapModel,
+};
 use crate::roots::{RootError, RootStats};
 use crate::wrap::Distribution;
 pub use profile::Profile;
@@ -53,6 +53,7 @@ impl WrapModel for Simulation<'_> {
             mu: self.params.mu,
             wrap_angle_rad: self.params.wrap_angle_rad,
             mass_per_m_kg: self.params.mass_per_m_kg,
+            radius_m: self.params.radius_m,
         }
     }
 
@@ -89,6 +90,30 @@ impl WrapModel for Simulation<'_> {
 
     fn solver_report(&self) -> SolverReport {
         SolverReport::from(&self.stats)
+    }
+
+    fn tension_n(&self, theta_rad: f64) -> f64 {
+        self.profile.tension_n(theta_rad)
+    }
+
+    /// `N = ∫ T dθ − m'v² (b − a)` from the closed forms of the pieces.
+    fn contact_force_n(&self, a_rad: f64, b_rad: f64) -> f64 {
+        self.profile.integral_n_rad(a_rad, b_rad) - self.centrifugal_n * (b_rad - a_rad)
+    }
+
+    /// The piece holding θ, its friction clamped to the Coulomb bound of the held m'v².
+    fn local(&self, theta_rad: f64) -> Local {
+        let law = self.law();
+        let (tension_n, q) = self.profile.piece_at(theta_rad).tension_friction(theta_rad);
+        let friction_n_per_rad = law.clamp_friction(tension_n, q);
+        let utilization = law.utilization_of(tension_n, friction_n_per_rad);
+        Local {
+            tension_n,
+            normal_n_per_rad: law.normal_n_per_rad(tension_n),
+            friction_n_per_rad,
+            utilization,
+            state: law.state(utilization, friction_n_per_rad),
+        }
     }
 
     fn roots(&self) -> RootStats {

@@ -5,7 +5,9 @@ use super::{Level3Error, Level3Stats, Params, Simulation, State};
 use crate::contact::{ARC_THRESHOLD, ContactLaw, SLIP_UTILIZATION};
 use crate::derived::{ArcTally, WrapSummary, ZoneRuns};
 use crate::model::history::sample::interpolate;
-use crate::model::history::{self, HistoryRun, HistorySample, MAP_COLUMNS, Output, SolverReport, Wrap, WrapModel};
+use crate::model::history::{
+    self, HistoryRun, HistorySample, Local, MAP_COLUMNS, Output, SolverReport, Wrap, WrapModel,
+};
 use crate::roots::{RootError, RootStats, brent};
 use crate::wrap::{Distribution, Sample};
 
@@ -18,7 +20,7 @@ impl WrapModel for Simulation<'_> {
 
     fn wrap(&self) -> Wrap {
         let w = &self.params.wrap;
-        Wrap { mu: w.mu, wrap_angle_rad: w.wrap_angle_rad, mass_per_m_kg: w.mass_per_m_kg }
+        Wrap { mu: w.mu, wrap_angle_rad: w.wrap_angle_rad, mass_per_m_kg: w.mass_per_m_kg, radius_m: w.radius_m }
     }
 
     fn settle(&mut self) -> Result<(), Level3Error> {
@@ -54,6 +56,51 @@ impl WrapModel for Simulation<'_> {
     fn solver_report(&self) -> SolverReport {
         SolverReport::from(&self.level3)
     }
+
+    /// Linear between the cuts `θ_k = k h` (the lattice's fixed positions; the carried state is
+    /// within h/2 of its material position, [`State::advect`]).
+    fn tension_n(&self, theta_rad: f64) -> f64 {
+        let s = &self.state;
+        let k = segment_of(s, theta_rad);
+        let w = (theta_rad / s.pitch_rad - k as f64).clamp(0.0, 1.0);
+        s.tension_n[k] + w * (s.tension_n[k + 1] - s.tension_n[k])
+    }
+
+    /// The segments' contact forces `N_k` (string pressure and lift-off forces), each in the
+    /// share of its segment `[θ_k, θ_{k+1}]` that `[a, b]` covers.
+    fn contact_force_n(&self, a_rad: f64, b_rad: f64) -> f64 {
+        let s = &self.state;
+        let h = s.pitch_rad;
+        (segment_of(s, a_rad)..=segment_of(s, b_rad))
+            .map(|k| {
+                let overlap = (b_rad.min((k + 1) as f64 * h) - a_rad.max(k as f64 * h)).max(0.0);
+                s.normal_n[k] * overlap / h
+            })
+            .sum()
+    }
+
+    /// The segment holding θ: its mean n and q per radian, its utilization, and the tension
+    /// between its cuts; the state by the contact law with the m'v² of the history's speed.
+    fn local(&self, theta_rad: f64) -> Local {
+        let s = &self.state;
+        let k = segment_of(s, theta_rad);
+        let mu = self.params.wrap.mu;
+        let speed_m_s = interpolate(self.samples(), self.t_s).speed_m_s;
+        let law = ContactLaw::new(mu, self.params.wrap.mass_per_m_kg * speed_m_s * speed_m_s);
+        let (q, u) = (s.friction_n_per_rad(k), s.utilization(k, mu));
+        Local {
+            tension_n: self.tension_n(theta_rad),
+            normal_n_per_rad: s.normal_n_per_rad(k),
+            friction_n_per_rad: q,
+            utilization: u,
+            state: law.state(u, q),
+        }
+    }
+}
+
+/// The segment holding θ (the last one at θ = α).
+fn segment_of(state: &State, theta_rad: f64) -> usize {
+    ((theta_rad / state.pitch_rad).max(0.0) as usize).min(state.segments() - 1)
 }
 
 /// Runs a history at level 3 from `initial` through [`history::run`], reporting as level 2 does

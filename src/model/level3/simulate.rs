@@ -12,8 +12,9 @@ use crate::model::history::sample::interpolate;
 use crate::model::level2::Solver;
 use crate::model::numerics::Numerics;
 
-/// A level-3 run through a history.
-#[derive(Debug)]
+/// A level-3 run through a history (a clone carries the state and rebuilds clarabel's workspace
+/// on its first solve).
+#[derive(Debug, Clone)]
 pub struct Simulation<'a> {
     /// The run's parameters.
     pub params: Params,
