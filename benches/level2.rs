@@ -4,8 +4,9 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
+use wrapcalc::model::history::{HistorySample, Output};
 use wrapcalc::model::level2::envelope::Envelopes;
-use wrapcalc::model::level2::{HistorySample, Output, Params, Profile, Solver, clamp, qp, run_history};
+use wrapcalc::model::level2::{Params, Profile, Solver, clamp, qp, run_history};
 use wrapcalc::roots::RootStats;
 
 const MU: f64 = 0.25;

@@ -8,8 +8,10 @@
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
 use std::path::Path;
+use wrapcalc::model::history::HistorySample;
 use wrapcalc::model::level2::Solver;
-use wrapcalc::model::level3::{self, HistorySample, Params, Simulation, State};
+use wrapcalc::model::level3::{Params, Simulation, State};
+use wrapcalc::model::numerics::Numerics;
 use wrapcalc::run::{self, Options};
 use wrapcalc::sheet;
 
@@ -26,8 +28,7 @@ fn params() -> Params {
         shear_stiffness_n_per_m2: 7.5e6,
         bending_stiffness_n_m2: 48.0,
         rope_inertia: true,
-        max_iter: level3::MAX_ITER,
-        travel_step_rad: level3::TRAVEL_STEP_RAD,
+        numerics: Numerics::default(),
     }
 }
 

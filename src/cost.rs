@@ -19,6 +19,7 @@ use crate::design::{Design, HistorySample, Output, Scene, SceneKind};
 use crate::dynamics::{self, Side};
 use crate::model::level2::Solver;
 use crate::model::level4;
+use crate::model::numerics::Numerics;
 use crate::planner::{self, Plan};
 use serde::Serialize;
 
@@ -179,7 +180,7 @@ fn history(
 ) -> Estimate {
     let samples = &h.samples;
     let output =
-        crate::model::level2::Output { snapshots_s: &h.snapshots_s, step_s: h.output_step_s, sample_rows: true };
+        crate::model::history::Output { snapshots_s: &h.snapshots_s, step_s: h.output_step_s, sample_rows: true };
     let times = output.times(samples);
     let mut drivers = vec![format!("{} samples (t_s or csv)", samples.len())];
     if let Some(step) = h.output_step_s {
@@ -202,7 +203,9 @@ fn history(
     }
     let reversals = load_reversals(samples);
     drivers.push(format!("{reversals} load reversals"));
-    let steps = crate::model::level2::simulate::centrifugal_steps(samples, design.rope.mass_per_m_kg) as u64;
+    let steps =
+        crate::model::level2::lattice::centrifugal_steps(samples, design.rope.mass_per_m_kg, &Numerics::default())
+            as u64;
     let parts = vec![checks, level2_part(samples.len() as u64, reversals, steps, rows)];
     Estimate::with_rows(level, parts, drivers, rows as f64)
 }
@@ -310,7 +313,7 @@ fn duty_cycle(
         // m'v² rises to its top and falls back once a trip: at most 2/CENTRIFUGAL_STEP_OF_RANGE
         // steps of its lattice.
         let trips = if cycle.return_after_s.is_some() { 2.0 } else { 1.0 };
-        let steps = trips * 2.0 / crate::model::level2::simulate::CENTRIFUGAL_STEP_OF_RANGE;
+        let steps = trips * 2.0 / crate::model::numerics::CENTRIFUGAL_STEP_OF_RANGE;
         parts.push(level2_part(samples as u64, reversals, steps as u64, rows as u64));
     }
     Estimate::with_rows(level, parts, drivers, rows)

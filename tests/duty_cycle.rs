@@ -20,7 +20,7 @@ fn run_scenes(design: &Design, names: &[&str]) -> Vec<SceneResult> {
 }
 
 /// Mean of a history column over rows with t in [a, b].
-fn mean(r: &SceneResult, a: f64, b: f64, f: impl Fn(&wrapcalc::model::level2::HistoryRow) -> f64) -> f64 {
+fn mean(r: &SceneResult, a: f64, b: f64, f: impl Fn(&wrapcalc::model::history::HistoryRow) -> f64) -> f64 {
     let rows: Vec<f64> =
         r.history.as_ref().expect("history").rows.iter().filter(|row| row.t_s >= a && row.t_s <= b).map(f).collect();
     assert!(!rows.is_empty());

@@ -8,9 +8,10 @@
 
 use wrapcalc::contact::ContactLaw;
 use wrapcalc::derived;
+use wrapcalc::model::history::{HistorySample, Output};
 use wrapcalc::model::level0::EndState;
 use wrapcalc::model::level1::steady_rolling;
-use wrapcalc::model::level2::{HistorySample, Output, Params, Profile, Simulation, Solver, run_history};
+use wrapcalc::model::level2::{Params, Profile, Simulation, Solver, run_history};
 use wrapcalc::wrap::TensionField;
 
 const MU: f64 = 0.25;

@@ -8,7 +8,8 @@ mod common;
 
 use common::{COULOMB_ROUNDING, EA_N, R_M, T0_N, assert_coulomb, at_rest};
 use wrapcalc::contact::ContactLaw;
-use wrapcalc::model::level2::{self, HistorySample, Output, Solver};
+use wrapcalc::model::history::{HistorySample, Output};
+use wrapcalc::model::level2::{self, Solver};
 use wrapcalc::model::level3::{self, ClarabelStatus, Level3Error, Params, SolveError, State, summarize};
 
 /// The bench rope with clarabel on every increment (the physics tests check the program;
@@ -237,7 +238,7 @@ fn fast_and_clarabel_agree() {
 fn an_unsolved_increment_is_an_error() {
     let alpha = std::f64::consts::PI;
     let mut p = params(0.25, alpha, 1e7);
-    p.max_iter = 1;
+    p.numerics.max_iter = 1;
     let samples = [at_rest(0.0, T0_N, T0_N), at_rest(1.0, 1.1 * T0_N, T0_N)];
     let err = level3::run_history(p, &samples, Output::default(), State::uniform(alpha, 90, T0_N)).unwrap_err();
     match err {
@@ -385,7 +386,7 @@ fn the_travel_step_converges_at_first_order() {
     let steady = [roll(0.0, 2.3e5, 2.0e5), roll(12.0, 2.3e5, 2.0e5)];
     let run = |samples: &[HistorySample], step_deg: f64| {
         let mut p = common::params(0.25, alpha, 1e9, Solver::Fast);
-        p.travel_step_rad = step_deg.to_radians();
+        p.numerics.travel_step_rad = step_deg.to_radians();
         common::run_to_end(p, 360, samples).state
     };
     let gap =

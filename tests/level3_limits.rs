@@ -5,7 +5,8 @@
 mod common;
 
 use common::{assert_coulomb, mirror, mirror_gap, params, run_to_end};
-use wrapcalc::model::level2::{HistorySample, Solver};
+use wrapcalc::model::history::HistorySample;
+use wrapcalc::model::level2::Solver;
 use wrapcalc::planner::Request;
 use wrapcalc::run::{Options, RunResult, SceneResult, run};
 

@@ -8,7 +8,8 @@ mod common;
 use common::{EA_N, T0_N, assert_coulomb, at_rest, mirror, mirror_gap, params};
 use wrapcalc::bench::cases::random_walk;
 use wrapcalc::contact::SLIP_UTILIZATION;
-use wrapcalc::model::level2::{HistorySample, Solver};
+use wrapcalc::model::history::HistorySample;
+use wrapcalc::model::level2::Solver;
 use wrapcalc::model::level3::{Params, Simulation, State};
 
 /// clarabel stops 1e-11 (scaled) short of the bounds it touches and settles N to 1e-9; the

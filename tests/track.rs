@@ -5,10 +5,16 @@
 //! Sheet of every test: pulley D = 5 m (R = 2.5 m), μ = 0.25, wrap 180° (α = π), rope
 //! m' = 10 kg/m, EA = 1e8 N, one rope.
 
+mod track_common;
+
 use std::f64::consts::PI;
+use track_common::{
+    RAMPS_IMPULSE_N_S, REST_SCENE, TURN_ENTRY_S, TURN_OMEGA, TURN_SCENE, assert_at_rest, ramps_scene,
+    tiling_starts_deg, turn_down_s,
+};
 use wrapcalc::contact::NodeState;
 use wrapcalc::design::Design;
-use wrapcalc::model::level2::track::Track;
+use wrapcalc::model::track::Track;
 use wrapcalc::run::{self, Options, RunError, SceneResult};
 use wrapcalc::sheet;
 
@@ -115,15 +121,8 @@ fn an_element_through_steady_rolling_follows_creep_theory() {
 /// [0, ln(k)/μ] = [0, 32.03°] with T = k·T0·e^{−μθ}, q = μT, and the rope beyond it keeps T0, q = 0.
 #[test]
 fn an_element_at_rest_stays_at_one_angle() {
-    let d = design(
-        "[[scene]]\nname = \"rest\"\nkind = \"history\"\nt_s = [0.0, 1.0, 2.0]\nt1_n = [2.0e5, 2.3e5, 2.3e5]\n\
-         t2_n = [2.0e5, 2.0e5, 2.0e5]\nspeed_m_s = [0.0, 0.0, 0.0]\ntrack_start_deg = [10.0, 90.0]\n",
-    );
-    let tracks = tracks(&d);
-    for (track, deg) in tracks.iter().zip([10.0, 90.0]) {
-        assert!(track.rows.len() >= 1000);
-        assert!(track.rows.iter().all(|r| r.theta_deg == deg), "{} moved", track.label);
-    }
+    let tracks = tracks(&design(REST_SCENE));
+    assert_at_rest(&tracks);
     let last = tracks[0].rows.last().expect("rows");
     let q = MU * 2.3e5 * (-MU * 10f64.to_radians()).exp();
     assert!((last.friction_n_per_rad - q).abs() < 1e-9 * q, "q = {} vs {q}", last.friction_n_per_rad);
@@ -132,36 +131,14 @@ fn an_element_at_rest_stays_at_one_angle() {
     assert_eq!((idle.tension_n, idle.friction_n_per_rad, idle.friction_force_n), (2.0e5, 0.0, 0.0));
 }
 
-/// A history through start, ramps of both end tensions at changing speed, and a stop.
-const RAMPS: &str = "t_s = [0.0, 1.0, 3.0, 4.0, 6.0, 7.0]\n\
-    t1_n = [1.8e5, 1.9e5, 2.0e5, 2.05e5, 1.95e5, 1.9e5]\n\
-    t2_n = [1.8e5, 1.75e5, 1.7e5, 1.72e5, 1.8e5, 1.85e5]\n";
-
-/// The sheet of [`RAMPS`] at the given speeds, following elements of ℓ = 0.5 m (2h = 0.2 rad)
-/// given by the angle of their centre at the start (negative: rope still on side 1).
+/// The ramps scene of the shared track tests on the rigid lining.
 fn tiled(speeds: &str, start_deg: &[f64]) -> Design {
-    let list: Vec<String> = start_deg.iter().map(|d| format!("{d:.17}")).collect();
-    design(&format!(
-        "[[scene]]\nname = \"ramps\"\nkind = \"history\"\n{RAMPS}speed_m_s = {speeds}\n\
-         track_length_m = 0.5\ntrack_step_s = 0.002\ntrack_start_deg = [{}]\n",
-        list.join(", ")
-    ))
+    design(&ramps_scene(speeds, start_deg, false))
 }
-
-/// The time integral of T1 − T2 over [`RAMPS`], exact for piecewise-linear tensions: the sum
-/// over the intervals of Δt·(d_a + d_b)/2 with d = T1 − T2 at the samples:
-/// d = 0, 15e3, 30e3, 33e3, 15e3, 5e3 → 0.5·15e3 + 2·22.5e3 + 31.5e3 + 2·24e3 + 10e3 = 142 000 N·s.
-const RAMPS_IMPULSE_N_S: f64 = 142_000.0;
 
 #[test]
 fn impulse_over_elements_tiling_the_rope_balances_the_end_tensions() {
-    // Speeds 0 → 1 → 3 → 3 → 1 → 0 m/s: the pulley turns φ_max = ∫v dt / R = (0.5 + 4 + 3 + 4 + 0.5)/2.5
-    // = 4.8 rad. Elements 2h apart tile the rope from θ₀ ∈ [α, α + 2h] (on side 2, never on the
-    // pulley) down past θ₀ = −φ_max (the rope on the pulley at the end).
-    let h = 0.1;
-    let starts: Vec<f64> = (0..).map(|k| PI + h - 2.0 * h * k as f64).take_while(|t| *t > -4.8 - 3.0 * h).collect();
-    let degs: Vec<f64> = starts.iter().map(|t| t.to_degrees()).collect();
-    let d = tiled("[0.0, 1.0, 3.0, 3.0, 1.0, 0.0]", &degs);
+    let d = tiled("[0.0, 1.0, 3.0, 3.0, 1.0, 0.0]", &tiling_starts_deg());
     let tracks = tracks(&d);
     let sum: f64 = tracks.iter().map(Track::impulse_n_s).sum();
     println!(
@@ -190,13 +167,8 @@ fn impulse_over_elements_tiling_the_rope_balances_the_end_tensions() {
 fn tracks_mirror_when_the_sides_swap() {
     let degs = [20.0, 100.0, 170.0, -60.0, -200.0];
     let d = tiled("[0.0, 1.0, 3.0, 3.0, 1.0, 0.0]", &degs);
-    let mirrored_sheet = RAMPS.replace("t1_n", "t_tmp").replace("t2_n", "t1_n").replace("t_tmp", "t2_n");
-    let mirror_degs: Vec<String> = degs.iter().map(|d| format!("{:.17}", 180.0 - d)).collect();
-    let m = design(&format!(
-        "[[scene]]\nname = \"ramps\"\nkind = \"history\"\n{mirrored_sheet}speed_m_s = [0.0, -1.0, -3.0, -3.0, -1.0, 0.0]\n\
-         track_length_m = 0.5\ntrack_step_s = 0.002\ntrack_start_deg = [{}]\n",
-        mirror_degs.join(", ")
-    ));
+    let mirror_degs: Vec<f64> = degs.iter().map(|d| 180.0 - d).collect();
+    let m = design(&ramps_scene("[0.0, -1.0, -3.0, -3.0, -1.0, 0.0]", &mirror_degs, true));
     let (a, b) = (tracks(&d), tracks(&m));
     let scale = 2.0e5;
     for (x, y) in a.iter().zip(&b) {
@@ -228,30 +200,8 @@ fn tracks_mirror_when_the_sides_swap() {
 /// at the root of F(t), found here by bisection on this closed form.
 #[test]
 fn the_impulse_turns_down_where_friction_reverses() {
-    let d = design(
-        "[[scene]]\nname = \"turn\"\nkind = \"history\"\nt_s = [0.0, 12.0]\nt1_n = [1.8e5, 1.92e5]\n\
-         t2_n = [2.0e5, 2.0e5]\nspeed_m_s = [2.0, 2.0]\ntrack_entry_s = [4.0]\ntrack_length_m = 0.5\n\
-         track_step_s = 0.002\n",
-    );
-    let (w, c, n2, h, t_e) = (0.8, M * 4.0, 2.0e5 - M * 4.0, 0.1, 4.0);
-    let t1 = |t: f64| 1.8e5 + 1000.0 * t;
-    let active = |theta: f64| c + n2 * (-MU * (PI - theta)).exp();
-    let bisect = |f: &dyn Fn(f64) -> f64, mut lo: f64, mut hi: f64| {
-        for _ in 0..200 {
-            let mid = 0.5 * (lo + hi);
-            if (f(mid) > 0.0) == (f(lo) > 0.0) { lo = mid } else { hi = mid }
-        }
-        0.5 * (lo + hi)
-    };
-    // Stick boundary: active(θ) = T1(t − θ/ω) (the stuck rope lies below the envelope beyond it).
-    let boundary = |t: f64| bisect(&|th: f64| active(th) - t1(t - th / w), 0.0, PI);
-    let tension = |th: f64, t: f64| if th < boundary(t) { t1(t - th / w) } else { active(th) };
-    let force = |t: f64| {
-        let centre = w * (t - t_e);
-        tension((centre - h).clamp(0.0, PI), t) - tension((centre + h).clamp(0.0, PI), t)
-    };
-    // F > 0 while the element is on the stuck part, < 0 once it is wholly in the reverse zone.
-    let t_star = bisect(&force, t_e + 0.5, t_e + PI / w);
+    let d = design(TURN_SCENE);
+    let (w, t_e, t_star) = (TURN_OMEGA, TURN_ENTRY_S, turn_down_s());
     let track = &tracks(&d)[0];
     let turn = track.turn_down.expect("the impulse turns down");
     // The root is converged to 1e-9 s; the state is exact (no grid): 1e-6 s covers the bisection

@@ -36,7 +36,8 @@ use crate::design::{
     Design, Direction, EndLoads, HistoryScene, LoadsScene, Output, Outputs, Pulley, Requirements, Rope, Scene,
     SceneKind, WrapSource,
 };
-pub use crate::model::level2::HistoryRow;
+pub use crate::model::history::HistoryRow;
+use crate::model::history::HistorySample;
 use crate::model::level2::{self, Level2Error, Params, Profile, Solver};
 use crate::planner::Request;
 use crate::run::{self, Options, RunError, RunResult};
@@ -173,11 +174,11 @@ fn bench_design(name: &str, kind: SceneKind) -> Design {
     }
 }
 
-fn sample(t_s: f64, t1_n: f64, t2_n: f64, speed_m_s: f64) -> level2::HistorySample {
-    level2::HistorySample { t_s, t1_n, t2_n, speed_m_s }
+fn sample(t_s: f64, t1_n: f64, t2_n: f64, speed_m_s: f64) -> HistorySample {
+    HistorySample { t_s, t1_n, t2_n, speed_m_s }
 }
 
-fn history(samples: Vec<level2::HistorySample>) -> SceneKind {
+fn history(samples: Vec<HistorySample>) -> SceneKind {
     SceneKind::History(HistoryScene {
         samples,
         snapshots_s: Vec::new(),
@@ -396,7 +397,7 @@ pub fn arc_rms_deg(rows: &[HistoryRow], reference: &[HistoryRow]) -> Option<f64>
 
 /// `samples` history samples 10 ms apart, rolling at 1 m/s, both end tensions a bounded random
 /// walk (±0.5 % per sample within 160–260 kN) from a fixed seed.
-pub fn rolling_walk(samples: usize) -> Vec<level2::HistorySample> {
+pub fn rolling_walk(samples: usize) -> Vec<HistorySample> {
     random_walk(samples, 0x9E37_79B9_7F4A_7C15, 0.01, None)
 }
 
@@ -404,12 +405,7 @@ pub fn rolling_walk(samples: usize) -> Vec<level2::HistorySample> {
 /// sample multiplying them by 1 + `rel_step`·(u − ½) with u uniform in [0, 1) (xorshift64 from
 /// `seed`), kept within 160–260 kN; the rope runs at 1 m/s, reversing every `reverse_every`
 /// samples when given.
-pub fn random_walk(
-    samples: usize,
-    seed: u64,
-    rel_step: f64,
-    reverse_every: Option<usize>,
-) -> Vec<level2::HistorySample> {
+pub fn random_walk(samples: usize, seed: u64, rel_step: f64, reverse_every: Option<usize>) -> Vec<HistorySample> {
     let mut seed = seed;
     let mut rnd = move || {
         seed ^= seed << 13;
@@ -429,7 +425,7 @@ pub fn random_walk(
 }
 
 /// The random-walk history at level 2 (fast path), a history row once a second.
-pub fn run_walk(samples: &[level2::HistorySample], nodes: usize) -> Result<Outcome, Level2Error> {
+pub fn run_walk(samples: &[HistorySample], nodes: usize) -> Result<Outcome, Level2Error> {
     let params = Params {
         mu: MU,
         wrap_angle_rad: alpha_rad(),
@@ -438,7 +434,7 @@ pub fn run_walk(samples: &[level2::HistorySample], nodes: usize) -> Result<Outco
         ea_n: EA_N,
         solver: Solver::Fast,
     };
-    let output = level2::Output { snapshots_s: &[], step_s: Some(1.0), sample_rows: false };
+    let output = crate::model::history::Output { snapshots_s: &[], step_s: Some(1.0), sample_rows: false };
     let initial = Profile::uniform(alpha_rad(), samples[0].t1_n, MU);
     let run = level2::run_history(params, samples, output, initial, nodes)?;
     Ok(Outcome { error: None, steps: Some(run.stats.increments), duty: None })

@@ -6,7 +6,7 @@ use super::plot_panels::{Line, PALETTE, Panel, plot_panels};
 use super::plot_track::track_panels;
 use super::{ReportError, io};
 use crate::design::{Compare, CompareQuantity};
-use crate::model::level2::track::Track;
+use crate::model::track::Track;
 use crate::run::{HistoryOutput, SceneResult};
 use std::fs::{self, File};
 use std::io::{BufWriter, Write};

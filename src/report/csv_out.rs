@@ -1,7 +1,7 @@
 //! CSV reports: summary.csv (one row per scene), `<scene>/distribution.csv` and `<scene>/history.csv`.
 
 use super::summary::Summary;
-use crate::model::level2::HistoryRow;
+use crate::model::history::HistoryRow;
 use crate::wrap::Distribution;
 use std::io::Write;
 
@@ -106,7 +106,7 @@ pub fn write_history<W: Write>(
 }
 
 /// track.csv: one row per element and reported time while the element is on the pulley.
-pub fn write_tracks<W: Write>(out: W, tracks: &[crate::model::level2::track::Track]) -> csv::Result<()> {
+pub fn write_tracks<W: Write>(out: W, tracks: &[crate::model::track::Track]) -> csv::Result<()> {
     let mut w = csv::Writer::from_writer(out);
     w.write_record([
         "element",

@@ -5,7 +5,7 @@
 
 use super::plot::{Chart, e};
 use super::plot_series::{Line, Stroke, jdp_runs};
-use crate::model::level2::HistoryRow;
+use crate::model::history::HistoryRow;
 use plotters::prelude::*;
 
 /// Colour of side 1's line (T1; the safety factor this instant).

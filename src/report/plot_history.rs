@@ -9,7 +9,7 @@ use super::plot::{Area, Chart, PlotError, e, font, padded_range, render, stacked
 use super::plot_colorbar::{BAR_AREA_W, ColourBar, draw_colour_bar};
 use super::plot_series::{Line, Stroke, draw_line, draw_swatch, jdp_runs, legend_of, legend_strip};
 use super::plot_zones::Swatch;
-use crate::model::level2::HistoryRow;
+use crate::model::history::HistoryRow;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 use std::path::Path;

@@ -4,7 +4,7 @@
 
 use super::plot::PlotError;
 use super::plot_panels::{Line, PALETTE, Panel, plot_panels};
-use crate::model::level2::track::Track;
+use crate::model::track::Track;
 use std::path::Path;
 
 /// The panels of a track figure (also what `[[compare]]` overlays).
@@ -18,7 +18,7 @@ pub fn track_panels(tracks: &[(String, &Track)], mu: f64) -> Vec<Panel> {
     ];
     for (i, (label, track)) in tracks.iter().enumerate() {
         let color = PALETTE[i % PALETTE.len()];
-        let series = |f: &dyn Fn(&crate::model::level2::track::TrackRow) -> f64| -> Vec<(f64, f64)> {
+        let series = |f: &dyn Fn(&crate::model::track::TrackRow) -> f64| -> Vec<(f64, f64)> {
             track.rows.iter().map(|r| (r.t_s, f(r))).collect()
         };
         panels[0].lines.push(Line::solid(label.clone(), color, series(&|r| kn(r.contact_force_n))));

@@ -6,7 +6,7 @@ use crate::design::{Design, Requirements};
 use crate::fit::CreepFit;
 use crate::load_cases::MatrixResult;
 use crate::margins::Margins;
-use crate::model::level2::StepStats;
+use crate::model::history::SolverReport;
 use crate::model::level3::Level3Stats;
 use crate::model::stop::StopReport;
 use crate::roots::RootStats;
@@ -185,7 +185,7 @@ pub struct SceneJson {
     /// Calls and iterations of argmin's Brent method on the distribution (level 1 and up).
     pub root_finding: Option<RootStats>,
     /// Increments, node events and clarabel verdicts of the discrete level.
-    pub solver: Option<StepStats>,
+    pub solver: Option<SolverReport>,
     /// Level 3: the active-set solver's terminations, Newton steps, increments handed to
     /// clarabel and clarabel's verdicts, over the scene and its run-in.
     pub level3_solver: Option<Level3Stats>,
@@ -231,8 +231,8 @@ pub struct TrackJson {
 }
 
 impl TrackJson {
-    fn of(t: &crate::model::level2::track::Track, length_m: f64) -> Self {
-        let fold = |f: &dyn Fn(&crate::model::level2::track::TrackRow) -> f64, max: bool| {
+    fn of(t: &crate::model::track::Track, length_m: f64) -> Self {
+        let fold = |f: &dyn Fn(&crate::model::track::TrackRow) -> f64, max: bool| {
             let it = t.rows.iter().map(f);
             if max { it.fold(0.0, f64::max) } else { it.fold(0.0, f64::min) }
         };

@@ -6,7 +6,6 @@ use crate::derived;
 use crate::design::{Design, EndLoads, LoadsScene, Scene};
 use crate::model::level0;
 use crate::model::level1;
-use crate::model::level2;
 use crate::planner::Plan;
 use crate::wrap::Distribution;
 
@@ -53,8 +52,15 @@ pub(super) fn run_loads(
             let samples = steady_run(design, &state, loads.direction);
             let entry = if samples[0].speed_m_s >= 0.0 { state.t1_n } else { state.t2_n };
             let initial = Initial::Uniform(entry);
-            let (run, level3) =
-                wrap_history(design, scene, &result.plan, &samples, level2::Output::default(), initial, options)?;
+            let (run, level3) = wrap_history(
+                design,
+                scene,
+                &result.plan,
+                &samples,
+                crate::model::history::Output::default(),
+                initial,
+                options,
+            )?;
             crate::tally::add_increments(run.stats.increments);
             result.level3 = level3;
             let last = run.snapshots.into_iter().last();

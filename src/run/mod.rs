@@ -25,8 +25,9 @@ use crate::derived::WrapSummary;
 use crate::design::{Design, Scene, SceneKind};
 use crate::fit::{CreepFit, FitError};
 use crate::margins::Margins;
+use crate::model::history::{HistoryRow, SolverReport};
 use crate::model::level0::{Classical, EndState};
-use crate::model::level2::{HistoryRow, Level2Error, Params, Solver, StepStats};
+use crate::model::level2::{Level2Error, Params, Solver};
 use crate::model::level3::{Level3Error, Level3Stats};
 use crate::model::level4::Level4Error;
 use crate::model::stop::{SlipOnset, StopReport};
@@ -108,15 +109,6 @@ pub enum RunError {
         source: Level4Error,
     },
     #[error(
-        "scene \"{scene}\": track_*: rope elements are followed on the rigid lining (level 2); this scene's wrap \
-         runs at level 3 on the elastic lining. Run it with --level 2, or follow the elements in a scene without the lining"
-    )]
-    /// Rope elements are asked for in a scene whose wrap runs on the elastic lining (level 3).
-    TracksAtLevel3 {
-        /// The scene's name.
-        scene: String,
-    },
-    #[error(
         "scene \"{scene}\": track_*: rope elements are followed by the wrap model (level 2 or more); this scene runs at \
          level {level}. Ask for \"history\" or \"distribution\" in its outputs, or do not force --level {level}"
     )]
@@ -183,7 +175,7 @@ pub struct HistoryOutput {
     /// Utilization signed by friction (+ positive, − reverse) per row, on equally spaced angles.
     pub map: Vec<Vec<f64>>,
     /// Increments, node events and solver verdicts of the discrete level.
-    pub stats: StepStats,
+    pub stats: SolverReport,
     /// Duty cycles: tension per rope at the side-1 and side-2 conveyance anchors at each row's
     /// time (N); empty for other scenes.
     pub anchors_n: Vec<[f64; 2]>,

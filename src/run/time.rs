@@ -3,16 +3,16 @@
 //! through them at level 2 or 3.
 
 use super::trip::{self, Trip};
-use super::wrap_run::{Initial, level2_initial, wrap_history};
+use super::wrap_run::{Initial, run_model, wrap_model};
 use super::{HistoryOutput, Options, RunError, SceneResult, WrapResult, empty};
 use crate::design::{Design, Direction, DutyCycleScene, HistorySample, HistoryScene, Hoist, Scene};
 use crate::dynamics::Kinematics;
+use crate::model::history;
 use crate::model::level0::{self, EndState};
 use crate::model::level1;
-use crate::model::level2;
 use crate::model::level4::{self, Level4Error};
 use crate::model::stop;
-use crate::planner::{self, Plan};
+use crate::planner::Plan;
 
 pub(super) fn run_history(
     design: &Design,
@@ -21,7 +21,8 @@ pub(super) fn run_history(
     plan: Plan,
     options: Options,
 ) -> Result<SceneResult, RunError> {
-    let output = level2::Output { snapshots_s: &history.snapshots_s, step_s: history.output_step_s, sample_rows: true };
+    let output =
+        history::Output { snapshots_s: &history.snapshots_s, step_s: history.output_step_s, sample_rows: true };
     let travel = match history.samples.iter().map(|s| s.speed_m_s).find(|v| *v != 0.0) {
         Some(v) if v < 0.0 => Direction::Lower,
         Some(_) => Direction::Lift,
@@ -74,7 +75,7 @@ pub(super) fn run_duty_cycle(
     // Snapshots after the end of a trip that slipped grossly are not valid.
     let end_s = trip.samples.last().map_or(0.0, |s| s.t_s);
     let snapshots_s: Vec<f64> = cycle.snapshots_s.iter().copied().filter(|t| *t <= end_s).collect();
-    let output = level2::Output { snapshots_s: &snapshots_s, step_s: Some(cycle.output_step_s), sample_rows: false };
+    let output = history::Output { snapshots_s: &snapshots_s, step_s: Some(cycle.output_step_s), sample_rows: false };
     let input = Samples {
         samples: &trip.samples,
         accel_m_s2: Some(&accel),
@@ -133,7 +134,7 @@ struct Samples<'a> {
     /// Hanging length of side 1 at the first sample (m), when the scene has a hoist.
     side1_length_m: Option<f64>,
     /// When the wrap reports (rows and snapshots).
-    output: level2::Output<'a>,
+    output: history::Output<'a>,
 }
 
 /// A scene given as end tensions and speed over time (history and duty-cycle scenes): level 0
@@ -179,10 +180,13 @@ fn run_samples(
         None => Initial::Uniform(first.t1_n),
         Some(r) => Initial::Rolling { level1: r, first, direction },
     };
-    let (run, level3) = wrap_history(design, scene, &result.plan, samples, output, initial, options)?;
+    let model = wrap_model(design, scene, &result.plan, samples, initial, options)?;
+    // The tracks follow the same model from the same start.
+    let for_tracks = scene.tracks.as_ref().map(|_| model.clone());
+    let (run, level3) = run_model(model, scene, samples, output, options)?;
     crate::tally::add_increments(run.stats.increments);
     result.level3 = level3;
-    let mut snapshots: Vec<level2::Snapshot> = run.snapshots;
+    let mut snapshots: Vec<history::Snapshot> = run.snapshots;
     let last = snapshots.pop();
     result.snapshots = snapshots.into_iter().map(|s| s.distribution).collect();
     if let Some(last) = last {
@@ -205,12 +209,8 @@ fn run_samples(
         pulley_radius_m: 0.5 * design.pulley.diameter_m,
     });
     result.nodes = Some(options.nodes);
-    if let Some(tracks) = &scene.tracks {
-        if planner::wrap_level(&result.plan, design.lining.is_some()) == 3 {
-            return Err(RunError::TracksAtLevel3 { scene: scene.name.clone() });
-        }
-        let start = level2_initial(design, initial);
-        let out = super::track::run(design, scene, tracks, samples, start, travel, side1_length_m, options)?;
+    if let (Some(tracks), Some(model)) = (&scene.tracks, for_tracks) {
+        let out = super::track::run(design, scene, tracks, samples, model, travel, side1_length_m)?;
         result.tracks = Some(out);
     }
     Ok(result)

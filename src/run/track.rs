@@ -1,11 +1,11 @@
 //! A time scene's rope elements through the wrap: where each sits on the rope (from the sheet's
-//! `track_*` keys), then the level-2 tracks ([`crate::model::level2::track`]).
+//! `track_*` keys), then their tracks on the scene's wrap model ([`crate::model::track`]).
 
-use super::{Options, RunError, params};
+use super::RunError;
+use super::wrap_run::Model;
 use crate::design::{Design, Direction, ElementAt, HistorySample, Scene, Tracks};
-use crate::model::level2::Profile;
-use crate::model::level2::track::{self, Element, Track};
-use crate::model::level2::turn::PulleyTurn;
+use crate::model::track::turn::PulleyTurn;
+use crate::model::track::{self, Element, Track};
 
 /// Fewest rows a scene at rest (or a very slow one) gives an element over the scene.
 const ROWS_AT_REST: f64 = 1000.0;
@@ -61,23 +61,29 @@ pub fn default_step_s(samples: &[HistorySample], radius_m: f64) -> f64 {
     if v_max == 0.0 { at_rest } else { (1f64.to_radians() * radius_m / v_max).min(at_rest) }
 }
 
-/// Runs the scene's tracks through `samples` from `initial` on the rigid lining.
+/// Runs the scene's tracks through `samples` on the scene's wrap model `model` (level 2 or 3, at
+/// the history's start).
 #[allow(clippy::too_many_arguments)]
 pub(super) fn run(
     design: &Design,
     scene: &Scene,
     tracks: &Tracks,
     samples: &[HistorySample],
-    initial: Profile,
+    model: Model,
     direction: Direction,
     side1_length_m: Option<f64>,
-    options: Options,
 ) -> Result<TrackOutput, RunError> {
-    let p = params(design, options.solver);
-    let turn = PulleyTurn::new(samples, p.radius_m);
-    let elements = elements(tracks, &turn, p.radius_m, p.wrap_angle_rad, direction, side1_length_m);
-    let step_s = tracks.step_s.unwrap_or_else(|| default_step_s(samples, p.radius_m));
-    let (tracks_out, _) = track::run_tracks(p, samples, initial, &elements, tracks.element_length_m, step_s)
-        .map_err(|source| RunError::Level2 { scene: scene.name.clone(), source })?;
-    Ok(TrackOutput { element_length_m: tracks.element_length_m, step_s, tracks: tracks_out })
+    let (radius_m, wrap_angle_rad) = (0.5 * design.pulley.diameter_m, design.pulley.wrap_angle_rad);
+    let turn = PulleyTurn::new(samples, radius_m);
+    let elements = elements(tracks, &turn, radius_m, wrap_angle_rad, direction, side1_length_m);
+    let step_s = tracks.step_s.unwrap_or_else(|| default_step_s(samples, radius_m));
+    let length_m = tracks.element_length_m;
+    let name = || scene.name.clone();
+    let (tracks_out, _) = match model {
+        Model::Rigid(sim) => track::run_tracks(*sim, samples, &elements, length_m, step_s)
+            .map_err(|source| RunError::Level2 { scene: name(), source })?,
+        Model::Elastic(sim, _) => track::run_tracks(*sim, samples, &elements, length_m, step_s)
+            .map_err(|source| RunError::Level3 { scene: name(), source })?,
+    };
+    Ok(TrackOutput { element_length_m: length_m, step_s, tracks: tracks_out })
 }

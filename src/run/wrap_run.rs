@@ -1,13 +1,16 @@
 //! The wrap run through a history: the one runner that `loads` scenes (their steady run-through)
 //! and time scenes (histories and duty cycles) share. It picks the wrap model the plan gives
-//! (level 2 on a rigid lining, level 3 on an elastic one) and the state it starts from.
+//! (level 2 on a rigid lining, level 3 on an elastic one) and the state it starts from; the
+//! rope elements of a time scene follow the same model ([`super::track`]).
 
 use super::{Options, RunError, params};
 use crate::design::{Design, Direction, HistorySample, Scene};
+use crate::model::history::{self, HistoryRun, Output};
 use crate::model::level0::EndState;
 use crate::model::level1;
 use crate::model::level2::{self, Profile};
 use crate::model::level3;
+use crate::model::numerics::Numerics;
 use crate::planner::{self, Plan, PlanError};
 
 /// Creep speed used to reach the state "after the rope last ran" for a scene at rest (m/s):
@@ -48,17 +51,25 @@ pub(super) enum Initial<'a> {
     Rolling { level1: &'a level1::SteadyRolling, first: EndState, direction: Direction },
 }
 
-/// Runs the wrap through a history at the plan's wrap level (2, or 3 on an elastic lining), with
-/// the level-3 solver counters (its run-in included) when it ran at level 3.
-pub(super) fn wrap_history(
+/// The wrap model of a scene at the start of its history (not yet settled).
+#[derive(Clone)]
+pub(super) enum Model<'a> {
+    /// Level 2: the rope on the rigid lining.
+    Rigid(Box<level2::Simulation<'a>>),
+    /// Level 3: the rope on the elastic lining, with the counters of its run-in.
+    Elastic(Box<level3::Simulation<'a>>, level3::Level3Stats),
+}
+
+/// The wrap model at the plan's wrap level (2, or 3 on an elastic lining) through `samples`,
+/// started from `initial` (at level 3 the rolling state is reached by a run-in).
+pub(super) fn wrap_model<'a>(
     design: &Design,
     scene: &Scene,
     plan: &Plan,
-    samples: &[HistorySample],
-    output: level2::Output,
+    samples: &'a [HistorySample],
     initial: Initial,
     options: Options,
-) -> Result<(level2::HistoryRun, Option<level3::Level3Stats>), RunError> {
+) -> Result<Model<'a>, RunError> {
     let alpha = design.pulley.wrap_angle_rad;
     match (planner::wrap_level(plan, design.lining.is_some()), design.lining) {
         (3, Some(lining)) => {
@@ -67,8 +78,7 @@ pub(super) fn wrap_history(
                 shear_stiffness_n_per_m2: lining.shear_stiffness_n_per_m2,
                 bending_stiffness_n_m2: design.rope.bending_stiffness_n_m2,
                 rope_inertia: lining.rope_inertia,
-                max_iter: level3::MAX_ITER,
-                travel_step_rad: level3::TRAVEL_STEP_RAD,
+                numerics: Numerics::default(),
             };
             let err = |source| RunError::Level3 { scene: scene.name.clone(), source };
             let mut stats = level3::Level3Stats::default();
@@ -85,16 +95,49 @@ pub(super) fn wrap_history(
                     sim.state
                 }
             };
-            let (run, run_stats) = level3::run_history(params, samples, output, initial).map_err(err)?;
-            stats.add(&run_stats);
-            Ok((run, Some(stats)))
+            let sim = level3::Simulation::new(params, samples, initial).map_err(err)?;
+            Ok(Model::Elastic(Box::new(sim), stats))
         }
         (3, None) => Err(PlanError::NoLining { scene: scene.name.clone() }.into()),
         _ => {
             let initial = level2_initial(design, initial);
-            level2::run_history(params(design, options.solver), samples, output, initial, options.nodes)
-                .map(|run| (run, None))
-                .map_err(|source| RunError::Level2 { scene: scene.name.clone(), source })
+            Ok(Model::Rigid(Box::new(level2::Simulation::new(params(design, options.solver), samples, initial))))
         }
+    }
+}
+
+/// Runs the wrap through a history at the plan's wrap level ([`wrap_model`]), with the level-3
+/// solver counters (its run-in included) when it ran at level 3.
+pub(super) fn wrap_history(
+    design: &Design,
+    scene: &Scene,
+    plan: &Plan,
+    samples: &[HistorySample],
+    output: Output,
+    initial: Initial,
+    options: Options,
+) -> Result<(HistoryRun, Option<level3::Level3Stats>), RunError> {
+    let model = wrap_model(design, scene, plan, samples, initial, options)?;
+    run_model(model, scene, samples, output, options)
+}
+
+/// Runs `model` through `samples` with the one history runner ([`history::run`]).
+pub(super) fn run_model(
+    model: Model,
+    scene: &Scene,
+    samples: &[HistorySample],
+    output: Output,
+    options: Options,
+) -> Result<(HistoryRun, Option<level3::Level3Stats>), RunError> {
+    match model {
+        Model::Elastic(sim, mut stats) => {
+            let (run, run_stats) = history::run(*sim, samples, output, options.nodes)
+                .map_err(|source| RunError::Level3 { scene: scene.name.clone(), source })?;
+            stats.add(&run_stats);
+            Ok((run, Some(stats)))
+        }
+        Model::Rigid(sim) => history::run(*sim, samples, output, options.nodes)
+            .map(|(run, _)| (run, None))
+            .map_err(|source| RunError::Level2 { scene: scene.name.clone(), source }),
     }
 }

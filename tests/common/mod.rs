@@ -2,8 +2,10 @@
 //! rest, runs to a final state, Coulomb's law and mirror images of histories and states.
 #![allow(dead_code)]
 
-use wrapcalc::model::level2::{self, HistorySample, Solver};
+use wrapcalc::model::history::HistorySample;
+use wrapcalc::model::level2::{self, Solver};
 use wrapcalc::model::level3::{self, Params, State};
+use wrapcalc::model::numerics::Numerics;
 
 pub const R_M: f64 = 2.5;
 pub const EA_N: f64 = 2.634e8;
@@ -24,8 +26,7 @@ pub fn params(mu: f64, alpha_rad: f64, shear_stiffness_n_per_m2: f64, solver: So
         shear_stiffness_n_per_m2,
         bending_stiffness_n_m2: 0.0,
         rope_inertia: false,
-        max_iter: level3::MAX_ITER,
-        travel_step_rad: level3::TRAVEL_STEP_RAD,
+        numerics: Numerics::default(),
     }
 }
 

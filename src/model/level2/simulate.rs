@@ -10,16 +10,21 @@
 //! the answer by round-off only, and no node count enters.
 //!
 //! m'v² enters through the contact force `n = T − m'v²`. It is held constant between the points
-//! of a lattice (spacing [`CENTRIFUGAL_STEP_REL`]) that the speed's own course defines, and
-//! equals m'v² exactly wherever the speed is constant; at each lattice point the stuck rope that the new m'v² puts beyond the Coulomb
-//! limit is repaired ([`super::repair`]) before the clamp.
+//! of a lattice ([`super::lattice`]) that the speed's own course defines, and equals m'v² exactly
+//! wherever the speed is constant; at each lattice point the stuck rope that the new m'v² puts
+//! beyond the Coulomb limit is repaired ([`super::repair`]) before the clamp.
 
 use super::clamp::{self, Touched};
 use super::envelope::{Envelopes, Line};
+use super::lattice;
 use super::profile::Profile;
 use super::qp::{self, QpError, QpVerdict};
 use super::repair;
 use super::schedule::{self, Linear};
+use super::stats::Level2Stats;
+use crate::model::history::HistorySample;
+use crate::model::history::sample::segment;
+use crate::model::numerics::Numerics;
 use crate::roots::RootStats;
 use crate::wrap::{EntryRamp, Piece};
 use serde::Serialize;
@@ -33,8 +38,6 @@ pub enum Solver {
     /// The same increment as a convex program in clarabel.
     Clarabel,
 }
-
-pub use crate::design::HistorySample;
 
 /// What the rigid-lining model needs of the hoist.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -53,14 +56,6 @@ pub struct Params {
     pub solver: Solver,
 }
 
-/// Spacing of the m'v² lattice: the larger of this fraction of the history's largest end
-/// tension and [`CENTRIFUGAL_STEP_OF_RANGE`] of its largest m'v². While the speed changes, the
-/// contact force is exact to that spacing (on the reference hoist 1.07 N, 7e-6 of the tension);
-/// at constant speed it is exact.
-pub const CENTRIFUGAL_STEP_REL: f64 = 1e-6;
-/// See [`CENTRIFUGAL_STEP_REL`]: at most a thousand steps from rest to the top speed.
-pub const CENTRIFUGAL_STEP_OF_RANGE: f64 = 1e-3;
-
 /// Why a simulation stopped.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum SimError {
@@ -77,35 +72,6 @@ pub enum SimError {
         /// The smaller end tension at that instant, per rope (N).
         tension_n: f64,
     },
-}
-
-/// Solver tallies, reported in summary.json.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize)]
-pub struct StepStats {
-    /// Clamps of the profile (one per cut piece of a sample interval).
-    pub increments: u64,
-    /// Level 3: lattice moves of the segments with the pulley.
-    pub node_events: u64,
-    /// Increments in gross slip: the end contact forces beyond the Euler ratio `e^{μα}` (or no
-    /// admissible profile between the envelopes), so the whole wrap slides.
-    pub gross_slip_increments: u64,
-    /// Steps of m'v² on its lattice.
-    pub centrifugal_steps: u64,
-    /// Stretches of stuck rope repaired after m'v² rose.
-    pub repairs: u64,
-    /// Increments clarabel solved (status Solved, polished or not).
-    pub qp_solved: u64,
-    /// Of the solved increments, those whose active-set polish was accepted.
-    pub qp_polished: u64,
-    /// Increments clarabel left AlmostSolved (accepted, reported as a warning).
-    pub qp_almost_solved: u64,
-    /// Largest relative difference between clarabel's optimum and the exact clamp at a knot.
-    pub qp_max_deviation_rel: f64,
-    /// Level 3: extra clarabel solves of the fixed point on the contact forces.
-    pub normal_force_passes: u64,
-    /// Level 3 with the fast solver: increments whose unconstrained (elastic) minimiser met
-    /// every Coulomb bound strictly, so that it is the program's solution without clarabel.
-    pub elastic_increments: u64,
 }
 
 /// What the last increment did, for the slip velocity.
@@ -132,8 +98,10 @@ pub struct Simulation<'a> {
     /// m'v² the state holds (N).
     pub centrifugal_n: f64,
     centrifugal_step_n: f64,
+    /// Step sizes of the run ([`Numerics::centrifugal_step_rel`] and its twin).
+    pub numerics: Numerics,
     /// Solver tallies so far.
-    pub stats: StepStats,
+    pub stats: Level2Stats,
     /// Root searches so far (the clamps' and repairs' crossings).
     pub roots: RootStats,
     last: LastStep,
@@ -141,7 +109,8 @@ pub struct Simulation<'a> {
 }
 
 impl<'a> Simulation<'a> {
-    /// Starts at the first sample with the given state (its ends are set by [`Self::settle`]).
+    /// Starts at the first sample with the given state (its ends are set by [`Self::settle`]),
+    /// with the default [`Numerics`].
     pub fn new(params: Params, samples: &'a [HistorySample], profile: Profile) -> Self {
         let t_s = samples.first().map_or(0.0, |s| s.t_s);
         let centrifugal_n = samples.first().map_or(0.0, |s| params.mass_per_m_kg * s.speed_m_s * s.speed_m_s);
@@ -152,22 +121,24 @@ impl<'a> Simulation<'a> {
             profile,
             gross_slip: false,
             centrifugal_n,
-            centrifugal_step_n: centrifugal_step_n(samples, params.mass_per_m_kg),
-            stats: StepStats::default(),
+            centrifugal_step_n: lattice::centrifugal_step_n(samples, params.mass_per_m_kg, &Numerics::default()),
+            numerics: Numerics::default(),
+            stats: Level2Stats::default(),
             roots: RootStats::default(),
             last: LastStep::default(),
             scratch: clamp::Scratch::default(),
         }
     }
 
-    /// The interpolated sample at `t`.
-    pub fn at(&self, t: f64) -> HistorySample {
-        interpolate(self.samples, t)
+    /// The same run with other step sizes.
+    pub fn with_numerics(self, numerics: Numerics) -> Self {
+        let centrifugal_step_n = lattice::centrifugal_step_n(self.samples, self.params.mass_per_m_kg, &numerics);
+        Self { numerics, centrifugal_step_n, ..self }
     }
 
-    /// Speed slope (m/s²) on the segment starting at or before `t`.
-    pub fn accel_m_s2(&self, t: f64) -> f64 {
-        speed_slope(self.samples, t)
+    /// The history the run steps through.
+    pub fn samples(&self) -> &'a [HistorySample] {
+        self.samples
     }
 
     /// Applies the first sample's ends without motion.
@@ -230,7 +201,8 @@ impl<'a> Simulation<'a> {
                 end = tz;
                 centrifugal = Some(0.0);
             }
-            if let Some((tc, c)) = self.lattice_crossing(input, tau, end) {
+            let (step, r, m) = (self.centrifugal_step_n, p.radius_m, p.mass_per_m_kg);
+            if let Some((tc, c)) = lattice::crossing(input, tau, end, step, r, m) {
                 end = tc;
                 centrifugal = Some(c);
             }
@@ -246,42 +218,6 @@ impl<'a> Simulation<'a> {
             tau = end;
         }
         Ok(())
-    }
-
-    /// The next point of the m'v² lattice the speed reaches on (lo, hi), and its m'v² (the
-    /// speed's own zero is a separate event).
-    fn lattice_crossing(&self, input: &Linear, lo: f64, hi: f64) -> Option<(f64, f64)> {
-        let e = input.omega_slope_per_s2;
-        let step = self.centrifugal_step_n;
-        if e == 0.0 || step <= 0.0 || self.params.mass_per_m_kg == 0.0 {
-            return None;
-        }
-        let (r, m) = (self.params.radius_m, self.params.mass_per_m_kg);
-        let mid = 0.5 * (lo + hi);
-        let sign = input.omega_per_s(mid).signum();
-        let w_lo = input.omega_per_s(lo);
-        let c_lo = m * (w_lo * r).powi(2);
-        let rising = sign * e > 0.0;
-        // Lattice points at (k + ½)·step: a sample at the largest speed, or any constant speed
-        // on a whole multiple of the step, lies half a step from a point, never on one.
-        let x = c_lo / step - 0.5;
-        let mut level = if rising { x.floor() + 1.0 } else { x.ceil() - 1.0 };
-        for _ in 0..3 {
-            if level < 0.0 {
-                return None;
-            }
-            let c = (level + 0.5) * step;
-            let w = sign * (c / m).sqrt() / r;
-            let tau = (w - input.omega_per_s) / e;
-            if tau > lo && tau < hi {
-                return Some((tau, c));
-            }
-            if tau >= hi {
-                return None;
-            }
-            level += if rising { 1.0 } else { -1.0 };
-        }
-        None
     }
 
     /// m'v² steps to `c` at local time τ: stuck rope beyond the new limit is repaired, then the
@@ -450,68 +386,4 @@ fn speed_zero(input: &Linear, lo: f64, hi: f64) -> Option<f64> {
     }
     let t = -input.omega_per_s / e;
     (t > lo && t < hi).then_some(t)
-}
-
-/// Spacing of the m'v² lattice for a history (N), see [`CENTRIFUGAL_STEP_REL`].
-pub fn centrifugal_step_n(samples: &[HistorySample], mass_per_m_kg: f64) -> f64 {
-    let t_max = samples.iter().map(|s| s.t1_n.max(s.t2_n)).fold(0.0, f64::max);
-    // |v| is largest at a sample (it is linear between them), so both maxima are the same
-    // however the history is sampled.
-    let c_max = samples.iter().map(|s| mass_per_m_kg * s.speed_m_s * s.speed_m_s).fold(0.0, f64::max);
-    (CENTRIFUGAL_STEP_REL * t_max).max(CENTRIFUGAL_STEP_OF_RANGE * c_max)
-}
-
-/// Steps of m'v² on its lattice through a history: the total variation of m'v² over the
-/// spacing (known before the run, for its cost).
-pub fn centrifugal_steps(samples: &[HistorySample], mass_per_m_kg: f64) -> f64 {
-    let step = centrifugal_step_n(samples, mass_per_m_kg);
-    if step <= 0.0 {
-        return 0.0;
-    }
-    let c = |v: f64| mass_per_m_kg * v * v;
-    let variation: f64 = samples
-        .windows(2)
-        .map(|w| {
-            let (a, b) = (w[0].speed_m_s, w[1].speed_m_s);
-            // Through zero, m'v² falls to 0 and rises again.
-            if a * b < 0.0 { c(a) + c(b) } else { (c(b) - c(a)).abs() }
-        })
-        .sum();
-    (variation / step).ceil()
-}
-
-/// Index k of the sample segment [t_k, t_{k+1}) containing t (the last sample at or after the end).
-fn segment(samples: &[HistorySample], t: f64) -> usize {
-    match samples.partition_point(|s| s.t_s <= t) {
-        0 => 0,
-        p => (p - 1).min(samples.len().saturating_sub(1)),
-    }
-}
-
-/// Speed slope (m/s²) on the sample segment starting at or before `t`; 0 after the last sample.
-pub fn speed_slope(samples: &[HistorySample], t: f64) -> f64 {
-    let k = segment(samples, t);
-    match (samples.get(k), samples.get(k + 1)) {
-        (Some(a), Some(b)) if b.t_s > a.t_s => (b.speed_m_s - a.speed_m_s) / (b.t_s - a.t_s),
-        _ => 0.0,
-    }
-}
-
-/// Linear interpolation of a history at t (held constant outside the samples).
-pub fn interpolate(samples: &[HistorySample], t: f64) -> HistorySample {
-    let k = segment(samples, t);
-    let a = samples[k];
-    match samples.get(k + 1) {
-        Some(b) if b.t_s > a.t_s && t > a.t_s => {
-            let w = ((t - a.t_s) / (b.t_s - a.t_s)).clamp(0.0, 1.0);
-            let lerp = |x: f64, y: f64| x + w * (y - x);
-            HistorySample {
-                t_s: t,
-                t1_n: lerp(a.t1_n, b.t1_n),
-                t2_n: lerp(a.t2_n, b.t2_n),
-                speed_m_s: lerp(a.speed_m_s, b.speed_m_s),
-            }
-        }
-        _ => HistorySample { t_s: t, ..a },
-    }
 }

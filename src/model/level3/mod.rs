@@ -49,9 +49,11 @@
 //!
 //! Between history samples the ends and speed are linear in time. A sample interval is split
 //! into increments that move the pulley at most [`TRAVEL_STEP_RAD`] (or one pitch on a coarser
-//! lattice) and change an end's contact force by at most [`LOAD_STEP`] of it; before each
-//! increment the lattice moves with the pulley ([`State::advect`]). Outputs (history rows,
-//! snapshots, the utilization map) are those of level 2 ([`output`]).
+//! lattice) and change an end's contact force by at most [`LOAD_STEP`] of it (both
+//! [`Numerics`] knobs); before each
+//! increment the lattice moves with the pulley ([`State::advect`]). The history runner
+//! ([`crate::model::history`]) reports the state as it reports level 2's: [`output`] gives it
+//! the level-3 state as a [`crate::model::history::WrapModel`].
 
 pub mod active_set;
 pub mod bending;
@@ -70,22 +72,9 @@ pub use simulate::Simulation;
 pub use state::State;
 pub use stats::Level3Stats;
 
-pub use crate::model::level2::HistorySample;
 use crate::roots::RootError;
 
-/// Relative change of the contact forces below which clarabel's fixed point on N has converged.
-pub const NORMAL_TOLERANCE: f64 = 1e-9;
-/// Most clarabel solves of the fixed point on N in one increment (more is an error). Each pass
-/// integrates the slip arc's N once more, like a Picard iteration of dT/dθ = −μT over the arc β,
-/// so its error falls as (μβ)^m/m!: near the limit of a wrap with μα ≈ 3, some 25 passes for
-/// 1e-9, and a pass is lost each time the program is infeasible for the N it was given.
-pub const MAX_NORMAL_PASSES: u32 = 100;
-/// Largest change of an end's contact force in one increment, relative to it.
-pub const LOAD_STEP: f64 = 0.01;
-/// Largest pulley travel in one increment (1°), unless one pitch is larger.
-pub const TRAVEL_STEP_RAD: f64 = std::f64::consts::PI / 180.0;
-/// clarabel's iteration cap per solve.
-pub const MAX_ITER: u32 = 100;
+pub use crate::model::numerics::{LOAD_STEP, MAX_ITER, MAX_NORMAL_PASSES, NORMAL_TOLERANCE, Numerics, TRAVEL_STEP_RAD};
 
 /// What level 3 needs of the hoist (per rope, SI): the wrap of level 2 and the lining, bending
 /// and inertia.
@@ -101,11 +90,9 @@ pub struct Params {
     pub bending_stiffness_n_m2: f64,
     /// Whether the rope's inertia along the wrap (m' R a per radian) enters equilibrium.
     pub rope_inertia: bool,
-    /// clarabel's iteration cap per solve.
-    pub max_iter: u32,
-    /// Largest pulley travel of one increment (rad; one pitch when that is larger), normally
-    /// [`TRAVEL_STEP_RAD`].
-    pub travel_step_rad: f64,
+    /// Step sizes, tolerances and iteration caps (level 3 uses [`Numerics::load_step`],
+    /// [`Numerics::travel_step_rad`], [`Numerics::max_iter`] and clarabel's fixed point on N).
+    pub numerics: Numerics,
 }
 
 /// Why a level-3 run failed.
@@ -120,10 +107,12 @@ pub enum Level3Error {
         source: SolveError,
     },
     /// The contact forces of an increment did not reach a fixed point.
-    #[error("at t = {t_s} s: the contact forces did not settle in {MAX_NORMAL_PASSES} clarabel passes")]
+    #[error("at t = {t_s} s: the contact forces did not settle in {passes} clarabel passes")]
     NormalForces {
         /// Time of the increment (s).
         t_s: f64,
+        /// The passes allowed ([`Numerics::max_normal_passes`]).
+        passes: u32,
     },
     /// The centrifugal tension reaches the rope tension: no contact force is left.
     #[error("the rope loses contact at t = {t_s} s: m'v² = {centrifugal_n:.1} N reaches the tension {tension_n:.1} N")]

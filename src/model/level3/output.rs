@@ -1,43 +1,118 @@
-//! What a level-3 run reports: history rows, snapshots and the utilization map as level 2 does,
-//! from the segments of the level-3 state.
+//! What a level-3 run reports: the level-3 state as the history runner's [`WrapModel`] (history
+//! rows, snapshots and the utilization map as level 2 reports them), from its segments.
 
 use super::{Level3Error, Level3Stats, Params, Simulation, State};
 use crate::contact::{ARC_THRESHOLD, ContactLaw, SLIP_UTILIZATION};
 use crate::derived::{ArcTally, WrapSummary, ZoneRuns};
-use crate::model::level0::{EndState, euler_limit};
-use crate::model::level2::{HistoryRun, HistorySample, MAP_COLUMNS, Output, Snapshot};
+use crate::model::history::sample::interpolate;
+use crate::model::history::{
+    self, HistoryRun, HistorySample, Local, MAP_COLUMNS, Output, SolverReport, Wrap, WrapModel,
+};
 use crate::roots::{RootError, RootStats, brent};
 use crate::wrap::{Distribution, Sample};
 
-/// Runs a history at level 3 from `initial`, reporting as level 2 does (rows, snapshots,
-/// utilization map), with the level-3 solver counters.
+/// The elastic-lining model as the history runner sees it: one distribution row per segment
+/// midpoint (the output node count does not enter), the contact law with the m'v² of the
+/// history's speed at the row.
+impl WrapModel for Simulation<'_> {
+    type Error = Level3Error;
+    type Counters = Level3Stats;
+
+    fn wrap(&self) -> Wrap {
+        let w = &self.params.wrap;
+        Wrap { mu: w.mu, wrap_angle_rad: w.wrap_angle_rad, mass_per_m_kg: w.mass_per_m_kg, radius_m: w.radius_m }
+    }
+
+    fn settle(&mut self) -> Result<(), Level3Error> {
+        Simulation::settle(self)
+    }
+
+    fn advance_to(&mut self, t_s: f64) -> Result<(), Level3Error> {
+        Simulation::advance_to(self, t_s)
+    }
+
+    fn summary(&self, zones: bool) -> Result<WrapSummary, RootError> {
+        summarize(&self.state, self.params.wrap.mu, zones)
+    }
+
+    fn distribution(&self, t_s: f64, summary: &WrapSummary, _output_nodes: usize) -> Distribution {
+        let speed_m_s = interpolate(self.samples(), t_s).speed_m_s;
+        let c = self.params.wrap.mass_per_m_kg * speed_m_s * speed_m_s;
+        distribution(t_s, &self.state, self.params.wrap.mu, c, summary, self.gross_slip, self.last_dt_s)
+    }
+
+    fn utilization_row(&self) -> Vec<f64> {
+        utilization_map(&self.state, self.params.wrap.mu)
+    }
+
+    fn gross_slip(&self) -> bool {
+        self.gross_slip
+    }
+
+    fn counters(&self) -> Level3Stats {
+        self.level3
+    }
+
+    fn solver_report(&self) -> SolverReport {
+        SolverReport::from(&self.level3)
+    }
+
+    /// Linear between the cuts `θ_k = k h` (the lattice's fixed positions; the carried state is
+    /// within h/2 of its material position, [`State::advect`]).
+    fn tension_n(&self, theta_rad: f64) -> f64 {
+        let s = &self.state;
+        let k = segment_of(s, theta_rad);
+        let w = (theta_rad / s.pitch_rad - k as f64).clamp(0.0, 1.0);
+        s.tension_n[k] + w * (s.tension_n[k + 1] - s.tension_n[k])
+    }
+
+    /// The segments' contact forces `N_k` (string pressure and lift-off forces), each in the
+    /// share of its segment `[θ_k, θ_{k+1}]` that `[a, b]` covers.
+    fn contact_force_n(&self, a_rad: f64, b_rad: f64) -> f64 {
+        let s = &self.state;
+        let h = s.pitch_rad;
+        (segment_of(s, a_rad)..=segment_of(s, b_rad))
+            .map(|k| {
+                let overlap = (b_rad.min((k + 1) as f64 * h) - a_rad.max(k as f64 * h)).max(0.0);
+                s.normal_n[k] * overlap / h
+            })
+            .sum()
+    }
+
+    /// The segment holding θ: its mean n and q per radian, its utilization, and the tension
+    /// between its cuts; the state by the contact law with the m'v² of the history's speed.
+    fn local(&self, theta_rad: f64) -> Local {
+        let s = &self.state;
+        let k = segment_of(s, theta_rad);
+        let mu = self.params.wrap.mu;
+        let speed_m_s = interpolate(self.samples(), self.t_s).speed_m_s;
+        let law = ContactLaw::new(mu, self.params.wrap.mass_per_m_kg * speed_m_s * speed_m_s);
+        let (q, u) = (s.friction_n_per_rad(k), s.utilization(k, mu));
+        Local {
+            tension_n: self.tension_n(theta_rad),
+            normal_n_per_rad: s.normal_n_per_rad(k),
+            friction_n_per_rad: q,
+            utilization: u,
+            state: law.state(u, q),
+        }
+    }
+}
+
+/// The segment holding θ (the last one at θ = α).
+fn segment_of(state: &State, theta_rad: f64) -> usize {
+    ((theta_rad / state.pitch_rad).max(0.0) as usize).min(state.segments() - 1)
+}
+
+/// Runs a history at level 3 from `initial` through [`history::run`], reporting as level 2 does
+/// (rows, snapshots, utilization map), with the level-3 solver counters.
 pub fn run_history(
     params: Params,
     samples: &[HistorySample],
     output: Output,
     initial: State,
 ) -> Result<(HistoryRun, Level3Stats), Level3Error> {
-    let times = output.times(samples);
-    let mut sim = Simulation::new(params, samples, initial)?;
-    sim.settle()?;
-    let limit = euler_limit(params.wrap.mu, params.wrap.wrap_angle_rad);
-    let mut run = HistoryRun::with_capacity(times.len());
-    for &t in &times {
-        sim.advance_to(t)?;
-        let s = sim.at(t);
-        let end = EndState::of_sample(&s, sim.accel_m_s2(t), params.wrap.mass_per_m_kg);
-        let c = end.centrifugal_n;
-        let snapshot = output.is_snapshot(t, samples);
-        let summary = summarize(&sim.state, params.wrap.mu, snapshot)?;
-        run.push_row(t, &end, &summary, limit, sim.gross_slip);
-        run.map.push(utilization_map(&sim.state, params.wrap.mu));
-        if snapshot {
-            let distribution = distribution(t, &sim.state, params.wrap.mu, c, &summary, sim.gross_slip, sim.last_dt_s);
-            run.snapshots.push(Snapshot { summary, distribution });
-        }
-    }
-    run.stats = sim.stats;
-    Ok((run, sim.level3))
+    let sim = Simulation::new(params, samples, initial)?;
+    history::run(sim, samples, output, 0)
 }
 
 /// Arcs, JDP, peak utilization (and, when `zones`, the contact zones) of a level-3 state.

@@ -139,6 +139,23 @@ pub struct Program {
     b: Vec<f64>,
 }
 
+impl Clone for Program {
+    /// The same program; clarabel's workspace is built again at the copy's first solve.
+    fn clone(&self) -> Self {
+        Self {
+            segments: self.segments,
+            rho: self.rho,
+            ea_n: self.ea_n,
+            radius_m: self.radius_m,
+            solver: None,
+            settings: self.settings.clone(),
+            weights: self.weights.clone(),
+            q: self.q.clone(),
+            b: self.b.clone(),
+        }
+    }
+}
+
 impl std::fmt::Debug for Program {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.debug_struct("Program").field("segments", &self.segments).field("rho", &self.rho).finish()

@@ -6,12 +6,15 @@ use super::bending::{Bending, ContactGrid};
 use super::limit::{Slide, gross_slip, sliding_field};
 use super::qp::{Loads, Program, Verdict};
 use super::stats::Level3Stats;
-use super::{LOAD_STEP, Level3Error, MAX_NORMAL_PASSES, NORMAL_TOLERANCE, Params, State, normal};
-use crate::model::level2::simulate::{interpolate, speed_slope};
-use crate::model::level2::{HistorySample, Solver, StepStats};
+use super::{Level3Error, Params, State, normal};
+use crate::model::history::HistorySample;
+use crate::model::history::sample::interpolate;
+use crate::model::level2::Solver;
+use crate::model::numerics::Numerics;
 
-/// A level-3 run through a history.
-#[derive(Debug)]
+/// A level-3 run through a history (a clone carries the state and rebuilds clarabel's workspace
+/// on its first solve).
+#[derive(Debug, Clone)]
 pub struct Simulation<'a> {
     /// The run's parameters.
     pub params: Params,
@@ -22,9 +25,7 @@ pub struct Simulation<'a> {
     pub state: State,
     /// Whether the last increment slipped grossly (no admissible field).
     pub gross_slip: bool,
-    /// Level 2's tallies (increments, node events, clarabel solves), kept for `solver`.
-    pub stats: StepStats,
-    /// Level 3's own solver counters.
+    /// The solver counters of the run.
     pub level3: Level3Stats,
     /// Duration of the last increment (s), for slip velocities.
     pub last_dt_s: f64,
@@ -77,7 +78,7 @@ impl<'a> Simulation<'a> {
             params.wrap.radius_m,
             params.wrap.ea_n,
             params.shear_stiffness_n_per_m2,
-            params.max_iter,
+            params.numerics.max_iter,
         )
         .map_err(|source| Level3Error::Solve { t_s: 0.0, source })?;
         let t_s = samples.first().map_or(0.0, |s| s.t_s);
@@ -88,7 +89,6 @@ impl<'a> Simulation<'a> {
             t_s,
             state,
             gross_slip: false,
-            stats: StepStats::default(),
             level3: Level3Stats::default(),
             last_dt_s: 0.0,
             program,
@@ -108,9 +108,9 @@ impl<'a> Simulation<'a> {
         interpolate(self.samples, t)
     }
 
-    /// Speed slope on the sample segment holding `t` (m/s²).
-    pub fn accel_m_s2(&self, t: f64) -> f64 {
-        speed_slope(self.samples, t)
+    /// The history the run steps through.
+    pub fn samples(&self) -> &'a [HistorySample] {
+        self.samples
     }
 
     /// Applies the first sample's ends without motion.
@@ -129,9 +129,12 @@ impl<'a> Simulation<'a> {
     }
 
     /// The increments from the current time to `t_end`. A sample interval is split into
-    /// increments that change an end's contact force by at most [`LOAD_STEP`] of it and move the
+    /// increments that change an end's contact force by at most [`Numerics::load_step`] of it and move the
     /// pulley at most one pitch, or, where the ends and the speed are constant over the interval
-    /// (steady loading), at most [`Params::travel_step_rad`] when that is larger.
+    /// (steady loading), at most [`Numerics::travel_step_rad`] when that is larger.
+    ///
+    /// [`Numerics::load_step`]: crate::model::numerics::Numerics::load_step
+    /// [`Numerics::travel_step_rad`]: crate::model::numerics::Numerics::travel_step_rad
     pub fn plan(&self, t_end: f64) -> Vec<PlannedIncrement> {
         let radius_m = self.params.wrap.radius_m;
         let mut out = Vec::new();
@@ -144,10 +147,14 @@ impl<'a> Simulation<'a> {
             let travel = 0.5 * (s0.speed_m_s + s1.speed_m_s) * span / radius_m;
             let c0 = self.params.wrap.mass_per_m_kg * s0.speed_m_s.powi(2);
             let n_lo = (s0.t1_n.min(s0.t2_n) - c0).max(f64::MIN_POSITIVE);
-            let load = (s1.t1_n - s0.t1_n).abs().max((s1.t2_n - s0.t2_n).abs()) / (LOAD_STEP * n_lo);
+            let load =
+                (s1.t1_n - s0.t1_n).abs().max((s1.t2_n - s0.t2_n).abs()) / (self.params.numerics.load_step * n_lo);
             let steady = s0.t1_n == s1.t1_n && s0.t2_n == s1.t2_n && s0.speed_m_s == s1.speed_m_s;
-            let travel_step =
-                if steady { self.params.travel_step_rad.max(self.state.pitch_rad) } else { self.state.pitch_rad };
+            let travel_step = if steady {
+                self.params.numerics.travel_step_rad.max(self.state.pitch_rad)
+            } else {
+                self.state.pitch_rad
+            };
             let steps = (travel.abs() / travel_step).max(load).ceil().clamp(1.0, 1e6) as usize;
             let accel = if span > 0.0 { (s1.speed_m_s - s0.speed_m_s) / span } else { 0.0 };
             let mut t_prev = t_s;
@@ -182,7 +189,6 @@ impl<'a> Simulation<'a> {
         let (entry_from, entry_to) =
             if delta_rad >= 0.0 { (self.last_ends_n.0, s.t1_n) } else { (self.last_ends_n.1, s.t2_n) };
         let pitches = self.state.advect(delta_rad, entry_from, entry_to);
-        self.stats.node_events += pitches;
         self.level3.pitches_moved += pitches;
         let n = self.state.segments();
         self.state.tension_n[0] = s.t1_n;
@@ -215,10 +221,8 @@ impl<'a> Simulation<'a> {
             Solver::Clarabel => self.solve_clarabel(&step, s.t_s)?,
         }
         self.last_pitches = pitches;
-        self.stats.increments += 1;
         self.level3.increments += 1;
         if self.gross_slip {
-            self.stats.gross_slip_increments += 1;
             self.level3.gross_slip_increments += 1;
         }
         self.last_dt_s = dt_s;
@@ -276,7 +280,6 @@ impl<'a> Simulation<'a> {
             }
             self.state.set_scaled(s, &solver.x, &solver.normal, &solver.f);
             if converged && solver.active == 0 {
-                self.stats.elastic_increments += 1;
                 self.level3.elastic_increments += 1;
             }
         }
@@ -305,8 +308,8 @@ impl<'a> Simulation<'a> {
         normal::normal_forces(&self.state.tension_n, c, h, &step.grid, &mut used);
         let shares: Vec<f64> = (0..self.state.segments()).map(|k| step.grid.lining_share(k)).collect();
         for pass in 1.. {
-            if pass > MAX_NORMAL_PASSES {
-                return Err(Level3Error::NormalForces { t_s });
+            if pass > self.params.numerics.max_normal_passes {
+                return Err(Level3Error::NormalForces { t_s, passes: self.params.numerics.max_normal_passes });
             }
             self.level3.max_clarabel_solves = self.level3.max_clarabel_solves.max(pass);
             // Each pass starts from the state before the increment.
@@ -317,34 +320,30 @@ impl<'a> Simulation<'a> {
                 .solve(&mut self.state, &step.loads, &used, &shares)
                 .map_err(|source| Level3Error::Solve { t_s, source })?;
             self.level3.clarabel.record(verdict);
-            match verdict {
-                Verdict::Solved => self.stats.qp_solved += 1,
-                Verdict::AlmostSolved => self.stats.qp_almost_solved += 1,
-                Verdict::Infeasible => {
-                    self.state.tension_n.copy_from_slice(&self.old_tension);
-                    self.state.friction_n.copy_from_slice(&self.old_friction);
-                    match self.after_infeasible(step) {
-                        // Gross slip: the state holds the sliding field.
-                        None => {
-                            self.scratch = next;
-                            return Ok(());
-                        }
-                        // The program was infeasible only for the contact forces it was given.
-                        Some(seed) => {
-                            used = seed;
-                            self.level3.normal_force_passes += 1;
-                            continue;
-                        }
+            if verdict == Verdict::Infeasible {
+                self.state.tension_n.copy_from_slice(&self.old_tension);
+                self.state.friction_n.copy_from_slice(&self.old_friction);
+                match self.after_infeasible(step) {
+                    // Gross slip: the state holds the sliding field.
+                    None => {
+                        self.scratch = next;
+                        return Ok(());
+                    }
+                    // The program was infeasible only for the contact forces it was given.
+                    Some(seed) => {
+                        used = seed;
+                        self.level3.normal_force_passes += 1;
+                        continue;
                     }
                 }
             }
             normal::normal_forces(&self.state.tension_n, c, h, &step.grid, &mut next);
-            let settled = settled(&self.state.friction_n, &used, &next, step.loads.mu);
+            let settled = settled(&self.state.friction_n, &used, &next, step.loads.mu, &self.params.numerics);
             std::mem::swap(&mut used, &mut next);
             if settled {
                 break;
             }
-            self.stats.normal_force_passes += 1;
+            self.level3.fixed_point_passes += 1;
             self.level3.normal_force_passes += 1;
         }
         // Coulomb exactly: clarabel's interior point meets an active bound to its tolerance.
@@ -403,15 +402,12 @@ fn problem<'b>(x_old: &'b [f64], f_old: &'b [f64], step: &'b Step, pitch_rad: f6
 
 /// Whether a clarabel solution found with the contact forces `used` is the fixed point for the
 /// forces `new` of its own tensions. Only segments at the Coulomb bound see N in the optimality
-/// conditions: there N must agree to [`NORMAL_TOLERANCE`]; a segment inside the bound stays a
-/// solution of the same program as long as it is inside the new bound too.
-fn settled(friction_n: &[f64], used: &[f64], new: &[f64], mu: f64) -> bool {
+/// conditions: there N must agree to [`Numerics::normal_tolerance`] (a segment within
+/// [`Numerics::active_gap`] of its bound is at it); a segment inside the bound stays a solution
+/// of the same program as long as it is inside the new bound too.
+fn settled(friction_n: &[f64], used: &[f64], new: &[f64], mu: f64, numerics: &Numerics) -> bool {
     friction_n.iter().zip(used).zip(new).all(|((f, a), b)| {
-        let at_bound = f.abs() >= mu * a * (1.0 - ACTIVE_GAP);
-        if at_bound { (a - b).abs() <= NORMAL_TOLERANCE * b.abs() } else { f.abs() < mu * b }
+        let at_bound = f.abs() >= mu * a * (1.0 - numerics.active_gap);
+        if at_bound { (a - b).abs() <= numerics.normal_tolerance * b.abs() } else { f.abs() < mu * b }
     })
 }
-
-/// A segment whose friction is within this fraction of its bound counts as at the bound
-/// (clarabel's interior-point solution approaches an active bound to about 1e-9).
-const ACTIVE_GAP: f64 = 1e-6;

@@ -77,6 +77,11 @@ pub struct Level3Stats {
     pub normal_force_passes: u64,
     /// The most clarabel solves in one increment.
     pub max_clarabel_solves: u32,
+    /// Of [`Self::normal_force_passes`], those after a feasible solve whose contact forces had
+    /// not settled (the others follow an infeasible one); summary.json's `solver` block reports
+    /// them as its `normal_force_passes`.
+    #[serde(skip)]
+    pub fixed_point_passes: u64,
 }
 
 impl Level3Stats {
@@ -98,5 +103,6 @@ impl Level3Stats {
         self.clarabel.infeasible += o.clarabel.infeasible;
         self.normal_force_passes += o.normal_force_passes;
         self.max_clarabel_solves = self.max_clarabel_solves.max(o.max_clarabel_solves);
+        self.fixed_point_passes += o.fixed_point_passes;
     }
 }

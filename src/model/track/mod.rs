@@ -1,31 +1,39 @@
 //! Rope elements followed through the wrap: what one piece of rope feels as the pulley carries
-//! it from the entry to the exit (docs/physics.md, "Rope elements through the wrap").
+//! it from the entry to the exit (docs/physics.md, "Rope elements through the wrap"), on either
+//! wrap model ([`WrapModel`]: level 2 on the rigid lining, level 3 on the elastic one).
 //!
-//! On a rigid lining a material point of the rope keeps its coordinate `ξ = θ − φ` ([`super::turn`]),
-//! so an element of length ℓ (`2h = ℓ/R` rad) centred at `φ_e` covers `θ ∈ [φ(t) − φ_e − h,
-//! φ(t) − φ_e + h]`. While any of it is on the pulley (clipped to `[a, b] ⊂ [0, α]`) the wrap acts
-//! on it with
+//! A material point of the rope is taken to keep its coordinate `ξ = θ − φ` ([`turn`]): it moves
+//! with the pulley. On the rigid lining that is exact for the state (level 2 neglects the rope's
+//! creep in its slip zones, a relative speed of order ΔT/EA ≈ 1e-4). On the elastic lining the
+//! rope also moves relative to the lining, by the shear of the lining and its slip; this is
+//! neglected in the element's position (its order is the strain difference `(T1 − T2)/EA` over
+//! the wrap, some 1e-4 of the wrap's length on the reference hoist). An element of length ℓ
+//! (`2h = ℓ/R` rad) centred at `φ_e` covers `θ ∈ [φ(t) − φ_e − h, φ(t) − φ_e + h]`. While any of it
+//! is on the pulley (clipped to `[a, b] ⊂ [0, α]`) the wrap acts on it with
 //!
-//! - the friction force `F = ∫_a^b q dθ = T(a) − T(b)` (N, positive in +θ; `dT/dθ = −q`),
-//! - the contact force `N = ∫_a^b (T − m'v²) dθ` (N),
+//! - the friction force `F = T(a) − T(b)` (N, positive in +θ; `dT/dθ = −q`, so `F = ∫_a^b q dθ`
+//!   where the rope's inertia is off),
+//! - the contact force `N = ∫_a^b n dθ` (N),
 //!
-//! both exact from the closed-form state, and the running friction impulse `J(t) = ∫ F dt`
-//! (trapezoidal rule on the track's rows). Because `F` telescopes, elements that tile the rope
-//! carry `Σ F = T1 − T2` at every instant. Per radian, at the element's centre (at the nearer
-//! tangent point while the centre is off the pulley): tension, contact force `n`, friction `q`,
-//! utilization `|q|/(μn)` and state.
+//! from the model's state ([`WrapModel::tension_n`], [`WrapModel::contact_force_n`]: exact from
+//! the closed-form pieces at level 2, from the segments at level 3), and the running friction
+//! impulse `J(t) = ∫ F dt` (trapezoidal rule on the track's rows). Because `F` telescopes,
+//! elements that tile the rope carry `Σ F = T1 − T2` at every instant. Per radian, at the
+//! element's centre (at the nearer tangent point while the centre is off the pulley): tension,
+//! contact force `n`, friction `q`, utilization `|q|/(μn)` and state ([`WrapModel::local`]).
 //!
 //! The impulse turns down where `F` changes from the sign of the motion to the other sign,
-//! beyond 0.001·μN either way (the paper's reading of the demarcation point on an element): that instant is found by Brent's
-//! method on `F(t)` between the two rows that bracket it, each trial advancing a copy of the
-//! simulation from the earlier row.
+//! beyond 0.001·μN either way (the paper's reading of the demarcation point on an element): that
+//! instant is found by Brent's method on `F(t)` between the two rows that bracket it, each trial
+//! advancing a copy of the model from the earlier row (at level 3 the copy plans its own
+//! increments to the trial time, so `F(t)` between rows carries their discretisation).
 
-use super::simulate::{Params, Simulation};
-use super::turn::PulleyTurn;
-use super::{Level2Error, Profile};
-use crate::contact::{ContactLaw, NodeState};
-use crate::design::HistorySample;
+pub mod turn;
+
+use crate::contact::NodeState;
+use crate::model::history::{HistorySample, WrapModel};
 use crate::roots::{self, RootStats};
+use turn::PulleyTurn;
 
 /// Friction below this fraction of its Coulomb bound counts as none (the arcs' threshold).
 const ARC_THRESHOLD: f64 = 1e-3;
@@ -98,30 +106,30 @@ impl Track {
     }
 }
 
-/// Follows `elements` of length `element_length_m` through the history from `initial`, with a
-/// row every `step_s` (and at every sample, every entry and exit of an element).
-pub fn run_tracks(
-    params: Params,
+/// Follows `elements` of length `element_length_m` through the history with `model` (at the
+/// history's first sample, not yet settled), with a row every `step_s` (and at every sample,
+/// every entry and exit of an element).
+pub fn run_tracks<M: WrapModel + Clone>(
+    mut model: M,
     samples: &[HistorySample],
-    initial: Profile,
     elements: &[Element],
     element_length_m: f64,
     step_s: f64,
-) -> Result<(Vec<Track>, RootStats), Level2Error> {
-    let turn = PulleyTurn::new(samples, params.radius_m);
-    let half = 0.5 * element_length_m / params.radius_m;
-    let alpha = params.wrap_angle_rad;
+) -> Result<(Vec<Track>, RootStats), M::Error> {
+    let wrap = model.wrap();
+    let turn = PulleyTurn::new(samples, wrap.radius_m);
+    let half = 0.5 * element_length_m / wrap.radius_m;
+    let alpha = wrap.wrap_angle_rad;
     let times = grid(samples, &turn, elements, half, alpha, step_s);
-    let mut sim = Simulation::new(params, samples, initial);
-    sim.settle()?;
+    model.settle()?;
     let mut tracks: Vec<Track> =
         elements.iter().map(|e| Track { label: e.label.clone(), rows: Vec::new(), turn_down: None }).collect();
     let mut roots = RootStats::default();
     // Tolerance of "on the pulley" at an entry or exit instant (round-off of φ).
     let slack = 1e-9 * (1.0 + alpha);
-    let mut before: Option<(f64, Simulation)> = None;
+    let mut before: Option<(f64, M)> = None;
     for &t in &times {
-        sim.advance_to(t)?;
+        model.advance_to(t)?;
         let phi = turn.at(t);
         let mut any = false;
         for (e, track) in elements.iter().zip(tracks.iter_mut()) {
@@ -130,20 +138,20 @@ pub fn run_tracks(
                 continue;
             }
             any = true;
-            let row = row_at(&sim, t, centre, half, track.rows.last());
+            let row = row_at(&model, t, centre, half, track.rows.last());
             let on = centre >= half && centre <= alpha - half;
             if track.turn_down.is_none()
                 && let (Some(prev), Some((t_before, earlier))) = (track.rows.last(), before.as_ref())
                 && prev.t_s == *t_before
-                && turns_down(prev, &row, on, params.mu, turn.omega_per_s(0.5 * (prev.t_s + t)))
+                && turns_down(prev, &row, on, wrap.mu, turn.omega_per_s(0.5 * (prev.t_s + t)))
             {
-                let probe = Probe { sim: earlier, turn: &turn, element: e, half };
+                let probe = Probe { model: earlier, turn: &turn, element: e, half };
                 track.turn_down = Some(probe.turn_down(prev, t, &mut roots)?);
             }
             track.rows.push(row);
         }
         // The state a turn-down search starts from (only needed while an element is on the pulley).
-        before = any.then(|| (t, sim.clone()));
+        before = any.then(|| (t, model.clone()));
     }
     Ok((tracks, roots))
 }
@@ -191,37 +199,29 @@ fn covered(centre: f64, half: f64, alpha: f64) -> (f64, f64) {
     ((centre - half).clamp(0.0, alpha), (centre + half).clamp(0.0, alpha))
 }
 
-/// The friction force on the element centred at `centre` (N).
-fn friction_force_n(sim: &Simulation, centre: f64, half: f64) -> f64 {
-    let (a, b) = covered(centre, half, sim.params.wrap_angle_rad);
-    if b <= a { 0.0 } else { sim.profile.tension_n(a) - sim.profile.tension_n(b) }
+/// The friction force `T(a) − T(b)` on the element centred at `centre` (N).
+fn friction_force_n<M: WrapModel>(model: &M, centre: f64, half: f64) -> f64 {
+    let (a, b) = covered(centre, half, model.wrap().wrap_angle_rad);
+    if b <= a { 0.0 } else { model.tension_n(a) - model.tension_n(b) }
 }
 
-/// A row of the element centred at `centre` in the state `sim` holds at `t`, its impulse
+/// A row of the element centred at `centre` in the state `model` holds at `t`, its impulse
 /// carried on from `prev` (trapezoidal rule).
-fn row_at(sim: &Simulation, t: f64, centre: f64, half: f64, prev: Option<&TrackRow>) -> TrackRow {
-    let alpha = sim.params.wrap_angle_rad;
-    let law = ContactLaw::new(sim.params.mu, sim.centrifugal_n);
+fn row_at<M: WrapModel>(model: &M, t: f64, centre: f64, half: f64, prev: Option<&TrackRow>) -> TrackRow {
+    let alpha = model.wrap().wrap_angle_rad;
     let (a, b) = covered(centre, half, alpha);
-    let (friction_force_n, contact_force_n) = if b <= a {
-        (0.0, 0.0)
-    } else {
-        let profile = &sim.profile;
-        (profile.tension_n(a) - profile.tension_n(b), profile.integral_n_rad(a, b) - sim.centrifugal_n * (b - a))
-    };
-    let theta = centre.clamp(0.0, alpha);
-    let (tension_n, q) = sim.profile.piece_at(theta).tension_friction(theta);
-    let friction_n_per_rad = law.clamp_friction(tension_n, q);
-    let utilization = law.utilization_of(tension_n, friction_n_per_rad);
+    let (friction_force_n, contact_force_n) =
+        if b <= a { (0.0, 0.0) } else { (model.tension_n(a) - model.tension_n(b), model.contact_force_n(a, b)) };
+    let local = model.local(centre.clamp(0.0, alpha));
     let impulse_n_s = prev.map_or(0.0, |p| p.impulse_n_s + 0.5 * (p.friction_force_n + friction_force_n) * (t - p.t_s));
     TrackRow {
         t_s: t,
         theta_deg: centre.to_degrees(),
-        tension_n,
-        normal_n_per_rad: law.normal_n_per_rad(tension_n),
-        friction_n_per_rad,
-        utilization,
-        state: law.state(utilization, friction_n_per_rad),
+        tension_n: local.tension_n,
+        normal_n_per_rad: local.normal_n_per_rad,
+        friction_n_per_rad: local.friction_n_per_rad,
+        utilization: local.utilization,
+        state: local.state,
         contact_force_n,
         friction_force_n,
         impulse_n_s,
@@ -229,19 +229,19 @@ fn row_at(sim: &Simulation, t: f64, centre: f64, half: f64, prev: Option<&TrackR
 }
 
 /// Evaluates an element's friction force between two rows by advancing a copy of the state.
-struct Probe<'a, 'b> {
-    sim: &'a Simulation<'b>,
+struct Probe<'a, M> {
+    model: &'a M,
     turn: &'a PulleyTurn,
     element: &'a Element,
     half: f64,
 }
 
-impl Probe<'_, '_> {
+impl<M: WrapModel + Clone> Probe<'_, M> {
     /// The friction force at `t` (≥ the copy's time); NaN where the model fails.
     fn force_n(&self, t: f64) -> f64 {
-        let mut sim = self.sim.clone();
-        match sim.advance_to(t) {
-            Ok(()) => friction_force_n(&sim, self.turn.at(t) - self.element.phi_rad, self.half),
+        let mut model = self.model.clone();
+        match model.advance_to(t) {
+            Ok(()) => friction_force_n(&model, self.turn.at(t) - self.element.phi_rad, self.half),
             Err(_) => f64::NAN,
         }
     }
@@ -249,7 +249,7 @@ impl Probe<'_, '_> {
     /// The first instant after `prev` at which the force leaves the sign of the motion: the root
     /// of `s·F` (a force that vanishes over a stuck stretch counts as the other sign, so that
     /// the root is where it first reaches zero).
-    fn turn_down(&self, prev: &TrackRow, t1: f64, roots: &mut RootStats) -> Result<TurnDown, Level2Error> {
+    fn turn_down(&self, prev: &TrackRow, t1: f64, roots: &mut RootStats) -> Result<TurnDown, M::Error> {
         let s = if self.turn.omega_per_s(0.5 * (prev.t_s + t1)) >= 0.0 { 1.0 } else { -1.0 };
         let floor = 1e-12 * prev.friction_force_n.abs();
         let f = |t: f64| {
