@@ -15,15 +15,16 @@ pub mod output;
 pub mod plot;
 pub mod scaling;
 pub mod table;
+pub mod walk;
 
 use crate::model::level2::{Level2Error, Solver};
 use crate::run::RunError;
 use crate::sheet::SheetError;
 use cases::{Case, Outcome};
 pub use scaling::{Scaling, log_log_slope, scaling};
-pub use table::{DUTY_DEFAULT_STEP_S, DUTY_REFERENCE_NODES, DUTY_REFERENCE_STEP_S, Entry, Sweep, TABLE};
 use serde::Serialize;
 use std::path::PathBuf;
+pub use table::{DUTY_DEFAULT_STEP_S, DUTY_REFERENCE_NODES, DUTY_REFERENCE_STEP_S, Entry, Sweep, TABLE};
 
 /// What `wrapcalc bench` runs, from its command line.
 #[derive(Debug, Clone, PartialEq)]
@@ -315,7 +316,8 @@ fn model_ms(spec: Spec) -> Result<Option<f64>, BenchError> {
         return Ok(None);
     };
     let case = spec.case.name();
-    let m = measure::measure(|| model.run().map(|(increments, _)| increments)).map_err(|source| BenchError::Level2 { case, source })?;
+    let m = measure::measure(|| model.run().map(|(increments, _)| increments))
+        .map_err(|source| BenchError::Level2 { case, source })?;
     Ok(Some(m.runtime_ms))
 }
 

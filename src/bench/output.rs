@@ -50,8 +50,9 @@ pub fn progress_line(r: &BenchRow) -> String {
 
 /// The fitted slopes as a plain table.
 pub fn scaling_table(scaling: &[Scaling]) -> String {
-    let mut s =
-        String::from("case              level solver   variable        range               time slope  memory slope  model time slope\n");
+    let mut s = String::from(
+        "case              level solver   variable        range               time slope  memory slope  model time slope\n",
+    );
     let opt = |v: Option<f64>| v.map_or_else(|| "-".into(), |v| format!("{v:.2}"));
     for x in scaling {
         s += &format!(
