@@ -62,12 +62,18 @@ impl TensionField {
 pub fn output_grid_rad(wrap_angle_rad: f64, nodes: usize, breakpoints_rad: impl Iterator<Item = f64>) -> Vec<f64> {
     let nodes = nodes.max(1);
     let pitch = wrap_angle_rad / nodes as f64;
-    let mut grid: Vec<f64> = (0..=nodes).map(|i| i as f64 * pitch).collect();
-    if let Some(last) = grid.last_mut() {
-        *last = wrap_angle_rad;
+    let mut inserted: Vec<f64> = breakpoints_rad.filter(|b| *b > 0.0 && *b < wrap_angle_rad).collect();
+    inserted.sort_by(f64::total_cmp);
+    // The equal pitches and the (few) breakpoints merged in θ order.
+    let mut grid = Vec::with_capacity(nodes + 1 + inserted.len());
+    let mut extra = inserted.into_iter().peekable();
+    for i in 0..=nodes {
+        let node = if i == nodes { wrap_angle_rad } else { i as f64 * pitch };
+        while let Some(b) = extra.next_if(|b| b.total_cmp(&node).is_lt()) {
+            grid.push(b);
+        }
+        grid.push(node);
     }
-    grid.extend(breakpoints_rad.filter(|b| *b > 0.0 && *b < wrap_angle_rad));
-    grid.sort_by(f64::total_cmp);
     // A breakpoint within 1e-9 of a node would only duplicate it.
     grid.dedup_by(|a, b| (*a - *b).abs() <= 1e-9 * wrap_angle_rad.max(1.0));
     grid

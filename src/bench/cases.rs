@@ -32,13 +32,14 @@
 //! (a derivative of the tension) against a threshold of 0.001, which a tension difference of
 //! 1e-4 moves by tens of degrees where the utilization is small over long stretches.
 
+pub use super::walk::{random_walk, rolling_walk, run_walk};
 use crate::design::{
     Design, Direction, EndLoads, HistoryScene, LoadsScene, Output, Outputs, Pulley, Requirements, Rope, Scene,
     SceneKind, WrapSource,
 };
 pub use crate::model::history::HistoryRow;
 use crate::model::history::HistorySample;
-use crate::model::level2::{self, Level2Error, Params, Profile, Solver};
+use crate::model::level2::Solver;
 use crate::planner::Request;
 use crate::run::{self, Options, RunError, RunResult};
 use crate::wrap::Distribution;
@@ -60,9 +61,9 @@ pub const ROLL_T1_N: f64 = 230_000.0;
 pub const ROLL_T2_N: f64 = 200_000.0;
 /// Rope speed of steady rolling, side 1 → side 2 (m/s).
 pub const ROLL_SPEED_M_S: f64 = 80.0;
-const MASS_PER_M_KG: f64 = 10.81;
-const EA_N: f64 = 2.634e8;
-const DIAMETER_M: f64 = 5.0;
+pub(super) const MASS_PER_M_KG: f64 = 10.81;
+pub(super) const EA_N: f64 = 2.634e8;
+pub(super) const DIAMETER_M: f64 = 5.0;
 /// Shear lag: the tension step ΔT (N) and the decay length λ = √(EA/k_s) as a fraction of the
 /// wrapped length L = Rα. The peak friction ΔT·R/λ·coth(L/λ) is 6 % of μn: full stick.
 pub const SHEAR_LAG_DT_N: f64 = 2.0e3;
@@ -132,7 +133,7 @@ pub const CHECKS_METRIC: &str = "max relative error of the tension ratio and e^(
 pub const DUTY_METRIC: &str =
     "RMS over history rows of the positive and reverse arc differences from the finest run (deg)";
 
-fn alpha_rad() -> f64 {
+pub(super) fn alpha_rad() -> f64 {
     WRAP_ANGLE_DEG.to_radians()
 }
 
@@ -393,51 +394,6 @@ pub fn arc_rms_deg(rows: &[HistoryRow], reference: &[HistoryRow]) -> Option<f64>
         }
     }
     (count > 0).then(|| (sum / count as f64).sqrt())
-}
-
-/// `samples` history samples 10 ms apart, rolling at 1 m/s, both end tensions a bounded random
-/// walk (±0.5 % per sample within 160–260 kN) from a fixed seed.
-pub fn rolling_walk(samples: usize) -> Vec<HistorySample> {
-    random_walk(samples, 0x9E37_79B9_7F4A_7C15, 0.01, None)
-}
-
-/// `samples` history samples 10 ms apart: both end tensions a random walk from 200 kN, each
-/// sample multiplying them by 1 + `rel_step`·(u − ½) with u uniform in [0, 1) (xorshift64 from
-/// `seed`), kept within 160–260 kN; the rope runs at 1 m/s, reversing every `reverse_every`
-/// samples when given.
-pub fn random_walk(samples: usize, seed: u64, rel_step: f64, reverse_every: Option<usize>) -> Vec<HistorySample> {
-    let mut seed = seed;
-    let mut rnd = move || {
-        seed ^= seed << 13;
-        seed ^= seed >> 7;
-        seed ^= seed << 17;
-        (seed >> 11) as f64 / (1u64 << 53) as f64
-    };
-    let (mut t1, mut t2) = (2.0e5, 2.0e5);
-    (0..samples)
-        .map(|i| {
-            t1 = (t1 * (1.0 + rel_step * (rnd() - 0.5))).clamp(1.6e5, 2.6e5);
-            t2 = (t2 * (1.0 + rel_step * (rnd() - 0.5))).clamp(1.6e5, 2.6e5);
-            let reversed = reverse_every.is_some_and(|n| (i / n) % 2 == 1);
-            sample(i as f64 * 0.01, t1, t2, if reversed { -1.0 } else { 1.0 })
-        })
-        .collect()
-}
-
-/// The random-walk history at level 2 (fast path), a history row once a second.
-pub fn run_walk(samples: &[HistorySample], nodes: usize) -> Result<Outcome, Level2Error> {
-    let params = Params {
-        mu: MU,
-        wrap_angle_rad: alpha_rad(),
-        radius_m: 0.5 * DIAMETER_M,
-        mass_per_m_kg: MASS_PER_M_KG,
-        ea_n: EA_N,
-        solver: Solver::Fast,
-    };
-    let output = crate::model::history::Output { snapshots_s: &[], step_s: Some(1.0), sample_rows: false };
-    let initial = Profile::uniform(alpha_rad(), samples[0].t1_n, MU);
-    let run = level2::run_history(params, samples, output, initial, nodes)?;
-    Ok(Outcome { error: None, steps: Some(run.stats.increments), duty: None })
 }
 
 #[cfg(test)]

@@ -10,9 +10,12 @@
 pub mod bound;
 pub mod cases;
 pub mod measure;
+pub mod model_time;
 pub mod output;
 pub mod plot;
 pub mod scaling;
+pub mod table;
+pub mod walk;
 
 use crate::model::level2::{Level2Error, Solver};
 use crate::run::RunError;
@@ -21,177 +24,7 @@ use cases::{Case, Outcome};
 pub use scaling::{Scaling, log_log_slope, scaling};
 use serde::Serialize;
 use std::path::PathBuf;
-
-/// What a point varies along its sweep.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Sweep {
-    /// One point (level 0: no node count).
-    Single,
-    /// Node counts; the `long` ones only with `--long`.
-    Nodes {
-        /// Node counts of every run.
-        nodes: &'static [usize],
-        /// Further node counts run only with `--long`.
-        long: &'static [usize],
-    },
-    /// Integration steps of the suspended ropes at a fixed node count.
-    TimeStep {
-        /// Node count of every point.
-        nodes: usize,
-        /// Integration steps (s).
-        steps_s: &'static [f64],
-    },
-    /// History samples at a fixed node count; the `long` ones only with `--long`.
-    Samples {
-        /// Node count of every point.
-        nodes: usize,
-        /// History lengths (samples) of every run.
-        samples: &'static [usize],
-        /// Further history lengths run only with `--long`.
-        long: &'static [usize],
-    },
-}
-
-impl Sweep {
-    /// The sweep's name in bench.csv's `sweep` column.
-    pub fn name(&self) -> &'static str {
-        match self {
-            Sweep::Single => "single",
-            Sweep::Nodes { .. } => "nodes",
-            Sweep::TimeStep { .. } => "time_step",
-            Sweep::Samples { .. } => "samples",
-        }
-    }
-}
-
-/// One line of the case × level table.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Entry {
-    /// The bench case.
-    pub case: Case,
-    /// Model level (0–4) the case runs at.
-    pub level: u8,
-    /// Solver of the wrap model.
-    pub solver: Solver,
-    /// What the line varies.
-    pub sweep: Sweep,
-}
-
-/// Node counts: ×4 from 16, and the default (180).
-const NODES: &[usize] = &[16, 64, 180, 256, 1024, 4096, 16384];
-const LONG_NODES: &[usize] = &[65536, 100_000];
-const CLARABEL_NODES: &[usize] = &[16, 64, 180, 256, 1024];
-/// Node counts of level 3 at the Coulomb bound.
-const BOUND_NODES: &[usize] = &[90, 180, 360, 720, 1440];
-/// Node counts of the duty cycle at its default time step, and the time steps at N = 360.
-const DUTY_NODES: &[usize] = &[90, 180, 360, 720, 1440];
-const DUTY_STEPS_S: &[f64] = &[4e-3, 2e-3, 1e-3, 5e-4];
-/// Δt below the wrap's sample interval (5 ms) changes only the dynamics; the sweep's finest
-/// run ([`DUTY_REFERENCE_STEP_S`]) is its reference.
-/// The duty cycle's reference: the finest run, its node count.
-pub const DUTY_REFERENCE_NODES: usize = 2880;
-/// Time step of the duty cycle's reference run (s).
-pub const DUTY_REFERENCE_STEP_S: f64 = 2.5e-4;
-/// Time step of the duty cycle's node sweep (the sheet default).
-pub const DUTY_DEFAULT_STEP_S: f64 = 1e-3;
-
-/// The case × level table: add a line here to bench a new level or case.
-pub const TABLE: &[Entry] = &[
-    Entry { case: Case::StandstillStep, level: 0, solver: Solver::Fast, sweep: Sweep::Single },
-    Entry {
-        case: Case::StandstillStep,
-        level: 2,
-        solver: Solver::Fast,
-        sweep: Sweep::Nodes { nodes: NODES, long: LONG_NODES },
-    },
-    Entry {
-        case: Case::StandstillStep,
-        level: 2,
-        solver: Solver::Clarabel,
-        sweep: Sweep::Nodes { nodes: CLARABEL_NODES, long: &[] },
-    },
-    Entry {
-        case: Case::NestedUnloading,
-        level: 2,
-        solver: Solver::Fast,
-        sweep: Sweep::Nodes { nodes: NODES, long: LONG_NODES },
-    },
-    Entry {
-        case: Case::NestedUnloading,
-        level: 2,
-        solver: Solver::Clarabel,
-        sweep: Sweep::Nodes { nodes: CLARABEL_NODES, long: &[] },
-    },
-    Entry {
-        case: Case::SteadyRolling,
-        level: 1,
-        solver: Solver::Fast,
-        sweep: Sweep::Nodes { nodes: NODES, long: LONG_NODES },
-    },
-    // Rolling at level 2 costs O(N) per node event (the exit's creep arc is a slip run of β/h
-    // nodes) and 1.5 N events: O(N²), so no long points.
-    Entry {
-        case: Case::SteadyRolling,
-        level: 2,
-        solver: Solver::Fast,
-        sweep: Sweep::Nodes { nodes: NODES, long: &[] },
-    },
-    Entry {
-        case: Case::SteadyRolling,
-        level: 2,
-        solver: Solver::Clarabel,
-        sweep: Sweep::Nodes { nodes: &[16, 64], long: &[] },
-    },
-    Entry { case: Case::DutyMid, level: 4, solver: Solver::Fast, sweep: Sweep::Nodes { nodes: DUTY_NODES, long: &[] } },
-    Entry {
-        case: Case::DutyMid,
-        level: 4,
-        solver: Solver::Fast,
-        sweep: Sweep::TimeStep { nodes: 360, steps_s: DUTY_STEPS_S },
-    },
-    Entry {
-        case: Case::ShearLag,
-        level: 3,
-        solver: Solver::Fast,
-        sweep: Sweep::Nodes { nodes: &[16, 64, 180, 256, 1024, 4096], long: &[16384] },
-    },
-    Entry {
-        case: Case::ShearLag,
-        level: 3,
-        solver: Solver::Clarabel,
-        sweep: Sweep::Nodes { nodes: &[16, 64, 180, 256], long: &[] },
-    },
-    Entry {
-        case: Case::BoundStep,
-        level: 3,
-        solver: Solver::Fast,
-        sweep: Sweep::Nodes { nodes: BOUND_NODES, long: &[] },
-    },
-    Entry {
-        case: Case::BoundStep,
-        level: 3,
-        solver: Solver::Clarabel,
-        sweep: Sweep::Nodes { nodes: BOUND_NODES, long: &[] },
-    },
-    Entry {
-        case: Case::BoundRolling,
-        level: 3,
-        solver: Solver::Fast,
-        sweep: Sweep::Nodes { nodes: BOUND_NODES, long: &[] },
-    },
-    Entry {
-        case: Case::BoundRolling,
-        level: 3,
-        solver: Solver::Clarabel,
-        sweep: Sweep::Nodes { nodes: BOUND_NODES, long: &[] },
-    },
-    Entry {
-        case: Case::RollingWalk,
-        level: 2,
-        solver: Solver::Fast,
-        sweep: Sweep::Samples { nodes: 720, samples: &[1_000, 10_000, 100_000], long: &[1_000_000] },
-    },
-];
+pub use table::{DUTY_DEFAULT_STEP_S, DUTY_REFERENCE_NODES, DUTY_REFERENCE_STEP_S, Entry, Sweep, TABLE};
 
 /// What `wrapcalc bench` runs, from its command line.
 #[derive(Debug, Clone, PartialEq)]
@@ -239,6 +72,9 @@ pub struct BenchRow {
     pub arc_rms_deg: Option<f64>,
     /// Peak resident memory of the point run alone in a child process (kB; none without a probe).
     pub peak_rss_kb: Option<u64>,
+    /// Median run time of the wrap model alone, without sampling its output grid (ms; the
+    /// level-2 closed-form cases, [`model_time`]).
+    pub model_ms: Option<f64>,
 }
 
 /// Why `wrapcalc bench` failed.
@@ -393,7 +229,7 @@ fn run_table(
                 point: Point { nodes: Some(key.0), time_step_s: Some(key.1), samples: None },
             };
             let m = run_point(options, spec)?;
-            let row = BenchRow { sweep: "reference", ..row_of(options, spec, entry.sweep.name(), &m, (None, None)) };
+            let row = BenchRow { sweep: "reference", ..row_of(options, spec, entry.sweep.name(), &m, (None, None))? };
             progress(&row);
             rows.push(row);
             references.push((key, m.value.duty.unwrap_or_default()));
@@ -406,7 +242,7 @@ fn run_table(
                 (Some(r), Some(run)) => cases::duty_error(run, r),
                 _ => (m.value.error, None),
             };
-            let row = row_of(options, spec, entry.sweep.name(), &m, error);
+            let row = row_of(options, spec, entry.sweep.name(), &m, error)?;
             progress(&row);
             rows.push(row);
         }
@@ -474,13 +310,24 @@ fn run_once(options: &BenchOptions, spec: Spec) -> Result<Outcome, BenchError> {
     }
 }
 
+/// The median time of the point's wrap model alone ([`model_time`]; level 2 only).
+fn model_ms(spec: Spec) -> Result<Option<f64>, BenchError> {
+    let Some(model) = model_time::ModelRun::of(spec.case, spec.solver).filter(|_| spec.level == 2) else {
+        return Ok(None);
+    };
+    let case = spec.case.name();
+    let m = measure::measure(|| model.run().map(|(increments, _)| increments))
+        .map_err(|source| BenchError::Level2 { case, source })?;
+    Ok(Some(m.runtime_ms))
+}
+
 fn row_of(
     options: &BenchOptions,
     spec: Spec,
     sweep: &'static str,
     m: &measure::Measured<Outcome>,
     (error, arc_rms_deg): (Option<f64>, Option<f64>),
-) -> BenchRow {
+) -> Result<BenchRow, BenchError> {
     let point = spec.point;
     let error_metric = match (spec.case, spec.level) {
         (Case::RollingWalk, _) => "none (scaling only)",
@@ -493,7 +340,7 @@ fn row_of(
         Case::DutyMid => Some(point.time_step_s.unwrap_or(DUTY_DEFAULT_STEP_S)),
         _ => None,
     };
-    BenchRow {
+    Ok(BenchRow {
         case: spec.case.name(),
         level: spec.level,
         solver: spec.solver,
@@ -508,7 +355,8 @@ fn row_of(
         error_metric,
         arc_rms_deg,
         peak_rss_kb: child_peak_rss_kb(options, spec),
-    }
+        model_ms: model_ms(spec)?,
+    })
 }
 
 #[cfg(test)]

@@ -32,7 +32,7 @@ fn write_csv<T: serde::Serialize>(path: &Path, rows: &[T]) -> Result<(), ReportE
 pub fn progress_line(r: &BenchRow) -> String {
     let opt = |v: Option<String>| v.unwrap_or_else(|| "-".into());
     format!(
-        "{:<17} level {} {:<8} {:<9} N {:>7} dt {:>7} samples {:>8} steps {:>9}  {:>10.3} ms  error {:>9}  peak {} kB",
+        "{:<17} level {} {:<8} {:<9} N {:>7} dt {:>7} samples {:>8} steps {:>9}  {:>10.3} ms (model {:>9} ms)  error {:>9}  peak {} kB",
         r.case,
         r.level,
         format!("{:?}", r.solver).to_lowercase(),
@@ -42,6 +42,7 @@ pub fn progress_line(r: &BenchRow) -> String {
         opt(r.samples.map(|n| n.to_string())),
         opt(r.steps.map(|n| n.to_string())),
         r.runtime_ms,
+        opt(r.model_ms.map(|m| format!("{m:.4}"))),
         opt(r.error.map(|e| format!("{e:.2e}"))),
         opt(r.peak_rss_kb.map(|k| k.to_string())),
     )
@@ -49,12 +50,13 @@ pub fn progress_line(r: &BenchRow) -> String {
 
 /// The fitted slopes as a plain table.
 pub fn scaling_table(scaling: &[Scaling]) -> String {
-    let mut s =
-        String::from("case              level solver   variable        range               time slope  memory slope\n");
+    let mut s = String::from(
+        "case              level solver   variable        range               time slope  memory slope  model time slope\n",
+    );
     let opt = |v: Option<f64>| v.map_or_else(|| "-".into(), |v| format!("{v:.2}"));
     for x in scaling {
         s += &format!(
-            "{:<17} {:>5} {:<8} {:<15} {:>8.0} – {:<8.0} {:>11} {:>13}\n",
+            "{:<17} {:>5} {:<8} {:<15} {:>8.0} – {:<8.0} {:>11} {:>13} {:>17}\n",
             x.case,
             x.level,
             format!("{:?}", x.solver).to_lowercase(),
@@ -62,7 +64,8 @@ pub fn scaling_table(scaling: &[Scaling]) -> String {
             x.from,
             x.to,
             opt(x.time_slope),
-            opt(x.memory_slope)
+            opt(x.memory_slope),
+            opt(x.model_time_slope)
         );
     }
     s

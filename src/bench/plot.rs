@@ -194,6 +194,7 @@ mod tests {
             error_metric: "",
             arc_rms_deg: None,
             peak_rss_kb: None,
+            model_ms: None,
         }
     }
 

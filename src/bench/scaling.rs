@@ -27,6 +27,9 @@ pub struct Scaling {
     pub time_slope: Option<f64>,
     /// Slope of log memory growth against log size (none below 1 MB of growth or without a probe).
     pub memory_slope: Option<f64>,
+    /// Slope of the wrap model's own log run time (`model_ms`, without its output grid) against
+    /// log size (level 2's closed-form cases; none elsewhere).
+    pub model_time_slope: Option<f64>,
 }
 
 /// Slopes of every sweep with at least two points in its larger half.
@@ -57,6 +60,7 @@ pub fn scaling(rows: &[BenchRow]) -> Vec<Scaling> {
             continue;
         }
         let time: Vec<(f64, f64)> = upper.iter().map(|(x, r)| (*x, r.runtime_ms)).collect();
+        let model: Vec<(f64, f64)> = upper.iter().filter_map(|(x, r)| Some((*x, r.model_ms?))).collect();
         // Memory above the smallest process's (program, allocator, thread pool); growth below
         // 1 MB is the allocator's granularity, not the case's footprint.
         let memory: Vec<(f64, f64)> = upper
@@ -76,6 +80,7 @@ pub fn scaling(rows: &[BenchRow]) -> Vec<Scaling> {
             to: upper[upper.len() - 1].0,
             time_slope: log_log_slope(&time),
             memory_slope: log_log_slope(&memory),
+            model_time_slope: log_log_slope(&model),
         });
     }
     out

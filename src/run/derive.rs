@@ -65,7 +65,6 @@ pub(super) fn ensure_finite(r: &SceneResult) -> Result<(), RunError> {
     ];
     fields.extend(c.safety_factor.map(|v| ("safety_factor", v)));
     fields.extend(c.static_safety_factor.map(|v| ("static_safety_factor", v)));
-    let distributions = r.wrap.iter().map(|w| &w.distribution).chain(&r.snapshots);
     if let Some(m) = &r.margins {
         let all = [
             &m.critical_mu,
@@ -83,15 +82,17 @@ pub(super) fn ensure_finite(r: &SceneResult) -> Result<(), RunError> {
     if let Some(w) = &r.wrap {
         fields.push(("max_utilization", w.summary.max_utilization));
     }
-    for d in distributions {
-        for s in &d.samples {
-            fields.push(("distribution.tension_n", s.tension_n));
-            fields.push(("distribution.friction_n_per_rad", s.friction_n_per_rad));
-            fields.push(("distribution.normal_n_per_rad", s.normal_n_per_rad));
-            fields.extend(s.slip_velocity_m_s.map(|v| ("distribution.slip_velocity_m_s", v)));
-        }
-    }
-    match fields.into_iter().find(|(_, v)| !v.is_finite()) {
+    // The distributions' samples are checked in place (they run to N + 1 rows each).
+    let samples = r.wrap.iter().map(|w| &w.distribution).chain(&r.snapshots).flat_map(|d| &d.samples);
+    let sampled = samples.flat_map(|s| {
+        [
+            ("distribution.tension_n", s.tension_n),
+            ("distribution.friction_n_per_rad", s.friction_n_per_rad),
+            ("distribution.normal_n_per_rad", s.normal_n_per_rad),
+            ("distribution.slip_velocity_m_s", s.slip_velocity_m_s.unwrap_or(0.0)),
+        ]
+    });
+    match fields.into_iter().chain(sampled).find(|(_, v)| !v.is_finite()) {
         Some((field, _)) => Err(RunError::NonFinite { scene: r.name.clone(), field }),
         None => Ok(()),
     }

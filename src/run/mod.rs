@@ -375,7 +375,8 @@ fn empty(scene: &Scene, plan: Plan, classical: Classical) -> SceneResult {
     }
 }
 
-fn params(design: &Design, solver: Solver) -> Params {
+/// The wrap models' parameters of a design (per rope, SI).
+pub(crate) fn params(design: &Design, solver: Solver) -> Params {
     Params {
         mu: design.pulley.mu,
         wrap_angle_rad: design.pulley.wrap_angle_rad,
