@@ -14,7 +14,7 @@
 
 use wrapcalc::design::{Design, SceneKind};
 use wrapcalc::model::{braking, level4, stop};
-use wrapcalc::planner::Request;
+use wrapcalc::planner::{Level, Request};
 use wrapcalc::run::{self, Options, SceneResult};
 use wrapcalc::sheet;
 
@@ -82,7 +82,7 @@ fn design(mirror: bool, lower: bool, ea_n: f64, brake_step: bool) -> Design {
 
 fn run_at(d: &Design, level: u8) -> SceneResult {
     let scenes: Vec<_> = d.scenes.iter().collect();
-    let request = Request::Full { forced_level: Some(level) };
+    let request = Request::Full { forced_level: Level::from_number(level) };
     run::run(d, &scenes, Options { request, nodes: 30, ..Options::default() }).expect("runs").scenes.remove(0)
 }
 

@@ -9,7 +9,7 @@ use wrapcalc::design::{Design, Output, Outputs, Scene};
 use wrapcalc::fit::creep_fit;
 use wrapcalc::margins;
 use wrapcalc::model::level0::EndState;
-use wrapcalc::planner::{self, Request};
+use wrapcalc::planner::{self, Level, Request};
 use wrapcalc::run::{self, Options};
 use wrapcalc::sheet;
 use wrapcalc::wrap::{Distribution, Sample};
@@ -123,16 +123,21 @@ fn planner_maps_kind_and_outputs_to_the_cheapest_level() {
     ];
     for (name, level) in expected {
         let plan = planner::plan(scene(&d, name), auto).expect("plans");
-        assert_eq!(plan.level, level, "{name}: {}", plan.reason);
+        assert_eq!(plan.level.number(), level, "{name}: {}", plan.reason);
         assert!(!plan.reason.is_empty());
     }
     // `wrapcalc check` is level 0 everywhere; --level overrides, within what a kind allows.
     for s in &d.scenes {
-        assert_eq!(planner::plan(s, Request::ChecksOnly).unwrap().level, 0, "{}", s.name);
+        assert_eq!(planner::plan(s, Request::ChecksOnly).unwrap().level, Level::Closed0, "{}", s.name);
     }
-    assert_eq!(planner::plan(scene(&d, "loads-checks"), Request::Full { forced_level: Some(2) }).unwrap().level, 2);
-    assert!(planner::plan(scene(&d, "history-history"), Request::Full { forced_level: Some(1) }).is_err());
-    assert!(planner::plan(scene(&d, "loads-checks"), Request::Full { forced_level: Some(4) }).is_err());
+    assert_eq!(
+        planner::plan(scene(&d, "loads-checks"), Request::Full { forced_level: Some(Level::Rigid2) }).unwrap().level,
+        Level::Rigid2
+    );
+    assert!(
+        planner::plan(scene(&d, "history-history"), Request::Full { forced_level: Some(Level::Capstan1) }).is_err()
+    );
+    assert!(planner::plan(scene(&d, "loads-checks"), Request::Full { forced_level: Some(Level::Dynamic4) }).is_err());
     // The default outputs of each kind.
     assert_eq!(
         scene(&d, "mid-rest").outputs,
@@ -163,7 +168,11 @@ fn cheap_and_costly_levels_agree_on_shared_answers() {
     let d = with_scenes(PLANNED);
     let at = |name: &str, level: u8| {
         let s = scene(&d, name);
-        let opts = Options { request: Request::Full { forced_level: Some(level) }, nodes: 360, ..Options::default() };
+        let opts = Options {
+            request: Request::Full { forced_level: Level::from_number(level) },
+            nodes: 360,
+            ..Options::default()
+        };
         run::run(&d, &[s], opts).unwrap().scenes.remove(0)
     };
     for name in ["mid-accelerating", "max-decelerating"] {
@@ -404,17 +413,17 @@ fn lining_raises_only_the_wrap_outputs_to_level_3() {
     let d = sheet::parse(file, &format!("{text}\n{PLANNED}")).expect("parses");
     let auto = Request::Full { forced_level: None };
     let level = |name: &str| planner::plan_with_lining(scene(&d, name), auto, d.lining.is_some()).unwrap().level;
-    assert_eq!(level("history-history"), 3);
-    assert_eq!(level("history-distribution"), 3);
-    assert_eq!(level("history-checks"), 0);
-    assert_eq!(level("duty-checks"), 0);
+    assert_eq!(level("history-history"), Level::Elastic3);
+    assert_eq!(level("history-distribution"), Level::Elastic3);
+    assert_eq!(level("history-checks"), Level::Closed0);
+    assert_eq!(level("duty-checks"), Level::Closed0);
     let duty = planner::plan_with_lining(scene(&d, "duty-history"), auto, true).unwrap();
-    assert_eq!(duty.level, 4);
+    assert_eq!(duty.level, Level::Dynamic4);
     assert!(duty.reason.contains("level 3"), "{}", duty.reason);
-    assert_eq!(planner::wrap_level(&duty, true), 3);
-    assert_eq!(level("loads-distribution"), 1, "constant loads stay with creep theory");
+    assert_eq!(planner::wrap_level(&duty, true), Level::Elastic3);
+    assert_eq!(level("loads-distribution"), Level::Capstan1, "constant loads stay with creep theory");
     // Without a lining, --level 3 is an error naming the section.
-    let forced = Request::Full { forced_level: Some(3) };
+    let forced = Request::Full { forced_level: Some(Level::Elastic3) };
     let e = planner::plan_with_lining(scene(&d, "history-history"), forced, false).unwrap_err();
     assert!(e.to_string().contains("[lining]"), "{e}");
 }

@@ -11,6 +11,7 @@ use crate::model::braking::{StopMasses, brake_decel_m_s2, slip_limited_decel_m_s
 use crate::model::level0::{self, DYNAMIC_CHECK, EndState, euler_limit, safety_factor};
 use crate::model::level4::{self, Level4Error};
 use crate::model::stop::{self, SlipOnset, StopReport};
+use crate::planner::Level;
 
 /// Speeds below this are a profile at rest (m/s): the round-off of its stages' integrals.
 pub const MOVING_M_S: f64 = 1e-9;
@@ -109,7 +110,7 @@ fn masses_of(design: &Design, params: &HoistParams, t1s: f64, t2s: f64) -> StopM
 }
 
 /// A case's label: payload, direction, phase, position.
-pub fn label(payload_kg: f64, dir: Direction, phase: Phase, position: &Position, x_m: f64, level: u8) -> String {
+pub fn label(payload_kg: f64, dir: Direction, phase: Phase, position: &Position, x_m: f64, level: Level) -> String {
     let at = match position {
         Position::Travel { fraction } => format!("{:.0} % of the travel", fraction * 100.0),
         Position::WorstInstant { t_s } => format!("worst instant t = {t_s:.2} s"),
@@ -140,7 +141,7 @@ pub fn case_at(
     let state = EndState { t1_n: t1, t2_n: t2, speed_m_s: k.speed_m_s, accel_m_s2: k.accel_m_s2, centrifugal_n: c };
     let static_state = EndState { t1_n: t1s, t2_n: t2s, speed_m_s: 0.0, accel_m_s2: 0.0, centrifugal_n: 0.0 };
     let kg = params.ropes as f64 / params.g_m_s2;
-    let mut result = from_states(design, payload_kg, dir, phase, position, k.x_m, 0, state, static_state);
+    let mut result = from_states(design, payload_kg, dir, phase, position, k.x_m, Level::Closed0, state, static_state);
     (result.m1_kg, result.m2_kg) = (t1s * kg, t2s * kg);
     let masses = [result.m1_kg, result.m2_kg];
     let guide = design.guide_mass_kg();
@@ -166,7 +167,7 @@ pub fn from_states(
     phase: Phase,
     position: Position,
     x_m: f64,
-    level: u8,
+    level: Level,
     state: EndState,
     static_state: EndState,
 ) -> CaseResult {
@@ -347,7 +348,17 @@ fn braked_stop(
         .collect();
     let report = stop::stop_report(design, &params, &kin, brake.idle_time_s + brake.build_up_s, "brake")?;
     let onset = stop::slip_onset(design, &states);
-    Ok(stop_case(design, payload_kg, dir, Position::Stop { fraction, t_s: at_s }, x0, 0, &states, report, onset))
+    Ok(stop_case(
+        design,
+        payload_kg,
+        dir,
+        Position::Stop { fraction, t_s: at_s },
+        x0,
+        Level::Closed0,
+        &states,
+        report,
+        onset,
+    ))
 }
 
 /// A case of a stop over its states from the trip on (level 0 or 4): the worst instant's checks
@@ -359,7 +370,7 @@ pub fn stop_case(
     dir: Direction,
     position: Position,
     x0: f64,
-    level: u8,
+    level: Level,
     states: &[(f64, EndState)],
     report: StopReport,
     onset: Option<SlipOnset>,

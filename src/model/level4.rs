@@ -17,6 +17,7 @@ use crate::margins::{self, Margin};
 use crate::model::braking::{self, BrakeError};
 use crate::model::level0::{EndState, euler_limit};
 use crate::model::stop;
+use crate::planner::Level;
 use crate::roots::RootStats;
 
 /// Finite elements per side of the suspended ropes (the first mode converges to well under 1 %
@@ -53,7 +54,7 @@ pub enum Level4Error {
          need {short:.1} N more. {advice}",
         side = slack.side,
         t = slack.t_s,
-        model = if *level == 0 { "rigid ropes (level 0)" } else { "the suspended ropes' dynamics" },
+        model = if *level == Level::Closed0 { "rigid ropes (level 0)" } else { "the suspended ropes' dynamics" },
         tension = slack.tension_n,
         v = slack.speed_m_s,
         c = slack.centrifugal_n,
@@ -63,7 +64,7 @@ pub enum Level4Error {
         /// Where and when the rope goes slack, with its tension and m'v².
         slack: Box<SlackRope>,
         /// The model level that found it: 0 (rigid ropes) or 4 (the suspended ropes' dynamics).
-        level: u8,
+        level: Level,
         /// What to change to keep the rope on the pulley (see [`slack_advice`]).
         advice: String,
     },
@@ -413,7 +414,7 @@ pub fn first_slack(samples: &[HistorySample], mass_per_m_kg: f64) -> Option<Slac
 /// an emergency stop, the deceleration (with the ropes' dynamics, `level` 4, the largest that
 /// keeps both ropes on the pulley, by Brent's method on `min_t (T_lo − m'v²)` over [d₀/4, d₀]),
 /// else the motion profile's accelerations; or more mass hanging on the slack side.
-pub fn slack_advice(design: &Design, hoist: &Hoist, scene: &DutyCycleScene, slack: &SlackRope, level: u8) -> String {
+pub fn slack_advice(design: &Design, hoist: &Hoist, scene: &DutyCycleScene, slack: &SlackRope, level: Level) -> String {
     let mass_key = match slack.side {
         Side::One => "[hoist] conveyance1_kg or the scene's payload_kg",
         Side::Two => "[hoist] conveyance2_kg",
@@ -427,7 +428,7 @@ pub fn slack_advice(design: &Design, hoist: &Hoist, scene: &DutyCycleScene, slac
     };
     let m = design.rope.mass_per_m_kg;
     let contact = |s: &DynSample| s.t1_n.min(s.t2_n) - m * s.speed_m_s * s.speed_m_s;
-    let largest = (level == 4)
+    let largest = (level == Level::Dynamic4)
         .then(|| StopTrials::new(design, hoist, scene))
         .flatten()
         .and_then(|trials| {

@@ -7,6 +7,7 @@ use crate::fit;
 use crate::margins;
 use crate::model::level0::EndState;
 use crate::model::level4;
+use crate::planner::Level;
 
 /// The answers derived from a scene's result that it asks for: margins from its state (a time
 /// scene's worst instant), the creep-theory fit of its reported distribution.
@@ -28,7 +29,8 @@ pub(super) fn derive_answers(design: &Design, scene: &Scene, result: &mut SceneR
             None => margins::of(design, &state, at_t_s),
         };
         // An emergency stop with the ropes' dynamics (level 4): each trial runs the ropes.
-        if let (SceneKind::DutyCycle(cycle), Some(hoist), 4) = (&scene.kind, &design.hoist, result.plan.level)
+        if let (SceneKind::DutyCycle(cycle), Some(hoist), Level::Dynamic4) =
+            (&scene.kind, &design.hoist, result.plan.level)
             && let Some((slip, sf)) = level4::emergency_margins(design, hoist, cycle, &mut m.root_finding)
         {
             m.emergency_braking_to_slip_m_s2 = Some(slip);

@@ -12,7 +12,7 @@ use crate::model::level1;
 use crate::model::level2;
 use crate::model::level4::{self, Level4Error};
 use crate::model::stop;
-use crate::planner::{self, Plan};
+use crate::planner::{self, Level, Plan};
 
 pub(super) fn run_history(
     design: &Design,
@@ -62,7 +62,7 @@ pub(super) fn run_duty_cycle(
     let kin = level4::rigid_kinematics(design, hoist, cycle, &params).map_err(err)?;
     let rigid_samples = stop::rigid_samples(design, &params, &kin).map_err(|e| err(e.into()))?;
     let rigid = Trip::valid_part(design, rigid_samples, kin.into_iter().map(|(_, k)| k).collect());
-    let (trip, dynamics) = if plan.level == 0 {
+    let (trip, dynamics) = if plan.level == Level::Closed0 {
         (rigid, None)
     } else {
         let dynamics = level4::suspended_ropes(design, hoist, cycle).map_err(err)?;
@@ -110,7 +110,7 @@ fn refuse_slack(
     hoist: &Hoist,
     cycle: &DutyCycleScene,
     samples: &[HistorySample],
-    level: u8,
+    level: Level,
 ) -> Result<(), Level4Error> {
     match level4::first_slack(samples, design.rope.mass_per_m_kg) {
         Some(slack) => {
@@ -164,7 +164,7 @@ fn run_samples(
     let mut result = empty(scene, plan, classical);
     result.t_s = samples.last().map(|s| s.t_s);
     result.worst = level0::worst_instant(design, &states);
-    if result.plan.level < 2 {
+    if result.plan.level < Level::Rigid2 {
         if scene.tracks.is_some() {
             return Err(RunError::TracksBelowLevel2 { scene: scene.name.clone(), level: result.plan.level });
         }
@@ -206,7 +206,7 @@ fn run_samples(
     });
     result.nodes = Some(options.nodes);
     if let Some(tracks) = &scene.tracks {
-        if planner::wrap_level(&result.plan, design.lining.is_some()) == 3 {
+        if planner::wrap_level(&result.plan, design.lining.is_some()) == Level::Elastic3 {
             return Err(RunError::TracksAtLevel3 { scene: scene.name.clone() });
         }
         let start = level2_initial(design, initial);

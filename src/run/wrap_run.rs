@@ -8,7 +8,7 @@ use crate::model::level0::EndState;
 use crate::model::level1;
 use crate::model::level2::{self, Profile};
 use crate::model::level3;
-use crate::planner::{self, Plan, PlanError};
+use crate::planner::{self, Level, Plan, PlanError};
 
 /// Creep speed used to reach the state "after the rope last ran" for a scene at rest (m/s):
 /// slow enough that its m'v² (1e-6 m²/s² times m') is negligible against the tension, as the
@@ -61,7 +61,7 @@ pub(super) fn wrap_history(
 ) -> Result<(level2::HistoryRun, Option<level3::Level3Stats>), RunError> {
     let alpha = design.pulley.wrap_angle_rad;
     match (planner::wrap_level(plan, design.lining.is_some()), design.lining) {
-        (3, Some(lining)) => {
+        (Level::Elastic3, Some(lining)) => {
             let params = level3::Params {
                 wrap: params(design, options.solver),
                 shear_stiffness_n_per_m2: lining.shear_stiffness_n_per_m2,
@@ -89,7 +89,7 @@ pub(super) fn wrap_history(
             stats.add(&run_stats);
             Ok((run, Some(stats)))
         }
-        (3, None) => Err(PlanError::NoLining { scene: scene.name.clone() }.into()),
+        (Level::Elastic3, None) => Err(PlanError::NoLining { scene: scene.name.clone() }.into()),
         _ => {
             let initial = level2_initial(design, initial);
             level2::run_history(params(design, options.solver), samples, output, initial, options.nodes)
