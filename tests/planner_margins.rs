@@ -5,9 +5,9 @@
 //! synthesized here from creep theory's own formula.
 
 use wrapcalc::contact::NodeState;
-use wrapcalc::design::{Design, Output, Outputs, Scene};
-use wrapcalc::fit::creep_fit;
-use wrapcalc::margins;
+use wrapcalc::design::{Design, Direction, Output, Outputs, Scene};
+use wrapcalc::fit::{FitFriction, creep_fit};
+use wrapcalc::margins::{self, MarginVerdict};
 use wrapcalc::model::level0::EndState;
 use wrapcalc::planner::{self, Level, Request};
 use wrapcalc::run::{self, Options};
@@ -244,7 +244,7 @@ fn margins_match_their_closed_forms() {
     assert!(rel(m.braking_to_min_safety_factor_m_s2.value.unwrap(), d_sf) < 1e-9);
     assert!(m.root_finding.calls >= 5 && m.root_finding.iterations > 0);
     for x in [&m.critical_mu, &m.payload_to_slip_kg, &m.braking_to_slip_m_s2] {
-        assert_eq!(x.verdict, "found");
+        assert_eq!(x.verdict, MarginVerdict::Found);
     }
     // At rest the payload margin uses the static minimum 1.75 and k = g/n; no braking margin.
     let (s1, s2) = (m1 * G / n, m2 * G / n);
@@ -253,7 +253,7 @@ fn margins_match_their_closed_forms() {
     // s1 + xg/n = s2 + s2(E − 1)/1.75.
     let x_rest = (s2 + s2 * (e - 1.0) / 1.75 - s1) / (G / n);
     assert!(rel(r.payload_to_min_safety_factor_kg.value.unwrap(), x_rest) < 1e-9);
-    assert!(r.braking_to_slip_m_s2.value.is_none() && r.braking_to_slip_m_s2.verdict.contains("at rest"));
+    assert!(r.braking_to_slip_m_s2.value.is_none() && r.braking_to_slip_m_s2.verdict == MarginVerdict::AtRest);
 }
 
 /// Bracket failures are verdicts, not errors: a state already slipping is "already beyond"; a
@@ -264,14 +264,14 @@ fn margins_match_their_closed_forms() {
 fn margins_report_bracket_failures_as_verdicts() {
     let d = design();
     let slipping = margins::of(&d, &state(3.0e5, 1.0e5, 1.0, 0.0, 0.0), None);
-    assert_eq!(slipping.payload_to_slip_kg.verdict, "already beyond at the current state");
+    assert_eq!(slipping.payload_to_slip_kg.verdict, MarginVerdict::AlreadyBeyond);
     assert!(slipping.payload_to_slip_kg.value.is_none());
     let mut rough = design();
     rough.pulley.mu = 2.0;
     rough.pulley.wrap_angle_rad = 540f64.to_radians();
     let (m1, m2) = (95_000.0, 103_000.0);
     let m = margins::of(&rough, &state(m1 * G / 6.0, m2 * G / 6.0, 5.0, 0.0, 0.0), None);
-    assert_eq!(m.braking_to_slip_m_s2.verdict, "no slip within the searched range");
+    assert_eq!(m.braking_to_slip_m_s2.verdict, MarginVerdict::NoSlipInRange);
     assert!(m.braking_to_slip_m_s2.value.is_none());
 }
 
@@ -283,7 +283,8 @@ fn margins_report_bracket_failures_as_verdicts() {
 #[test]
 fn fit_recovers_creep_theory_parameters() {
     let (mu, alpha_deg, beta_deg, t_idle, c) = (0.25, 187.42, 37.123, 2.2e5, 1070.0);
-    for entry_side1 in [true, false] {
+    for travel in [Direction::Lift, Direction::Lower] {
+        let entry_side1 = travel == Direction::Lift;
         let samples: Vec<Sample> = (0..=200)
             .map(|i| {
                 let u = i as f64 / 200.0;
@@ -311,11 +312,12 @@ fn fit_recovers_creep_theory_parameters() {
             jdp_deg: None,
             gross_slip: false,
         };
-        let f = creep_fit(&d, c, Some(entry_side1)).expect("fits");
+        let f = creep_fit(&d, c, Some(travel)).expect("fits");
         assert!((f.active_arc_deg - beta_deg).abs() < 0.01, "β {} vs {beta_deg}", f.active_arc_deg);
         assert!(rel(f.idle_tension_n, t_idle) < 1e-6, "T_idle {}", f.idle_tension_n);
         assert!(f.rms_residual_rel < 1e-6);
-        assert_eq!(f.friction, if entry_side1 { "positive" } else { "reverse" });
+        assert_eq!(f.friction, if entry_side1 { FitFriction::Positive } else { FitFriction::Reverse });
+        assert_eq!(f.entry, travel.entry());
         // At rest both entries are tried and the right one wins.
         let g = creep_fit(&d, c, None).expect("fits");
         assert!((g.active_arc_deg - beta_deg).abs() < 0.01);
@@ -352,9 +354,9 @@ fn field(tension_n: impl Fn(usize) -> f64) -> Distribution {
 #[test]
 fn fit_of_a_uniform_field_reports_zero_residual_and_why() {
     let d = field(|i| 2.0e5 + 3.0e-9 * (i as f64 * 1.7).sin());
-    for entry in [Some(true), Some(false), None] {
-        let f = creep_fit(&d, 0.0, entry).expect("fits");
-        assert_eq!((f.rms_residual_rel, f.active_arc_deg, f.friction), (0.0, 0.0, "none"), "{entry:?}");
+    for travel in [Some(Direction::Lift), Some(Direction::Lower), None] {
+        let f = creep_fit(&d, 0.0, travel).expect("fits");
+        assert_eq!((f.rms_residual_rel, f.active_arc_deg, f.friction), (0.0, 0.0, FitFriction::None), "{travel:?}");
         assert!(f.note.as_deref().is_some_and(|n| n.contains("uniform field") && n.contains("round-off")), "{f:?}");
         assert!(rel(f.idle_tension_n, 2.0e5) < 1e-12 && f.rms_residual_n < 3e-9, "{f:?}");
     }
@@ -378,13 +380,14 @@ fn fit_of_a_uniform_field_reports_zero_residual_and_why() {
 fn fit_of_a_field_just_above_round_off_is_a_real_fit() {
     let (mu, t_idle, beta_deg) = (0.25f64, 2.0e5, 37.123f64);
     let c = t_idle - 1.0;
-    for entry_side1 in [true, false] {
+    for travel in [Direction::Lift, Direction::Lower] {
+        let entry_side1 = travel == Direction::Lift;
         let d = field(|i| {
             let theta_deg = 187.42 * i as f64 / 180.0;
             let phi_deg = if entry_side1 { theta_deg - (187.42 - beta_deg) } else { beta_deg - theta_deg }.max(0.0);
             c + (t_idle - c) * (-mu * phi_deg.to_radians()).exp()
         });
-        let f = creep_fit(&d, c, Some(entry_side1)).expect("fits");
+        let f = creep_fit(&d, c, Some(travel)).expect("fits");
         assert!(f.note.is_none(), "{f:?}");
         assert!((f.active_arc_deg - beta_deg).abs() < 0.01 && f.rms_residual_rel < 1e-6, "{entry_side1}: {f:?}");
     }

@@ -70,6 +70,11 @@ impl Relation {
     }
 }
 
+/// The check named `name` among `checks` (each check's name is its kind).
+pub fn named_mut<'a>(checks: &'a mut [Check], name: &str) -> Option<&'a mut Check> {
+    checks.iter_mut().find(|c| c.name == name)
+}
+
 /// The outcome of a check.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]

@@ -14,7 +14,7 @@ use crate::design::{Design, Direction, Hoist, LoadCases, Phase, SafetyFactorBasi
 use crate::dynamics::{self, DynSample, HoistParams, SimOptions};
 use crate::model::level0::{DYNAMIC_CHECK, EndState, euler_limit, safety_factor};
 use crate::model::level4::{self, ELEMENTS_PER_SIDE, Level4Error, WRAP_SAMPLE_S};
-use crate::model::stop;
+use crate::model::stop::{self, StopMode};
 use crate::planner::Level;
 use crate::run::ROPE_DYNAMICS_CHECK;
 
@@ -53,7 +53,7 @@ pub fn cases(
                 Emergency::Brake(b) => {
                     runs += 1;
                     let trips = stop::braked_ropes(design, &params, &stages, &times, lc.time_step_s, &b)?;
-                    (trips, b.idle_time_s + b.build_up_s, "brake")
+                    (trips, b.idle_time_s + b.build_up_s, StopMode::Brake)
                 }
                 Emergency::Imposed(d) => {
                     let mut trips = Vec::new();
@@ -64,7 +64,7 @@ pub fn cases(
                         runs += 1;
                         trips.push(samples);
                     }
-                    (trips, 0.0, "imposed deceleration")
+                    (trips, 0.0, StopMode::Imposed)
                 }
                 Emergency::None => continue,
             };

@@ -4,13 +4,13 @@
 
 use super::profile::Characteristics;
 use super::{CaseResult, Position, direction_word};
-use crate::check::{Check, braking};
+use crate::check::{self, Check, braking};
 use crate::design::{Brake, Design, Direction, Hoist, LoadCases, Phase};
 use crate::dynamics::{self, HoistParams, Kinematics, MotionProfile};
 use crate::model::braking::{StopMasses, brake_decel_m_s2, slip_limited_decel_m_s2};
 use crate::model::level0::{self, DYNAMIC_CHECK, EndState, euler_limit, safety_factor};
 use crate::model::level4::{self, Level4Error};
-use crate::model::stop::{self, SlipOnset, StopReport};
+use crate::model::stop::{self, SlipOnset, StopMode, StopReport};
 use crate::planner::Level;
 
 /// Speeds below this are a profile at rest (m/s): the round-off of its stages' integrals.
@@ -241,7 +241,7 @@ fn add_position_stop(design: &Design, case: &mut CaseResult, masses: &StopMasses
     let n = f64::from(design.rope.count);
     let v = k.speed_m_s.abs();
     let report = StopReport {
-        mode: if matches!(e, Emergency::Brake(_)) { "brake" } else { "imposed deceleration" },
+        mode: if matches!(e, Emergency::Brake(_)) { StopMode::Brake } else { StopMode::Imposed },
         lifting: dir == Direction::Lift,
         timed: false,
         trip_s: 0.0,
@@ -346,7 +346,7 @@ fn braked_stop(
         .zip(&kin)
         .map(|(s, (_, k))| (s.t_s, EndState::of_sample(s, k.accel_m_s2, design.rope.mass_per_m_kg)))
         .collect();
-    let report = stop::stop_report(design, &params, &kin, brake.idle_time_s + brake.build_up_s, "brake")?;
+    let report = stop::stop_report(design, &params, &kin, brake.idle_time_s + brake.build_up_s, StopMode::Brake)?;
     let onset = stop::slip_onset(design, &states);
     Ok(stop_case(
         design,
@@ -392,13 +392,17 @@ pub fn stop_case(
     let mut case = from_states(design, payload_kg, dir, Phase::Emergency, position, x_m, level, worst, static_state);
     (case.m1_kg, case.m2_kg) = (m.m1_kg, m.m2_kg);
     if let Some(r) = ratio_worst {
-        case.checks[0] = level0::gross_slip_check(&r, design.pulley.mu, design.pulley.wrap_angle_rad)
-            .governed_by(case.label.clone());
+        if let Some(check) = check::named_mut(&mut case.checks, level0::GROSS_SLIP_CHECK) {
+            *check = level0::gross_slip_check(&r, design.pulley.mu, design.pulley.wrap_angle_rad)
+                .governed_by(case.label.clone());
+        }
         case.tension_ratio = r.tension_ratio();
     }
-    if let Some(o) = &onset {
-        case.checks[0].fail();
-        case.checks[0].note = Some(format!(
+    if let Some(o) = &onset
+        && let Some(check) = check::named_mut(&mut case.checks, level0::GROSS_SLIP_CHECK)
+    {
+        check.fail();
+        check.note = Some(format!(
             "gross slip from t = {:.3} s (ratio {:.4}): the rest of the trip is not valid",
             o.t_s, o.ratio
         ));

@@ -29,7 +29,7 @@ pub(super) fn run_loads(
                 design.pulley.mu,
                 design.pulley.wrap_angle_rad,
                 &result.classical.state,
-                loads.direction.sign(),
+                loads.direction,
                 design.rope.ea_n,
             );
             let summary = derived::summarize(&rolling.field, &rolling.law)

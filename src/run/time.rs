@@ -5,6 +5,7 @@
 use super::trip::{self, Trip};
 use super::wrap_run::{Initial, level2_initial, wrap_history};
 use super::{HistoryOutput, Options, RunError, SceneResult, WrapResult, empty};
+use crate::check;
 use crate::design::{Design, Direction, DutyCycleScene, HistorySample, HistoryScene, Hoist, Scene};
 use crate::dynamics::Kinematics;
 use crate::model::level0::{self, EndState};
@@ -53,10 +54,7 @@ pub(super) fn run_duty_cycle(
     let Some(hoist) = &design.hoist else {
         return Err(err(Level4Error::NoHoist));
     };
-    let before = match cycle.direction {
-        Direction::Lift => Direction::Lower,
-        Direction::Lower => Direction::Lift,
-    };
+    let before = cycle.direction.reversed();
     let params = level4::hoist_params(design, hoist, cycle);
     // The classical check: rigid ropes along the motion (and the brake's stop).
     let kin = level4::rigid_kinematics(design, hoist, cycle, &params).map_err(err)?;
@@ -174,7 +172,7 @@ fn run_samples(
     let alpha = design.pulley.wrap_angle_rad;
     // Uniform rope when the history starts balanced, else the steady rolling state of its first loads.
     let rolling = (first.t1_n != first.t2_n)
-        .then(|| level1::steady_rolling(design.pulley.mu, alpha, &first, direction.sign(), design.rope.ea_n));
+        .then(|| level1::steady_rolling(design.pulley.mu, alpha, &first, direction, design.rope.ea_n));
     let initial = match &rolling {
         None => Initial::Uniform(first.t1_n),
         Some(r) => Initial::Rolling { level1: r, first, direction },
@@ -191,7 +189,7 @@ fn run_samples(
     }
     if run.rows.iter().any(|r| r.gross_slip) {
         result.classical.gross_slip = true;
-        if let Some(check) = result.classical.checks.first_mut() {
+        if let Some(check) = check::named_mut(&mut result.classical.checks, level0::GROSS_SLIP_CHECK) {
             check.fail();
         }
     }

@@ -3,6 +3,9 @@
 
 pub use crate::requirements::{DEFAULT_SAFETY_FACTOR_SOURCE, Limit, Requirements, SafetyFactorBasis};
 
+mod direction;
+pub use direction::{Direction, Side};
+
 /// Standard gravity, used unless the sheet gives `g_m_s2`.
 pub const STANDARD_GRAVITY_M_S2: f64 = 9.81;
 
@@ -547,23 +550,4 @@ pub enum EndLoads {
         /// Tension per rope at the side-2 tangent point (N).
         t2_n: f64,
     },
-}
-
-/// Travel direction: `Lift` = side 1 goes up, the rope runs from side 1 to side 2 (v > 0).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Direction {
-    /// Side 1 goes up (v > 0).
-    Lift,
-    /// Side 1 goes down (v < 0).
-    Lower,
-}
-
-impl Direction {
-    /// +1 for lift, −1 for lower.
-    pub fn sign(self) -> f64 {
-        match self {
-            Direction::Lift => 1.0,
-            Direction::Lower => -1.0,
-        }
-    }
 }
