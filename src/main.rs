@@ -399,6 +399,8 @@ fn run_command(args: RunArgs) -> anyhow::Result<bool> {
     let summary = Summary::of(&design, &result);
     let provenance = report::html::Provenance::of(&args.sheet, std::env::args().collect())
         .map_err(|e| anyhow::anyhow!("{}: cannot read the sheet again for its SHA-256: {e}", design.sheet))?;
+    let provenance =
+        if args.no_report { provenance } else { provenance.with_accuracy(wrapcalc::bench::accuracy::evidence()) };
     let document = (!args.no_report).then_some((&design, &provenance));
     report::write(
         &out_dir,

@@ -146,7 +146,8 @@ fn suspended_ropes_in_the_rigid_limit_brake_at_the_closed_form() {
         let SceneKind::DutyCycle(cycle) = &d.scenes[0].kind else { panic!("a duty cycle") };
         let samples = level4::suspended_ropes(&d, hoist, cycle).expect("runs");
         let params = level4::hoist_params(&d, hoist, cycle);
-        let stop = stop::stop_report(&d, &params, &stop::kinematics_from(&samples, 8.0), 0.0, stop::StopMode::Brake).unwrap();
+        let stop =
+            stop::stop_report(&d, &params, &stop::kinematics_from(&samples, 8.0), 0.0, stop::StopMode::Brake).unwrap();
         assert!(
             rel(stop.decel_m_s2, expected) < 1e-6,
             "mirror {mirror}, lower {lower}: {} vs {expected}",

@@ -18,6 +18,9 @@ use crate::model::stop;
 use crate::planner::Level;
 use crate::roots::{self, Holding, RootStats};
 
+/// Name of the dynamic safety factor with the suspended ropes' dynamics (level 4).
+pub const ROPE_DYNAMICS_CHECK: &str = "dynamic safety factor with rope dynamics (level 4)";
+
 /// Finite elements per side of the suspended ropes (the first mode converges to well under 1 %
 /// with far fewer; more elements resolve the higher modes a jerk excites).
 pub const ELEMENTS_PER_SIDE: usize = 24;

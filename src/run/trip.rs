@@ -2,14 +2,14 @@
 //! the code's dynamic safety factor on rigid ropes beside the one with the ropes' dynamics, the
 //! emergency stop's report and checks, and the masses that hang at the worst instant.
 
-use crate::check::{Check, Verdict, braking};
+use crate::check::{Check, Verdict};
 use crate::design::{Design, DutyCycleScene, HistorySample, SafetyFactorBasis};
 use crate::dynamics::{self, HoistParams, Kinematics};
+use crate::model::braking_checks as braking;
 use crate::model::level0::{self, Classical, DYNAMIC_CHECK, EndState};
 use crate::model::stop::{self, SlipOnset, StopMode, StopReport};
 
-/// Name of the dynamic safety factor with the suspended ropes' dynamics (level 4).
-pub const ROPE_DYNAMICS_CHECK: &str = "dynamic safety factor with rope dynamics (level 4)";
+pub use crate::model::level4::ROPE_DYNAMICS_CHECK;
 
 /// A trip's samples with the pulley's kinematics at each.
 pub(super) struct Trip {

@@ -1,7 +1,7 @@
 //! The emergency stop's checks: the deceleration reached against the sheet's window (a minimum
 //! and a maximum for lifting and for lowering side 1), and against the slip-limited deceleration.
 
-use super::{Check, Relation, q};
+use crate::check::{Check, Relation, q};
 use crate::design::{Design, Direction, Limit};
 use crate::model::braking;
 use crate::model::stop::{SlipOnset, StopMode, StopReport};
@@ -83,7 +83,7 @@ pub fn stop_checks(design: &Design, stop: &StopReport, onset: Option<&SlipOnset>
 }
 
 /// What a stop's checks print as inputs: the stop, the brake and the masses.
-fn stop_inputs(design: &Design, stop: &StopReport) -> Vec<super::Quantity> {
+fn stop_inputs(design: &Design, stop: &StopReport) -> Vec<crate::check::Quantity> {
     let m = &stop.masses;
     let mut inputs = if stop.timed {
         vec![
