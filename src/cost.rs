@@ -20,7 +20,7 @@ use crate::dynamics::{self, Side};
 use crate::model::level2::Solver;
 use crate::model::level4;
 use crate::model::numerics::Numerics;
-use crate::planner::{self, Plan};
+use crate::planner::{self, Level, Plan};
 use serde::Serialize;
 
 /// Largest estimated run time of one scene accepted by default (s): ten minutes. Every sheet in
@@ -80,7 +80,7 @@ pub struct Part {
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Estimate {
     /// The model level the scene runs at.
-    pub level: u8,
+    pub level: Level,
     /// The stages of the work.
     pub parts: Vec<Part>,
     /// The sheet keys and options the cost grows with, with their values.
@@ -100,11 +100,11 @@ pub const ROW_BYTES: f64 = 1600.0;
 pub const MEMORY_LIMIT_BYTES: f64 = 4.0 * 1024.0 * 1024.0 * 1024.0;
 
 impl Estimate {
-    fn new(level: u8, parts: Vec<Part>, drivers: Vec<String>) -> Self {
+    fn new(level: Level, parts: Vec<Part>, drivers: Vec<String>) -> Self {
         Self::with_rows(level, parts, drivers, 0.0)
     }
 
-    fn with_rows(level: u8, parts: Vec<Part>, drivers: Vec<String>, rows: f64) -> Self {
+    fn with_rows(level: Level, parts: Vec<Part>, drivers: Vec<String>, rows: f64) -> Self {
         let seconds = parts.iter().map(|p| p.seconds).sum();
         Self { level, parts, drivers, seconds, rows, memory_bytes: rows * ROW_BYTES }
     }
@@ -137,16 +137,20 @@ pub fn estimate(design: &Design, scene: &Scene, plan: &Plan, nodes: usize, solve
     let n = nodes as f64;
     match &scene.kind {
         SceneKind::Loads(_) => match plan.level {
-            0 => Estimate::new(0, Vec::new(), Vec::new()),
-            1 => Estimate::new(
-                1,
+            Level::Closed0 => Estimate::new(Level::Closed0, Vec::new(), Vec::new()),
+            Level::Capstan1 => Estimate::new(
+                Level::Capstan1,
                 vec![part("creep theory (level 1)", n, "nodes", format!("--nodes {nodes}"), NODE_NS)],
                 vec![format!("--nodes {nodes}")],
             ),
-            _ if wrap == 3 => {
+            _ if wrap == Level::Elastic3 => {
                 let increments = 1.5 * n + 1.0;
                 let formula = format!("{nodes} segments × {increments:.0} increments (1.5 wrap lengths of run-in)");
-                Estimate::new(3, vec![level3_part(n * increments, formula, solver)], vec![format!("--nodes {nodes}")])
+                Estimate::new(
+                    Level::Elastic3,
+                    vec![level3_part(n * increments, formula, solver)],
+                    vec![format!("--nodes {nodes}")],
+                )
             }
             level => Estimate::new(level, vec![level2_part(3, 0, 0, 1)], Vec::new()),
         },
@@ -173,8 +177,8 @@ fn level3_part(work: f64, formula: String, solver: Solver) -> Part {
 fn history(
     design: &Design,
     h: &crate::design::HistoryScene,
-    level: u8,
-    wrap: u8,
+    level: Level,
+    wrap: Level,
     nodes: usize,
     solver: Solver,
 ) -> Estimate {
@@ -187,11 +191,11 @@ fn history(
         drivers.push(format!("output_step_s = {step} s ({} report rows)", times.len()));
     }
     let checks = part("checks (level 0)", samples.len() as f64, "states", "one per sample".into(), NODE_NS);
-    if level < 2 {
+    if level < Level::Rigid2 {
         return Estimate::new(level, vec![checks], drivers);
     }
     let rows = times.len() as u64;
-    if wrap == 3 {
+    if wrap == Level::Elastic3 {
         let first = samples[0];
         let run_in = if first.t1_n != first.t2_n { 1.5 * nodes as f64 } else { 0.0 };
         let increments = run_in + level3_increments(design, samples, &times, nodes);
@@ -261,8 +265,8 @@ fn duty_cycle(
     design: &Design,
     scene: &Scene,
     cycle: &crate::design::DutyCycleScene,
-    level: u8,
-    wrap: u8,
+    level: Level,
+    wrap: Level,
     nodes: usize,
     solver: Solver,
 ) -> Estimate {
@@ -277,7 +281,7 @@ fn duty_cycle(
         format!("the motion profile's {duration_s:.3} s ([hoist] stages, emergency_stop_s)"),
         format!("output_step_s = {} s ({rows:.0} report rows)", cycle.output_step_s),
     ];
-    if level < 4 {
+    if level < Level::Dynamic4 {
         let checks = part("checks (level 0, rigid ropes)", rows, "states", "one per report row".into(), NODE_NS);
         return Estimate::new(level, vec![checks], drivers);
     }
@@ -299,7 +303,7 @@ fn duty_cycle(
         parts.push(part("emergency margins (level 4)", work, "rope element-steps", formula, ROPE_NS));
     }
     let samples = (duration_s / level4::WRAP_SAMPLE_S).ceil() + 1.0;
-    if wrap == 3 {
+    if wrap == Level::Elastic3 {
         let travel_m: f64 =
             profile.x_extreme_times().windows(2).map(|w| (profile.at(w[1]).x_m - profile.at(w[0]).x_m).abs()).sum();
         let pitch_m = 0.5 * design.pulley.diameter_m * design.pulley.wrap_angle_rad / nodes as f64;

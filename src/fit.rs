@@ -12,10 +12,13 @@
 //! Brent minimizer on the bracket around the best of a 1° scan. Both signs of k (positive and
 //! reverse friction) are tried, and both entry sides when the rope is at rest.
 
-use argmin::core::{CostFunction, Error as ArgminError, Executor, State, TerminationReason};
+use argmin::core::{CostFunction, Error as ArgminError, Executor, State};
 use argmin::solver::brent::BrentOpt;
-use serde::Serialize;
+use serde::{Serialize, Serializer};
+use std::fmt;
 
+use crate::design::{Direction, Side};
+use crate::roots::ArgminTermination;
 use crate::wrap::Distribution;
 
 /// Iteration cap of the minimizer (it needs a few dozen at most on a 2° bracket).
@@ -29,9 +32,9 @@ pub struct CreepFit {
     /// Fitted tension of the idle arc, N per rope.
     pub idle_tension_n: f64,
     /// Friction in the fitted active arc: "positive" or "reverse" ("none" for a uniform field).
-    pub friction: &'static str,
+    pub friction: FitFriction,
     /// Where the rope enters the wrap in the fitted picture: "side 1" (θ = 0) or "side 2".
-    pub entry: &'static str,
+    pub entry: Side,
     /// Root mean square of T − T_fit over the distribution's samples, N.
     pub rms_residual_n: f64,
     /// The same relative to the range of the tension over the wrap, max T − min T: 0 is exactly
@@ -45,7 +48,53 @@ pub struct CreepFit {
     /// Iterations of argmin's solver.
     pub iterations: u64,
     /// argmin's termination reason ("not run: nothing to fit" for a uniform field).
-    pub termination: String,
+    pub termination: FitTermination,
+}
+
+/// The friction of a fitted active arc.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum FitFriction {
+    /// Positive friction (q > 0 in +θ: the tension falls along +θ).
+    Positive,
+    /// Reverse friction.
+    Reverse,
+    /// No active arc: a uniform field.
+    None,
+}
+
+impl fmt::Display for FitFriction {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            FitFriction::Positive => "positive",
+            FitFriction::Reverse => "reverse",
+            FitFriction::None => "none",
+        })
+    }
+}
+
+/// How the fit's minimizer ended: argmin's termination reason, or not run for a uniform field.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum FitTermination {
+    /// argmin ran and stopped for this reason.
+    Argmin(ArgminTermination),
+    /// A uniform field: nothing to fit, the minimizer did not run.
+    NothingToFit,
+}
+
+impl fmt::Display for FitTermination {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            FitTermination::Argmin(reason) => write!(f, "{reason}"),
+            FitTermination::NothingToFit => f.write_str("not run: nothing to fit"),
+        }
+    }
+}
+
+impl Serialize for FitTermination {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.collect_str(self)
+    }
 }
 
 /// Why the fit of the creep-theory picture failed.
@@ -54,6 +103,12 @@ pub enum FitError {
     /// argmin failed (its message).
     #[error("fit of the creep-theory picture: {0}")]
     Solver(String),
+    /// argmin stopped without converging (`MaxItersReached` among others).
+    #[error("fit of the creep-theory picture: did not converge: {0}")]
+    NotConverged(ArgminTermination),
+    /// argmin gave no termination reason.
+    #[error("fit of the creep-theory picture: no termination reason")]
+    NoTermination,
     #[error("fit of the creep-theory picture: the distribution has fewer than 3 samples")]
     /// Fewer than three samples to fit.
     TooFewSamples,
@@ -66,13 +121,16 @@ struct Shape<'a> {
     y_n: &'a [f64],
     alpha_rad: f64,
     k: f64,
-    entry_side1: bool,
+    entry: Side,
 }
 
 impl Shape<'_> {
     /// φ at θ for an active arc of length β (0 on the idle arc).
     fn phi(&self, theta: f64, beta: f64) -> f64 {
-        let phi = if self.entry_side1 { theta - (self.alpha_rad - beta) } else { beta - theta };
+        let phi = match self.entry {
+            Side::One => theta - (self.alpha_rad - beta),
+            Side::Two => beta - theta,
+        };
         phi.max(0.0)
     }
 
@@ -106,30 +164,30 @@ impl CostFunction for Shape<'_> {
     }
 }
 
-/// Fits the creep-theory picture to `d`. `centrifugal_n`: m'v² of its state; `entry_side1`:
-/// `Some(true)` when the rope runs side 1 → side 2, `Some(false)` the other way, `None` at rest
-/// (both tried).
-pub fn creep_fit(d: &Distribution, centrifugal_n: f64, entry_side1: Option<bool>) -> Result<CreepFit, FitError> {
+/// Fits the creep-theory picture to `d`. `centrifugal_n`: m'v² of its state; `travel`: the
+/// rope's direction (`Lift`: side 1 → side 2, entering at side 1), `None` at rest (both entries
+/// tried).
+pub fn creep_fit(d: &Distribution, centrifugal_n: f64, travel: Option<Direction>) -> Result<CreepFit, FitError> {
     if d.samples.len() < 3 {
         return Err(FitError::TooFewSamples);
     }
-    if let Some(uniform) = uniform_fit(d, entry_side1) {
+    if let Some(uniform) = uniform_fit(d, travel) {
         return Ok(uniform);
     }
     let theta_rad: Vec<f64> = d.samples.iter().map(|s| s.theta_deg.to_radians()).collect();
     let y_n: Vec<f64> = d.samples.iter().map(|s| s.tension_n - centrifugal_n).collect();
     let alpha_rad = d.wrap_angle_deg.to_radians();
-    let entries: &[bool] = match entry_side1 {
-        Some(true) => &[true],
-        Some(false) => &[false],
-        None => &[true, false],
+    let entries: &[Side] = match travel {
+        Some(Direction::Lift) => &[Side::One],
+        Some(Direction::Lower) => &[Side::Two],
+        None => &Side::BOTH,
     };
     // Coarse scan: every orientation, β on a 1° grid; keep the best.
     let steps = (d.wrap_angle_deg.ceil() as usize).max(2);
     let mut best: Option<(Shape, usize, f64)> = None;
-    for &entry_side1 in entries {
+    for &entry in entries {
         for k in [-d.mu, d.mu] {
-            let shape = Shape { theta_rad: &theta_rad, y_n: &y_n, alpha_rad, k, entry_side1 };
+            let shape = Shape { theta_rad: &theta_rad, y_n: &y_n, alpha_rad, k, entry };
             for i in 0..=steps {
                 let r = shape.solve(alpha_rad * i as f64 / steps as f64).1;
                 if best.as_ref().is_none_or(|b| r < b.2) {
@@ -148,26 +206,26 @@ pub fn creep_fit(d: &Distribution, centrifugal_n: f64, entry_side1: Option<bool>
         .map_err(|e| FitError::Solver(e.to_string()))?;
     let state = result.state();
     let iterations = state.get_iter();
-    let beta = match state.get_termination_reason() {
-        Some(TerminationReason::SolverConverged) => state.get_best_param().copied().unwrap_or(f64::NAN),
-        Some(reason) => return Err(FitError::Solver(format!("did not converge: {}", reason.text()))),
-        None => return Err(FitError::Solver("no termination reason".into())),
-    };
+    let termination = state.get_termination_reason().map(ArgminTermination::from).ok_or(FitError::NoTermination)?;
+    if !termination.converged() {
+        return Err(FitError::NotConverged(termination));
+    }
+    let beta = state.get_best_param().copied().unwrap_or(f64::NAN);
     let (a, r) = shape.solve(beta);
     let rms = (r / y_n.len() as f64).sqrt();
     let (lo, hi) = tension_range(d);
     // T decreasing along +θ is positive friction (dT/dθ = −q): entering at side 1 that is k < 0.
-    let positive = (shape.k < 0.0) == shape.entry_side1;
+    let positive = (shape.k < 0.0) == (shape.entry == Side::One);
     Ok(CreepFit {
         active_arc_deg: beta.to_degrees(),
         idle_tension_n: a + centrifugal_n,
-        friction: if positive { "positive" } else { "reverse" },
-        entry: if shape.entry_side1 { "side 1" } else { "side 2" },
+        friction: if positive { FitFriction::Positive } else { FitFriction::Reverse },
+        entry: shape.entry,
         rms_residual_n: rms,
         rms_residual_rel: rms / (hi - lo),
         note: None,
         iterations,
-        termination: TerminationReason::SolverConverged.text().to_string(),
+        termination: FitTermination::Argmin(termination),
     })
 }
 
@@ -186,7 +244,7 @@ fn tension_range(d: &Distribution) -> (f64, f64) {
 /// classical picture with the whole wrap idle at the mean tension, β = 0. Its residual relative
 /// to the range is 0 with the reason in `note`; the absolute residual is the field's own
 /// round-off. `None` for a field with a real range.
-fn uniform_fit(d: &Distribution, entry_side1: Option<bool>) -> Option<CreepFit> {
+fn uniform_fit(d: &Distribution, travel: Option<Direction>) -> Option<CreepFit> {
     let (lo, hi) = tension_range(d);
     let scale = lo.abs().max(hi.abs());
     if hi - lo > UNIFORM_RANGE_REL * scale {
@@ -198,8 +256,8 @@ fn uniform_fit(d: &Distribution, entry_side1: Option<bool>) -> Option<CreepFit> 
     Some(CreepFit {
         active_arc_deg: 0.0,
         idle_tension_n: mean,
-        friction: "none",
-        entry: if entry_side1 == Some(false) { "side 2" } else { "side 1" },
+        friction: FitFriction::None,
+        entry: travel.map_or(Side::One, Direction::entry),
         rms_residual_n: rms,
         rms_residual_rel: 0.0,
         note: Some(format!(
@@ -208,6 +266,6 @@ fn uniform_fit(d: &Distribution, entry_side1: Option<bool>) -> Option<CreepFit> 
             hi - lo
         )),
         iterations: 0,
-        termination: "not run: nothing to fit".into(),
+        termination: FitTermination::NothingToFit,
     })
 }

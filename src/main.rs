@@ -5,7 +5,7 @@ use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use wrapcalc::design::{Design, Scene};
-use wrapcalc::planner::Request;
+use wrapcalc::planner::{Level, Request};
 use wrapcalc::report::{self, summary::Summary, table};
 use wrapcalc::run::{self, Options, RunResult};
 use wrapcalc::sheet;
@@ -174,12 +174,12 @@ impl From<SolverArg> for wrapcalc::model::level2::Solver {
 #[derive(Clone, Copy, PartialEq, Eq)]
 enum LevelArg {
     Auto,
-    Level(u8),
+    Level(Level),
 }
 
 impl LevelArg {
     /// The level `--level` forces (`None`: the planner chooses).
-    fn forced(self) -> Option<u8> {
+    fn forced(self) -> Option<Level> {
         match self {
             LevelArg::Auto => None,
             LevelArg::Level(l) => Some(l),
@@ -196,9 +196,9 @@ fn styled(stream_is_terminal: bool) -> bool {
 fn parse_level(s: &str) -> Result<LevelArg, String> {
     match s {
         "auto" => Ok(LevelArg::Auto),
-        _ => match s.parse::<u8>() {
-            Ok(l @ 0..=4) => Ok(LevelArg::Level(l)),
-            _ => Err(format!("expected auto or a level 0–4, got {s:?}")),
+        _ => match s.parse::<u8>().ok().and_then(Level::from_number) {
+            Some(l) => Ok(LevelArg::Level(l)),
+            None => Err(format!("expected auto or a level 0–4, got {s:?}")),
         },
     }
 }
@@ -399,6 +399,8 @@ fn run_command(args: RunArgs) -> anyhow::Result<bool> {
     let summary = Summary::of(&design, &result);
     let provenance = report::html::Provenance::of(&args.sheet, std::env::args().collect())
         .map_err(|e| anyhow::anyhow!("{}: cannot read the sheet again for its SHA-256: {e}", design.sheet))?;
+    let provenance =
+        if args.no_report { provenance } else { provenance.with_accuracy(wrapcalc::bench::accuracy::evidence()) };
     let document = (!args.no_report).then_some((&design, &provenance));
     report::write(
         &out_dir,

@@ -18,9 +18,56 @@
 //! a steady run-through) and is an error without a `[lining]`.
 
 use crate::design::{Output, Scene, SceneKind};
+use serde::{Serialize, Serializer};
+use std::fmt;
 
-/// The levels this version implements.
-pub const LEVELS: &[u8] = &[0, 1, 2, 3, 4];
+/// A model level (docs/physics.md §7), reported as its number 0–4.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Level {
+    /// Level 0: the closed-form checks (Euler's limit, the safety factors), no distribution.
+    Closed0,
+    /// Level 1: creep theory, the steady distribution of capstan friction under constant end loads.
+    Capstan1,
+    /// Level 2: the discrete stick–slip model of the wrap on a rigid lining.
+    Rigid2,
+    /// Level 3: the wrap on an elastic lining, with rope bending and inertia.
+    Elastic3,
+    /// Level 4: a hoisting cycle, the suspended ropes' dynamics giving the end tensions.
+    Dynamic4,
+}
+
+impl Level {
+    /// Every level this version implements, lowest first.
+    pub const ALL: [Level; 5] = [Level::Closed0, Level::Capstan1, Level::Rigid2, Level::Elastic3, Level::Dynamic4];
+
+    /// The level's number, 0–4.
+    pub fn number(self) -> u8 {
+        match self {
+            Level::Closed0 => 0,
+            Level::Capstan1 => 1,
+            Level::Rigid2 => 2,
+            Level::Elastic3 => 3,
+            Level::Dynamic4 => 4,
+        }
+    }
+
+    /// The level numbered `n` (`None` above 4).
+    pub fn from_number(n: u8) -> Option<Level> {
+        Level::ALL.get(usize::from(n)).copied()
+    }
+}
+
+impl fmt::Display for Level {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        fmt::Display::fmt(&self.number(), f)
+    }
+}
+
+impl Serialize for Level {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.serialize_u8(self.number())
+    }
+}
 
 /// What the caller wants from a run.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -30,15 +77,15 @@ pub enum Request {
     /// Everything a scene's kind can give, at the level the planner picks or the one forced.
     Full {
         /// The level `--level` forces (`None`: the planner's choice).
-        forced_level: Option<u8>,
+        forced_level: Option<Level>,
     },
 }
 
 /// The level a scene runs at, and why.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Plan {
-    /// The model level (0–4).
-    pub level: u8,
+    /// The model level.
+    pub level: Level,
     /// Why this level, in words for the report.
     pub reason: String,
 }
@@ -46,14 +93,6 @@ pub struct Plan {
 /// Why a scene cannot run at the level asked for.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum PlanError {
-    /// The forced level is not one this version implements.
-    #[error("scene \"{scene}\": level {level} is not available in this version (levels 0–4); use --level auto")]
-    NotAvailable {
-        /// The scene's name.
-        scene: String,
-        /// The level forced.
-        level: u8,
-    },
     /// The forced level is too low for the scene's kind.
     #[error(
         "scene \"{scene}\": level {level} cannot answer a {kind} scene ({why}); use --level auto or a level ≥ {needed}"
@@ -64,9 +103,9 @@ pub enum PlanError {
         /// The scene's kind.
         kind: &'static str,
         /// The level forced.
-        level: u8,
+        level: Level,
         /// The least level that answers the scene.
-        needed: u8,
+        needed: Level,
         /// What the forced level cannot give.
         why: &'static str,
     },
@@ -90,37 +129,30 @@ pub enum PlanError {
 
 /// Chooses the level for one scene.
 pub fn plan(scene: &Scene, request: Request) -> Result<Plan, PlanError> {
-    match (request, &scene.kind) {
-        (Request::ChecksOnly, _) => {
-            Ok(Plan { level: 0, reason: "anti-slip checks only: closed form (level 0)".into() })
+    let forced = match request {
+        Request::ChecksOnly => {
+            return Ok(Plan { level: Level::Closed0, reason: "anti-slip checks only: closed form (level 0)".into() });
         }
-        (Request::Full { forced_level: Some(level) }, _) if !LEVELS.contains(&level) => {
-            Err(PlanError::NotAvailable { scene: scene.name.clone(), level })
+        Request::Full { forced_level: None } => return Ok(auto(scene, false)),
+        Request::Full { forced_level: Some(level) } => level,
+    };
+    let too_low = |kind, needed, why| PlanError::TooLow { scene: scene.name.clone(), kind, level: forced, needed, why };
+    match (forced, &scene.kind) {
+        (Level::Closed0, _) => {
+            Ok(Plan { level: Level::Closed0, reason: "forced by --level 0: checks only, no distribution".into() })
         }
-        (Request::Full { forced_level: Some(0) }, _) => {
-            Ok(Plan { level: 0, reason: "forced by --level 0: checks only, no distribution".into() })
+        (Level::Capstan1, SceneKind::History(_)) => {
+            Err(too_low("history", Level::Rigid2, "creep theory has no memory of the load history"))
         }
-        (Request::Full { forced_level: Some(1) }, SceneKind::History(_)) => Err(PlanError::TooLow {
-            scene: scene.name.clone(),
-            kind: "history",
-            level: 1,
-            needed: 2,
-            why: "creep theory has no memory of the load history",
-        }),
-        (Request::Full { forced_level: Some(level @ (1 | 2)) }, SceneKind::DutyCycle(_)) => Err(PlanError::TooLow {
-            scene: scene.name.clone(),
-            kind: "duty-cycle",
-            level,
-            needed: 4,
-            why: "its end tensions come from the dynamics of the suspended ropes",
-        }),
-        (Request::Full { forced_level: Some(4) }, SceneKind::Loads(_) | SceneKind::History(_)) => {
+        (Level::Capstan1 | Level::Rigid2, SceneKind::DutyCycle(_)) => Err(too_low(
+            "duty-cycle",
+            Level::Dynamic4,
+            "its end tensions come from the dynamics of the suspended ropes",
+        )),
+        (Level::Dynamic4, SceneKind::Loads(_) | SceneKind::History(_)) => {
             Err(PlanError::NoHoist { scene: scene.name.clone(), kind: scene.kind.name() })
         }
-        (Request::Full { forced_level: Some(level) }, _) => {
-            Ok(Plan { level, reason: format!("forced by --level {level}") })
-        }
-        (Request::Full { forced_level: None }, _) => Ok(auto(scene, false)),
+        (level, _) => Ok(Plan { level, reason: format!("forced by --level {level}") }),
     }
 }
 
@@ -128,30 +160,30 @@ pub fn plan(scene: &Scene, request: Request) -> Result<Plan, PlanError> {
 const WRAP3: &str = "the wrap at level 3 (elastic lining of the sheet's [lining], rope bending and inertia)";
 
 /// The level each output of a scene needs, and why (`lining`: the sheet has a `[lining]`).
-fn needs(kind: &SceneKind, output: Output, lining: bool) -> (u8, String) {
+fn needs(kind: &SceneKind, output: Output, lining: bool) -> (Level, String) {
     match (output, kind) {
         (Output::Checks | Output::Margins, SceneKind::DutyCycle(_)) => (
-            0,
+            Level::Closed0,
             "checks and margins: closed form on rigid ropes, T = m(g ± a)/n along the motion profile (level 0)".into(),
         ),
-        (Output::Checks | Output::Margins, _) => (0, "checks and margins: closed form (level 0)".into()),
+        (Output::Checks | Output::Margins, _) => (Level::Closed0, "checks and margins: closed form (level 0)".into()),
         (_, SceneKind::Loads(_)) => {
-            (1, "constant end loads: the steady distribution of creep theory is exact (level 1)".into())
+            (Level::Capstan1, "constant end loads: the steady distribution of creep theory is exact (level 1)".into())
         }
         (_, SceneKind::History(_)) if lining => (
-            3,
+            Level::Elastic3,
             format!("a load history on an elastic lining: the stuck rope and the sheared lining remember it; {WRAP3}"),
         ),
         (_, SceneKind::History(_)) => (
-            2,
+            Level::Rigid2,
             "a load history: the stuck rope remembers it, which needs the discrete stick–slip model (level 2)".into(),
         ),
         (_, SceneKind::DutyCycle(_)) if lining => (
-            4,
+            Level::Dynamic4,
             format!("a hoisting cycle: the suspended ropes' dynamics give the end tensions (level 4), {WRAP3}"),
         ),
         (_, SceneKind::DutyCycle(_)) => (
-            4,
+            Level::Dynamic4,
             "a hoisting cycle: the suspended ropes' dynamics give the end tensions, the discrete stick–slip model the wrap (level 4)".into(),
         ),
     }
@@ -171,32 +203,33 @@ fn auto(scene: &Scene, lining: bool) -> Plan {
 /// [`plan`] for a design that may have a `[lining]` (`lining`): level 3 where the sheet
 /// switches it on or `--level 3` forces it; everything else as [`plan`].
 pub fn plan_with_lining(scene: &Scene, request: Request, lining: bool) -> Result<Plan, PlanError> {
-    match (request, &scene.kind, lining) {
-        (Request::Full { forced_level: Some(3) }, _, false) => Err(PlanError::NoLining { scene: scene.name.clone() }),
-        (Request::Full { forced_level: Some(3) }, SceneKind::DutyCycle(_), true) => Ok(Plan {
-            level: 4,
+    let Request::Full { forced_level } = request else { return plan(scene, request) };
+    match (forced_level, &scene.kind, lining) {
+        (Some(Level::Elastic3), _, false) => Err(PlanError::NoLining { scene: scene.name.clone() }),
+        (Some(Level::Elastic3), SceneKind::DutyCycle(_), true) => Ok(Plan {
+            level: Level::Dynamic4,
             reason: format!("forced by --level 3: {WRAP3}, its ends from the suspended ropes' dynamics (level 4)"),
         }),
-        (Request::Full { forced_level: Some(3) }, _, true) => {
-            Ok(Plan { level: 3, reason: format!("forced by --level 3: {WRAP3}") })
+        (Some(Level::Elastic3), _, true) => {
+            Ok(Plan { level: Level::Elastic3, reason: format!("forced by --level 3: {WRAP3}") })
         }
-        (Request::Full { forced_level: Some(4) }, SceneKind::DutyCycle(_), true) => Ok(Plan {
-            level: 4,
+        (Some(Level::Dynamic4), SceneKind::DutyCycle(_), true) => Ok(Plan {
+            level: Level::Dynamic4,
             reason: format!(
                 "forced by --level 4: the suspended ropes' dynamics give the end tensions (level 4), {WRAP3}"
             ),
         }),
-        (Request::Full { forced_level: None }, _, _) => Ok(auto(scene, lining)),
+        (None, _, _) => Ok(auto(scene, lining)),
         _ => plan(scene, request),
     }
 }
 
-/// The level the wrap runs at in a time scene of this plan: 3 for a level-3 plan and for a
-/// level-4 plan on a sheet with a `[lining]`, else 2.
-pub fn wrap_level(plan: &Plan, lining: bool) -> u8 {
+/// The level the wrap runs at in a time scene of this plan: level 3 for a level-3 plan and for a
+/// level-4 plan on a sheet with a `[lining]`, else level 2.
+pub fn wrap_level(plan: &Plan, lining: bool) -> Level {
     match plan.level {
-        3 => 3,
-        4 if lining => 3,
-        _ => 2,
+        Level::Elastic3 => Level::Elastic3,
+        Level::Dynamic4 if lining => Level::Elastic3,
+        _ => Level::Rigid2,
     }
 }

@@ -9,7 +9,8 @@
 
 use argmin::core::{CostFunction, Error as ArgminError, Executor, State, TerminationReason};
 use argmin::solver::brent::BrentRoot;
-use serde::Serialize;
+use serde::{Serialize, Serializer};
+use std::fmt;
 
 /// Iteration cap of one root search; Brent needs ~50 at most for f64 on a bracket.
 pub const MAX_ITERS: u64 = 200;
@@ -29,11 +30,95 @@ pub enum RootError {
     #[error("root finding did not converge: {reason}")]
     NotConverged {
         /// Why it stopped (argmin's termination reason, or what was not finite).
-        reason: String,
+        reason: NoRoot,
     },
     /// argmin failed (its message).
     #[error("root finding failed: {0}")]
     Solver(String),
+}
+
+/// argmin's termination reason as data (its `TerminationReason`), serialised and printed as
+/// argmin's own text; only [`ArgminTermination::SolverConverged`] is a success.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum ArgminTermination {
+    /// The solver converged.
+    SolverConverged,
+    /// The iteration cap was reached without convergence: a failure.
+    MaxItersReached,
+    /// The target cost was reached.
+    TargetCostReached,
+    /// The run was interrupted.
+    Interrupt,
+    /// The run timed out.
+    Timeout,
+    /// The solver stopped for a reason of its own (its text).
+    SolverExit(String),
+}
+
+impl ArgminTermination {
+    /// Whether the solver converged (every other reason is a failure).
+    pub fn converged(&self) -> bool {
+        *self == ArgminTermination::SolverConverged
+    }
+}
+
+impl From<&TerminationReason> for ArgminTermination {
+    fn from(reason: &TerminationReason) -> Self {
+        match reason {
+            TerminationReason::SolverConverged => Self::SolverConverged,
+            TerminationReason::MaxItersReached => Self::MaxItersReached,
+            TerminationReason::TargetCostReached => Self::TargetCostReached,
+            TerminationReason::Interrupt => Self::Interrupt,
+            TerminationReason::Timeout => Self::Timeout,
+            TerminationReason::SolverExit(text) => Self::SolverExit(text.clone()),
+        }
+    }
+}
+
+impl fmt::Display for ArgminTermination {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Self::SolverConverged => TerminationReason::SolverConverged.text(),
+            Self::MaxItersReached => TerminationReason::MaxItersReached.text(),
+            Self::TargetCostReached => TerminationReason::TargetCostReached.text(),
+            Self::Interrupt => TerminationReason::Interrupt.text(),
+            Self::Timeout => TerminationReason::Timeout.text(),
+            Self::SolverExit(text) => text,
+        })
+    }
+}
+
+impl Serialize for ArgminTermination {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.collect_str(self)
+    }
+}
+
+/// Why a root search stopped without a root.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum NoRoot {
+    /// argmin stopped for a reason other than convergence.
+    Argmin(ArgminTermination),
+    /// [`bracketed`] stopped without convergence.
+    Bracketed(Termination),
+    /// argmin gave no termination reason.
+    NoReason,
+    /// argmin converged on a root that is not finite.
+    NonFiniteRoot,
+    /// The function is not finite at a point inside the bracket.
+    NonFiniteInside,
+}
+
+impl fmt::Display for NoRoot {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            NoRoot::Argmin(reason) => write!(f, "{reason}"),
+            NoRoot::Bracketed(termination) => write!(f, "{termination:?}"),
+            NoRoot::NoReason => f.write_str("no termination reason"),
+            NoRoot::NonFiniteRoot => f.write_str("converged without a finite root"),
+            NoRoot::NonFiniteInside => f.write_str("the function is not finite inside the bracket"),
+        }
+    }
 }
 
 /// Running tally of root searches, reported in summary.json.
@@ -115,10 +200,10 @@ pub fn bracketed(f: impl Fn(f64) -> f64, lo: f64, hi: f64, tol: f64, stats: &mut
         b += if d.abs() > tol1 { d } else { tol1.copysign(xm) };
         fb = f(b);
         if !fb.is_finite() {
-            return Err(RootError::NotConverged { reason: "the function is not finite inside the bracket".into() });
+            return Err(RootError::NotConverged { reason: NoRoot::NonFiniteInside });
         }
     }
-    Err(RootError::NotConverged { reason: format!("{:?}", Termination::MaxItersReached) })
+    Err(RootError::NotConverged { reason: NoRoot::Bracketed(Termination::MaxItersReached) })
 }
 
 struct Fun<F>(F);
@@ -157,9 +242,47 @@ pub fn brent(f: impl Fn(f64) -> f64, lo: f64, hi: f64, tol: f64, stats: &mut Roo
             .get_best_param()
             .copied()
             .filter(|x| x.is_finite())
-            .ok_or(RootError::NotConverged { reason: "converged without a finite root".into() }),
-        Some(reason) => Err(RootError::NotConverged { reason: reason.text().to_string() }),
-        None => Err(RootError::NotConverged { reason: "no termination reason".into() }),
+            .ok_or(RootError::NotConverged { reason: NoRoot::NonFiniteRoot }),
+        Some(reason) => Err(RootError::NotConverged { reason: NoRoot::Argmin(reason.into()) }),
+        None => Err(RootError::NotConverged { reason: NoRoot::NoReason }),
+    }
+}
+
+/// Where a criterion `h` (≥ 0: holds) stops holding on `[lo, hi]`, searched from `lo`.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Holding {
+    /// It holds up to this root of h.
+    Until(f64),
+    /// It holds over the whole range.
+    Throughout,
+    /// It fails already at `lo`.
+    NotAtStart,
+    /// h is not finite at an end of the range.
+    NotFinite,
+    /// The root search failed.
+    Failed(RootError),
+}
+
+/// Relative tolerance of [`largest_holding`] (x-tolerance of Brent's method over the range's width).
+pub const HOLDING_REL_TOL: f64 = 1e-13;
+
+/// Largest x in `[lo, hi]` from which `h` (≥ 0: holds) still holds, as the root of h by
+/// [`brent`] to [`HOLDING_REL_TOL`] of the range in x.
+pub fn largest_holding(h: impl Fn(f64) -> f64, lo: f64, hi: f64, stats: &mut RootStats) -> Holding {
+    let (h_lo, h_hi) = (h(lo), h(hi));
+    if !(h_lo.is_finite() && h_hi.is_finite()) {
+        return Holding::NotFinite;
+    }
+    if h_lo < 0.0 {
+        return Holding::NotAtStart;
+    }
+    if h_hi >= 0.0 {
+        return Holding::Throughout;
+    }
+    match brent(&h, lo, hi, HOLDING_REL_TOL * (hi - lo), stats) {
+        Ok(x) => Holding::Until(x),
+        Err(RootError::NoBracket { .. }) => Holding::Throughout,
+        Err(e) => Holding::Failed(e),
     }
 }
 

@@ -14,7 +14,7 @@
 
 use wrapcalc::design::{Design, SceneKind};
 use wrapcalc::model::{braking, level4, stop};
-use wrapcalc::planner::Request;
+use wrapcalc::planner::{Level, Request};
 use wrapcalc::run::{self, Options, SceneResult};
 use wrapcalc::sheet;
 
@@ -82,7 +82,7 @@ fn design(mirror: bool, lower: bool, ea_n: f64, brake_step: bool) -> Design {
 
 fn run_at(d: &Design, level: u8) -> SceneResult {
     let scenes: Vec<_> = d.scenes.iter().collect();
-    let request = Request::Full { forced_level: Some(level) };
+    let request = Request::Full { forced_level: Level::from_number(level) };
     run::run(d, &scenes, Options { request, nodes: 30, ..Options::default() }).expect("runs").scenes.remove(0)
 }
 
@@ -146,7 +146,8 @@ fn suspended_ropes_in_the_rigid_limit_brake_at_the_closed_form() {
         let SceneKind::DutyCycle(cycle) = &d.scenes[0].kind else { panic!("a duty cycle") };
         let samples = level4::suspended_ropes(&d, hoist, cycle).expect("runs");
         let params = level4::hoist_params(&d, hoist, cycle);
-        let stop = stop::stop_report(&d, &params, &stop::kinematics_from(&samples, 8.0), 0.0, "brake").unwrap();
+        let stop =
+            stop::stop_report(&d, &params, &stop::kinematics_from(&samples, 8.0), 0.0, stop::StopMode::Brake).unwrap();
         assert!(
             rel(stop.decel_m_s2, expected) < 1e-6,
             "mirror {mirror}, lower {lower}: {} vs {expected}",

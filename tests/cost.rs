@@ -81,7 +81,7 @@ fn level4_estimate_is_rope_elements_times_the_steps_taken() {
     let e = estimate_of(&design, "duty-MID", Options::default());
     let ropes = e.parts.iter().find(|p| p.unit == "rope element-steps").expect("a rope part");
     assert_eq!(ropes.work, 48.0 * steps as f64, "{e:?}");
-    assert_eq!(e.level, 4);
+    assert_eq!(e.level, wrapcalc::planner::Level::Dynamic4);
 }
 
 /// Level 3's measure is segments × increments. Its count of the increments agrees with what

@@ -224,7 +224,10 @@ fn duty_cycle_reports_the_code_value_and_the_rope_dynamics_value() {
     let d = design();
     let level4 = &run_scenes(&d, &["emergency-MID"])[0];
     let scenes: Vec<_> = d.scenes.iter().filter(|s| s.name == "emergency-MID").collect();
-    let options = Options { request: wrapcalc::planner::Request::Full { forced_level: Some(0) }, ..Options::default() };
+    let options = Options {
+        request: wrapcalc::planner::Request::Full { forced_level: Some(wrapcalc::planner::Level::Closed0) },
+        ..Options::default()
+    };
     let level0 = &run::run(&d, &scenes, options).expect("runs").scenes[0];
     let code = level4.classical.dynamic_safety_factor.expect("a code value");
     assert_eq!(Some(code), level0.classical.dynamic_safety_factor, "the code value is level 0's");

@@ -8,6 +8,7 @@
 
 use wrapcalc::contact::ContactLaw;
 use wrapcalc::derived;
+use wrapcalc::design::Direction;
 use wrapcalc::model::history::{HistorySample, Output};
 use wrapcalc::model::level0::EndState;
 use wrapcalc::model::level1::steady_rolling;
@@ -123,7 +124,7 @@ fn steady_rolling_is_reached_from_a_uniform_start_in_both_directions() {
         let initial = Profile::uniform(alpha(), entry, MU);
         let run = run_history(p, &samples, Default::default(), initial, 360).expect("run");
         let end = EndState { t1_n: t1, t2_n: t2, speed_m_s: v, accel_m_s2: 0.0, centrifugal_n: 10.0 * v * v };
-        let creep = steady_rolling(MU, alpha(), &end, v.signum(), p.ea_n);
+        let creep = steady_rolling(MU, alpha(), &end, Direction::of_speed(v).expect("moving"), p.ea_n);
         let law = ContactLaw::new(MU, end.centrifugal_n);
         let exact = derived::summarize(&creep.field, &law).expect("summary");
         let got = &run.last().summary;
@@ -281,7 +282,7 @@ fn lowering_from_rest_runs_and_mirrors_lifting() {
 /// The steady state of the first loads (creep theory) as the start of a history.
 fn uniform_rolling(first: HistorySample, p: Params) -> TensionField {
     let end = EndState { t1_n: first.t1_n, t2_n: first.t2_n, speed_m_s: 0.0, accel_m_s2: 0.0, centrifugal_n: 0.0 };
-    steady_rolling(MU, p.wrap_angle_rad, &end, 1.0, p.ea_n).field
+    steady_rolling(MU, p.wrap_angle_rad, &end, Direction::Lift, p.ea_n).field
 }
 
 #[test]
@@ -383,7 +384,7 @@ fn a_ratio_within_an_ulp_of_the_euler_limit_gets_one_verdict_at_every_level() {
         let samples = [s(0.0, T0, T0, 0.0), s(1.0, ratio * T0, T0, 0.0)];
         let (_, sim) = final_field(Params { mass_per_m_kg: 0.0, ..params(Solver::Fast) }, &samples);
         let end = EndState { t1_n: ratio * T0, t2_n: T0, speed_m_s: 0.0, accel_m_s2: 0.0, centrifugal_n: 0.0 };
-        let creep = steady_rolling(MU, alpha(), &end, 1.0, 2.6e8);
+        let creep = steady_rolling(MU, alpha(), &end, Direction::Lift, 2.6e8);
         let level0 = end.tension_ratio() > limit;
         assert_eq!(sim.gross_slip, level0, "ratio {ratio}: history vs level 0");
         assert_eq!(creep.gross_slip, level0, "ratio {ratio}: creep theory vs level 0");

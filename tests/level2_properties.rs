@@ -354,7 +354,7 @@ speed_m_s = -6.0
     let scenes: Vec<_> = design.scenes.iter().collect();
     let at = |level: u8| {
         let options = Options {
-            request: wrapcalc::planner::Request::Full { forced_level: Some(level) },
+            request: wrapcalc::planner::Request::Full { forced_level: wrapcalc::planner::Level::from_number(level) },
             nodes: 360,
             ..Options::default()
         };
@@ -362,7 +362,7 @@ speed_m_s = -6.0
     };
     let (one, two) = (at(1), at(2));
     for (a, b) in one.scenes.iter().zip(&two.scenes) {
-        assert_eq!((a.plan.level, b.plan.level), (1, 2));
+        assert_eq!((a.plan.level.number(), b.plan.level.number()), (1, 2));
         let (wa, wb) = (a.wrap.as_ref().expect("level 1"), b.wrap.as_ref().expect("level 2"));
         for (x, y) in [
             (wa.summary.positive_arc_rad, wb.summary.positive_arc_rad),

@@ -300,18 +300,18 @@ fn sheet_keys_derive_the_lining_and_bending_stiffness() {
 /// and `--level 3` forces it; without one, `--level 3` is an error naming the section.
 #[test]
 fn the_planner_switches_level_3_on_with_the_lining() {
-    use wrapcalc::planner::{PlanError, Request, plan_with_lining, wrap_level};
+    use wrapcalc::planner::{Level, PlanError, Request, plan_with_lining, wrap_level};
     let design = wrapcalc::sheet::parse("l3.toml", LINING_SHEET).expect("valid sheet");
     let auto = Request::Full { forced_level: None };
-    let forced3 = Request::Full { forced_level: Some(3) };
+    let forced3 = Request::Full { forced_level: Some(Level::Elastic3) };
     let history = &design.scenes[0];
     let loads = &design.scenes[1];
-    assert_eq!(plan_with_lining(history, auto, true).unwrap().level, 3);
-    assert_eq!(plan_with_lining(loads, auto, true).unwrap().level, 1);
-    assert_eq!(plan_with_lining(loads, forced3, true).unwrap().level, 3);
-    assert_eq!(plan_with_lining(history, auto, false).unwrap().level, 2);
-    let plan2 = plan_with_lining(history, Request::Full { forced_level: Some(2) }, true).unwrap();
-    assert_eq!(wrap_level(&plan2, true), 2, "--level 2 keeps the rigid lining");
+    assert_eq!(plan_with_lining(history, auto, true).unwrap().level, Level::Elastic3);
+    assert_eq!(plan_with_lining(loads, auto, true).unwrap().level, Level::Capstan1);
+    assert_eq!(plan_with_lining(loads, forced3, true).unwrap().level, Level::Elastic3);
+    assert_eq!(plan_with_lining(history, auto, false).unwrap().level, Level::Rigid2);
+    let plan2 = plan_with_lining(history, Request::Full { forced_level: Some(Level::Rigid2) }, true).unwrap();
+    assert_eq!(wrap_level(&plan2, true), Level::Rigid2, "--level 2 keeps the rigid lining");
     let err = plan_with_lining(history, forced3, false).unwrap_err();
     assert!(matches!(err, PlanError::NoLining { .. }));
     assert!(err.to_string().contains("[lining]"), "{err}");
@@ -326,7 +326,7 @@ fn a_history_scene_runs_at_level_3() {
     let scenes: Vec<_> = design.scenes.iter().take(1).collect();
     let result = run(&design, &scenes, Options { nodes: 90, ..Options::default() }).expect("runs");
     let scene = &result.scenes[0];
-    assert_eq!(scene.plan.level, 3);
+    assert_eq!(scene.plan.level, wrapcalc::planner::Level::Elastic3);
     let wrap = scene.wrap.as_ref().expect("a distribution");
     for d in scene.snapshots.iter().chain([&wrap.distribution]) {
         for s in &d.samples {

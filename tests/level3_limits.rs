@@ -103,8 +103,12 @@ speed_m_s = [{ms}, {ms}]
 fn run_sheet(text: &str, solver: Solver, scenes: &[&str]) -> RunResult {
     let design = wrapcalc::sheet::parse("near.toml", text).expect("valid sheet");
     let chosen: Vec<_> = design.scenes.iter().filter(|s| scenes.contains(&s.name.as_str())).collect();
-    let options =
-        Options { request: Request::Full { forced_level: Some(3) }, nodes: 120, solver, ..Options::default() };
+    let options = Options {
+        request: Request::Full { forced_level: Some(wrapcalc::planner::Level::Elastic3) },
+        nodes: 120,
+        solver,
+        ..Options::default()
+    };
     run(&design, &chosen, options).expect("runs")
 }
 

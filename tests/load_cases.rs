@@ -14,6 +14,7 @@ use assert_cmd::Command;
 use wrapcalc::check::{Check, Verdict};
 use wrapcalc::design::{Design, Phase};
 use wrapcalc::load_cases::{self, CaseResult, MatrixResult, Position};
+use wrapcalc::planner::Level;
 use wrapcalc::sheet;
 
 /// The hoist; `mirror`: its sides swapped, the start at the other end of the travel (side 1 of
@@ -108,7 +109,7 @@ fn find<'a>(
 ) -> &'a CaseResult {
     m.cases
         .iter()
-        .find(|c| c.direction == dir && c.phase == phase && pos(&c.position) && c.level == level)
+        .find(|c| c.direction == dir && c.phase == phase && pos(&c.position) && c.level.number() == level)
         .expect("the case")
 }
 
@@ -221,8 +222,8 @@ fn the_mirrored_hoist_has_the_mirrored_matrix() {
             (Position::Stop { t_s: f, .. }, Position::Stop { t_s: g, .. }) => f == g,
             _ => false,
         };
-        let cb = find(&b, other, ca.phase, mirrored, ca.level);
-        let tol = if ca.level == 4 { 1e-7 } else { 1e-9 };
+        let cb = find(&b, other, ca.phase, mirrored, ca.level.number());
+        let tol = if ca.level == Level::Dynamic4 { 1e-7 } else { 1e-9 };
         let what = &ca.label;
         assert!(
             close(ca.t1_n, cb.t2_n, tol) && close(ca.t2_n, cb.t1_n, tol),
@@ -251,7 +252,7 @@ fn the_mirrored_hoist_has_the_mirrored_matrix() {
 #[test]
 fn rope_dynamics_cases_are_labelled_as_such() {
     let m = matrix(&design(false, 180.0), true);
-    for c in m.cases.iter().filter(|c| c.level == 4) {
+    for c in m.cases.iter().filter(|c| c.level == Level::Dynamic4) {
         assert!(c.dynamic_safety_factor.is_none() && c.rope_dynamics_safety_factor.is_some(), "{}", c.label);
         let k = c.checks.iter().find(|k| k.name == wrapcalc::run::ROPE_DYNAMICS_CHECK).expect("the check");
         assert!(k.verdict != Verdict::Fail, "not binding: {:?}", k.verdict);

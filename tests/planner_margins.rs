@@ -5,11 +5,11 @@
 //! synthesized here from creep theory's own formula.
 
 use wrapcalc::contact::NodeState;
-use wrapcalc::design::{Design, Output, Outputs, Scene};
-use wrapcalc::fit::creep_fit;
-use wrapcalc::margins;
+use wrapcalc::design::{Design, Direction, Output, Outputs, Scene};
+use wrapcalc::fit::{FitFriction, creep_fit};
+use wrapcalc::margins::{self, MarginVerdict};
 use wrapcalc::model::level0::EndState;
-use wrapcalc::planner::{self, Request};
+use wrapcalc::planner::{self, Level, Request};
 use wrapcalc::run::{self, Options};
 use wrapcalc::sheet;
 use wrapcalc::wrap::{Distribution, Sample};
@@ -123,16 +123,21 @@ fn planner_maps_kind_and_outputs_to_the_cheapest_level() {
     ];
     for (name, level) in expected {
         let plan = planner::plan(scene(&d, name), auto).expect("plans");
-        assert_eq!(plan.level, level, "{name}: {}", plan.reason);
+        assert_eq!(plan.level.number(), level, "{name}: {}", plan.reason);
         assert!(!plan.reason.is_empty());
     }
     // `wrapcalc check` is level 0 everywhere; --level overrides, within what a kind allows.
     for s in &d.scenes {
-        assert_eq!(planner::plan(s, Request::ChecksOnly).unwrap().level, 0, "{}", s.name);
+        assert_eq!(planner::plan(s, Request::ChecksOnly).unwrap().level, Level::Closed0, "{}", s.name);
     }
-    assert_eq!(planner::plan(scene(&d, "loads-checks"), Request::Full { forced_level: Some(2) }).unwrap().level, 2);
-    assert!(planner::plan(scene(&d, "history-history"), Request::Full { forced_level: Some(1) }).is_err());
-    assert!(planner::plan(scene(&d, "loads-checks"), Request::Full { forced_level: Some(4) }).is_err());
+    assert_eq!(
+        planner::plan(scene(&d, "loads-checks"), Request::Full { forced_level: Some(Level::Rigid2) }).unwrap().level,
+        Level::Rigid2
+    );
+    assert!(
+        planner::plan(scene(&d, "history-history"), Request::Full { forced_level: Some(Level::Capstan1) }).is_err()
+    );
+    assert!(planner::plan(scene(&d, "loads-checks"), Request::Full { forced_level: Some(Level::Dynamic4) }).is_err());
     // The default outputs of each kind.
     assert_eq!(
         scene(&d, "mid-rest").outputs,
@@ -163,7 +168,11 @@ fn cheap_and_costly_levels_agree_on_shared_answers() {
     let d = with_scenes(PLANNED);
     let at = |name: &str, level: u8| {
         let s = scene(&d, name);
-        let opts = Options { request: Request::Full { forced_level: Some(level) }, nodes: 360, ..Options::default() };
+        let opts = Options {
+            request: Request::Full { forced_level: Level::from_number(level) },
+            nodes: 360,
+            ..Options::default()
+        };
         run::run(&d, &[s], opts).unwrap().scenes.remove(0)
     };
     for name in ["mid-accelerating", "max-decelerating"] {
@@ -235,7 +244,7 @@ fn margins_match_their_closed_forms() {
     assert!(rel(m.braking_to_min_safety_factor_m_s2.value.unwrap(), d_sf) < 1e-9);
     assert!(m.root_finding.calls >= 5 && m.root_finding.iterations > 0);
     for x in [&m.critical_mu, &m.payload_to_slip_kg, &m.braking_to_slip_m_s2] {
-        assert_eq!(x.verdict, "found");
+        assert_eq!(x.verdict, MarginVerdict::Found);
     }
     // At rest the payload margin uses the static minimum 1.75 and k = g/n; no braking margin.
     let (s1, s2) = (m1 * G / n, m2 * G / n);
@@ -244,7 +253,7 @@ fn margins_match_their_closed_forms() {
     // s1 + xg/n = s2 + s2(E − 1)/1.75.
     let x_rest = (s2 + s2 * (e - 1.0) / 1.75 - s1) / (G / n);
     assert!(rel(r.payload_to_min_safety_factor_kg.value.unwrap(), x_rest) < 1e-9);
-    assert!(r.braking_to_slip_m_s2.value.is_none() && r.braking_to_slip_m_s2.verdict.contains("at rest"));
+    assert!(r.braking_to_slip_m_s2.value.is_none() && r.braking_to_slip_m_s2.verdict == MarginVerdict::AtRest);
 }
 
 /// Bracket failures are verdicts, not errors: a state already slipping is "already beyond"; a
@@ -255,14 +264,14 @@ fn margins_match_their_closed_forms() {
 fn margins_report_bracket_failures_as_verdicts() {
     let d = design();
     let slipping = margins::of(&d, &state(3.0e5, 1.0e5, 1.0, 0.0, 0.0), None);
-    assert_eq!(slipping.payload_to_slip_kg.verdict, "already beyond at the current state");
+    assert_eq!(slipping.payload_to_slip_kg.verdict, MarginVerdict::AlreadyBeyond);
     assert!(slipping.payload_to_slip_kg.value.is_none());
     let mut rough = design();
     rough.pulley.mu = 2.0;
     rough.pulley.wrap_angle_rad = 540f64.to_radians();
     let (m1, m2) = (95_000.0, 103_000.0);
     let m = margins::of(&rough, &state(m1 * G / 6.0, m2 * G / 6.0, 5.0, 0.0, 0.0), None);
-    assert_eq!(m.braking_to_slip_m_s2.verdict, "no slip within the searched range");
+    assert_eq!(m.braking_to_slip_m_s2.verdict, MarginVerdict::NoSlipInRange);
     assert!(m.braking_to_slip_m_s2.value.is_none());
 }
 
@@ -274,7 +283,8 @@ fn margins_report_bracket_failures_as_verdicts() {
 #[test]
 fn fit_recovers_creep_theory_parameters() {
     let (mu, alpha_deg, beta_deg, t_idle, c) = (0.25, 187.42, 37.123, 2.2e5, 1070.0);
-    for entry_side1 in [true, false] {
+    for travel in [Direction::Lift, Direction::Lower] {
+        let entry_side1 = travel == Direction::Lift;
         let samples: Vec<Sample> = (0..=200)
             .map(|i| {
                 let u = i as f64 / 200.0;
@@ -302,11 +312,12 @@ fn fit_recovers_creep_theory_parameters() {
             jdp_deg: None,
             gross_slip: false,
         };
-        let f = creep_fit(&d, c, Some(entry_side1)).expect("fits");
+        let f = creep_fit(&d, c, Some(travel)).expect("fits");
         assert!((f.active_arc_deg - beta_deg).abs() < 0.01, "β {} vs {beta_deg}", f.active_arc_deg);
         assert!(rel(f.idle_tension_n, t_idle) < 1e-6, "T_idle {}", f.idle_tension_n);
         assert!(f.rms_residual_rel < 1e-6);
-        assert_eq!(f.friction, if entry_side1 { "positive" } else { "reverse" });
+        assert_eq!(f.friction, if entry_side1 { FitFriction::Positive } else { FitFriction::Reverse });
+        assert_eq!(f.entry, travel.entry());
         // At rest both entries are tried and the right one wins.
         let g = creep_fit(&d, c, None).expect("fits");
         assert!((g.active_arc_deg - beta_deg).abs() < 0.01);
@@ -343,9 +354,9 @@ fn field(tension_n: impl Fn(usize) -> f64) -> Distribution {
 #[test]
 fn fit_of_a_uniform_field_reports_zero_residual_and_why() {
     let d = field(|i| 2.0e5 + 3.0e-9 * (i as f64 * 1.7).sin());
-    for entry in [Some(true), Some(false), None] {
-        let f = creep_fit(&d, 0.0, entry).expect("fits");
-        assert_eq!((f.rms_residual_rel, f.active_arc_deg, f.friction), (0.0, 0.0, "none"), "{entry:?}");
+    for travel in [Some(Direction::Lift), Some(Direction::Lower), None] {
+        let f = creep_fit(&d, 0.0, travel).expect("fits");
+        assert_eq!((f.rms_residual_rel, f.active_arc_deg, f.friction), (0.0, 0.0, FitFriction::None), "{travel:?}");
         assert!(f.note.as_deref().is_some_and(|n| n.contains("uniform field") && n.contains("round-off")), "{f:?}");
         assert!(rel(f.idle_tension_n, 2.0e5) < 1e-12 && f.rms_residual_n < 3e-9, "{f:?}");
     }
@@ -369,13 +380,14 @@ fn fit_of_a_uniform_field_reports_zero_residual_and_why() {
 fn fit_of_a_field_just_above_round_off_is_a_real_fit() {
     let (mu, t_idle, beta_deg) = (0.25f64, 2.0e5, 37.123f64);
     let c = t_idle - 1.0;
-    for entry_side1 in [true, false] {
+    for travel in [Direction::Lift, Direction::Lower] {
+        let entry_side1 = travel == Direction::Lift;
         let d = field(|i| {
             let theta_deg = 187.42 * i as f64 / 180.0;
             let phi_deg = if entry_side1 { theta_deg - (187.42 - beta_deg) } else { beta_deg - theta_deg }.max(0.0);
             c + (t_idle - c) * (-mu * phi_deg.to_radians()).exp()
         });
-        let f = creep_fit(&d, c, Some(entry_side1)).expect("fits");
+        let f = creep_fit(&d, c, Some(travel)).expect("fits");
         assert!(f.note.is_none(), "{f:?}");
         assert!((f.active_arc_deg - beta_deg).abs() < 0.01 && f.rms_residual_rel < 1e-6, "{entry_side1}: {f:?}");
     }
@@ -404,17 +416,17 @@ fn lining_raises_only_the_wrap_outputs_to_level_3() {
     let d = sheet::parse(file, &format!("{text}\n{PLANNED}")).expect("parses");
     let auto = Request::Full { forced_level: None };
     let level = |name: &str| planner::plan_with_lining(scene(&d, name), auto, d.lining.is_some()).unwrap().level;
-    assert_eq!(level("history-history"), 3);
-    assert_eq!(level("history-distribution"), 3);
-    assert_eq!(level("history-checks"), 0);
-    assert_eq!(level("duty-checks"), 0);
+    assert_eq!(level("history-history"), Level::Elastic3);
+    assert_eq!(level("history-distribution"), Level::Elastic3);
+    assert_eq!(level("history-checks"), Level::Closed0);
+    assert_eq!(level("duty-checks"), Level::Closed0);
     let duty = planner::plan_with_lining(scene(&d, "duty-history"), auto, true).unwrap();
-    assert_eq!(duty.level, 4);
+    assert_eq!(duty.level, Level::Dynamic4);
     assert!(duty.reason.contains("level 3"), "{}", duty.reason);
-    assert_eq!(planner::wrap_level(&duty, true), 3);
-    assert_eq!(level("loads-distribution"), 1, "constant loads stay with creep theory");
+    assert_eq!(planner::wrap_level(&duty, true), Level::Elastic3);
+    assert_eq!(level("loads-distribution"), Level::Capstan1, "constant loads stay with creep theory");
     // Without a lining, --level 3 is an error naming the section.
-    let forced = Request::Full { forced_level: Some(3) };
+    let forced = Request::Full { forced_level: Some(Level::Elastic3) };
     let e = planner::plan_with_lining(scene(&d, "history-history"), forced, false).unwrap_err();
     assert!(e.to_string().contains("[lining]"), "{e}");
 }

@@ -321,7 +321,12 @@ pub fn run_checks(case: Case) -> Result<Outcome, RunError> {
 pub fn run_closed_form(case: Case, level: u8, solver: Solver, nodes: usize) -> Result<Outcome, RunError> {
     let design = design_of(case).expect("a closed-form case has a design");
     let scenes: Vec<&Scene> = design.scenes.iter().collect();
-    let options = Options { request: Request::Full { forced_level: Some(level) }, nodes, solver, ..Options::default() };
+    let options = Options {
+        request: Request::Full { forced_level: crate::planner::Level::from_number(level) },
+        nodes,
+        solver,
+        ..Options::default()
+    };
     let result = run::run(&design, &scenes, options)?;
     let scene = &result.scenes[0];
     let error = scene.wrap.as_ref().and_then(|w| tension_error(case, &w.distribution));

@@ -7,6 +7,7 @@
 //!
 //! Everything runs on one rayon thread, so times mean "one core".
 
+pub mod accuracy;
 pub mod bound;
 pub mod cases;
 pub mod measure;

@@ -12,7 +12,7 @@
 use super::cases::{Case, ROLL_SPEED_M_S, ROLL_T1_N, ROLL_T2_N, T0_N, design_of};
 use crate::contact::ContactLaw;
 use crate::derived;
-use crate::design::{HistorySample, SceneKind};
+use crate::design::{Direction, HistorySample, SceneKind};
 use crate::model::level0::EndState;
 use crate::model::level1;
 use crate::model::level2::{Level2Error, Params, Profile, Simulation, Solver};
@@ -49,7 +49,7 @@ impl ModelRun {
                     accel_m_s2: 0.0,
                     centrifugal_n: c,
                 };
-                let rolling = level1::steady_rolling(params.mu, alpha, &state, 1.0, params.ea_n);
+                let rolling = level1::steady_rolling(params.mu, alpha, &state, Direction::Lift, params.ea_n);
                 let t_run = 1.5 * alpha * params.radius_m / ROLL_SPEED_M_S;
                 let at = |t_s| HistorySample { t_s, t1_n: ROLL_T1_N, t2_n: ROLL_T2_N, speed_m_s: ROLL_SPEED_M_S };
                 Some(Self {

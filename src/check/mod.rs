@@ -5,10 +5,10 @@
 //!
 //! * [`design`]: rope safety factor, D/d of the pulleys, specific pressure on the lining, the
 //!   design cap on μ and the machine ratings, each over the static states of a design;
-//! * [`braking`]: the emergency stop's deceleration against the sheet's window and against the
-//!   slip-limited deceleration.
+//! * the braking checks (the emergency stop's deceleration against the sheet's window and
+//!   against the slip-limited deceleration) beside the stop model,
+//!   [`crate::model::braking_checks`].
 
-pub mod braking;
 pub mod design;
 
 use crate::design::Limit;
@@ -68,6 +68,11 @@ impl Relation {
             Relation::AtLeast => value >= limit,
         }
     }
+}
+
+/// The check named `name` among `checks` (each check's name is its kind).
+pub fn named_mut<'a>(checks: &'a mut [Check], name: &str) -> Option<&'a mut Check> {
+    checks.iter_mut().find(|c| c.name == name)
 }
 
 /// The outcome of a check.

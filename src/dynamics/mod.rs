@@ -64,38 +64,18 @@ pub use braked::{PulleyBody, braked_stop};
 pub use profile::{AT_REST_M_S, Kinematics, MotionProfile, Stage};
 pub use simulate::{Checkpoint, DynSample, SimOptions, simulate, simulate_resumable, simulate_with};
 
+pub use crate::design::Side;
 use serde::{Deserialize, Serialize};
 
 /// Standard gravity used by default, m/s².
 pub const G_M_S2: f64 = crate::design::STANDARD_GRAVITY_M_S2;
 
-/// One side of the hoist.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-pub enum Side {
-    /// Side 1: the conveyance (cage + payload); lifted when the speed is positive.
-    One,
-    /// Side 2: the counterweight (or second conveyance).
-    Two,
-}
-
 impl Side {
-    /// Both sides, side 1 first.
-    pub const BOTH: [Side; 2] = [Side::One, Side::Two];
-
     /// +1 where the side's hanging rope moves down when `x` grows (side 2), −1 on side 1.
     fn down_sign(self) -> f64 {
         match self {
             Side::One => -1.0,
             Side::Two => 1.0,
-        }
-    }
-}
-
-impl std::fmt::Display for Side {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            Side::One => write!(f, "side 1"),
-            Side::Two => write!(f, "side 2"),
         }
     }
 }

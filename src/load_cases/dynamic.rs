@@ -13,9 +13,9 @@ use crate::check::{Relation, all_pass};
 use crate::design::{Design, Direction, Hoist, LoadCases, Phase, SafetyFactorBasis};
 use crate::dynamics::{self, DynSample, HoistParams, SimOptions};
 use crate::model::level0::{DYNAMIC_CHECK, EndState, euler_limit, safety_factor};
-use crate::model::level4::{self, ELEMENTS_PER_SIDE, Level4Error, WRAP_SAMPLE_S};
-use crate::model::stop;
-use crate::run::ROPE_DYNAMICS_CHECK;
+use crate::model::level4::{self, ELEMENTS_PER_SIDE, Level4Error, ROPE_DYNAMICS_CHECK, WRAP_SAMPLE_S};
+use crate::model::stop::{self, StopMode};
+use crate::planner::Level;
 
 /// Every level-4 case, and the number of rope-dynamics runs it took.
 pub fn cases(
@@ -52,7 +52,7 @@ pub fn cases(
                 Emergency::Brake(b) => {
                     runs += 1;
                     let trips = stop::braked_ropes(design, &params, &stages, &times, lc.time_step_s, &b)?;
-                    (trips, b.idle_time_s + b.build_up_s, "brake")
+                    (trips, b.idle_time_s + b.build_up_s, StopMode::Brake)
                 }
                 Emergency::Imposed(d) => {
                     let mut trips = Vec::new();
@@ -63,7 +63,7 @@ pub fn cases(
                         runs += 1;
                         trips.push(samples);
                     }
-                    (trips, 0.0, "imposed deceleration")
+                    (trips, 0.0, StopMode::Imposed)
                 }
                 Emergency::None => continue,
             };
@@ -73,7 +73,7 @@ pub fn cases(
                 let report = stop::stop_report(design, &params, &kin, after_s, mode)?;
                 let onset = stop::slip_onset(design, &states);
                 let position = Position::Stop { fraction: f, t_s: t };
-                let case = stop_case(design, payload, dir, position, x0, 4, &states, report, onset);
+                let case = stop_case(design, payload, dir, position, x0, Level::Dynamic4, &states, report, onset);
                 out.push(rope_dynamics_labels(design, case));
             }
         }
@@ -133,8 +133,17 @@ fn phase_cases(
         let (t1s, t2s) = dynamics::static_tensions_n(params, sample.x_m)?;
         let static_state = EndState { t1_n: t1s, t2_n: t2s, speed_m_s: 0.0, accel_m_s2: 0.0, centrifugal_n: 0.0 };
         let x = x0 + sample.x_m;
-        let mut case =
-            from_states(design, payload, dir, phase, Position::WorstInstant { t_s: *t }, x, 4, *state, static_state);
+        let mut case = from_states(
+            design,
+            payload,
+            dir,
+            phase,
+            Position::WorstInstant { t_s: *t },
+            x,
+            Level::Dynamic4,
+            *state,
+            static_state,
+        );
         let g = design.g_m_s2;
         (case.m1_kg, case.m2_kg) = (t1s * n / g, t2s * n / g);
         case.slip_onset = onset;

@@ -20,6 +20,7 @@ use crate::design::{Design, Direction, Phase};
 use crate::model::level0::EndState;
 use crate::model::level4::Level4Error;
 use crate::model::stop::{SlipOnset, StopReport};
+use crate::planner::Level;
 use serde::Serialize;
 use std::time::Instant;
 
@@ -62,7 +63,7 @@ pub struct CaseResult {
     /// Travel of side 1 from the bottom (m).
     pub x_m: f64,
     /// Model level the case is answered at (0 or 4).
-    pub level: u8,
+    pub level: Level,
     /// The state of the case (per rope); at level 4 its worst instant.
     #[serde(skip)]
     pub state: EndState,

@@ -4,13 +4,15 @@
 
 use super::profile::Characteristics;
 use super::{CaseResult, Position, direction_word};
-use crate::check::{Check, braking};
+use crate::check::{self, Check};
 use crate::design::{Brake, Design, Direction, Hoist, LoadCases, Phase};
 use crate::dynamics::{self, HoistParams, Kinematics, MotionProfile};
 use crate::model::braking::{StopMasses, brake_decel_m_s2, slip_limited_decel_m_s2};
+use crate::model::braking_checks as braking;
 use crate::model::level0::{self, DYNAMIC_CHECK, EndState, euler_limit, safety_factor};
 use crate::model::level4::{self, Level4Error};
-use crate::model::stop::{self, SlipOnset, StopReport};
+use crate::model::stop::{self, SlipOnset, StopMode, StopReport};
+use crate::planner::Level;
 
 /// Speeds below this are a profile at rest (m/s): the round-off of its stages' integrals.
 pub const MOVING_M_S: f64 = 1e-9;
@@ -109,7 +111,7 @@ fn masses_of(design: &Design, params: &HoistParams, t1s: f64, t2s: f64) -> StopM
 }
 
 /// A case's label: payload, direction, phase, position.
-pub fn label(payload_kg: f64, dir: Direction, phase: Phase, position: &Position, x_m: f64, level: u8) -> String {
+pub fn label(payload_kg: f64, dir: Direction, phase: Phase, position: &Position, x_m: f64, level: Level) -> String {
     let at = match position {
         Position::Travel { fraction } => format!("{:.0} % of the travel", fraction * 100.0),
         Position::WorstInstant { t_s } => format!("worst instant t = {t_s:.2} s"),
@@ -140,7 +142,7 @@ pub fn case_at(
     let state = EndState { t1_n: t1, t2_n: t2, speed_m_s: k.speed_m_s, accel_m_s2: k.accel_m_s2, centrifugal_n: c };
     let static_state = EndState { t1_n: t1s, t2_n: t2s, speed_m_s: 0.0, accel_m_s2: 0.0, centrifugal_n: 0.0 };
     let kg = params.ropes as f64 / params.g_m_s2;
-    let mut result = from_states(design, payload_kg, dir, phase, position, k.x_m, 0, state, static_state);
+    let mut result = from_states(design, payload_kg, dir, phase, position, k.x_m, Level::Closed0, state, static_state);
     (result.m1_kg, result.m2_kg) = (t1s * kg, t2s * kg);
     let masses = [result.m1_kg, result.m2_kg];
     let guide = design.guide_mass_kg();
@@ -166,7 +168,7 @@ pub fn from_states(
     phase: Phase,
     position: Position,
     x_m: f64,
-    level: u8,
+    level: Level,
     state: EndState,
     static_state: EndState,
 ) -> CaseResult {
@@ -240,7 +242,7 @@ fn add_position_stop(design: &Design, case: &mut CaseResult, masses: &StopMasses
     let n = f64::from(design.rope.count);
     let v = k.speed_m_s.abs();
     let report = StopReport {
-        mode: if matches!(e, Emergency::Brake(_)) { "brake" } else { "imposed deceleration" },
+        mode: if matches!(e, Emergency::Brake(_)) { StopMode::Brake } else { StopMode::Imposed },
         lifting: dir == Direction::Lift,
         timed: false,
         trip_s: 0.0,
@@ -345,9 +347,19 @@ fn braked_stop(
         .zip(&kin)
         .map(|(s, (_, k))| (s.t_s, EndState::of_sample(s, k.accel_m_s2, design.rope.mass_per_m_kg)))
         .collect();
-    let report = stop::stop_report(design, &params, &kin, brake.idle_time_s + brake.build_up_s, "brake")?;
+    let report = stop::stop_report(design, &params, &kin, brake.idle_time_s + brake.build_up_s, StopMode::Brake)?;
     let onset = stop::slip_onset(design, &states);
-    Ok(stop_case(design, payload_kg, dir, Position::Stop { fraction, t_s: at_s }, x0, 0, &states, report, onset))
+    Ok(stop_case(
+        design,
+        payload_kg,
+        dir,
+        Position::Stop { fraction, t_s: at_s },
+        x0,
+        Level::Closed0,
+        &states,
+        report,
+        onset,
+    ))
 }
 
 /// A case of a stop over its states from the trip on (level 0 or 4): the worst instant's checks
@@ -359,7 +371,7 @@ pub fn stop_case(
     dir: Direction,
     position: Position,
     x0: f64,
-    level: u8,
+    level: Level,
     states: &[(f64, EndState)],
     report: StopReport,
     onset: Option<SlipOnset>,
@@ -381,13 +393,17 @@ pub fn stop_case(
     let mut case = from_states(design, payload_kg, dir, Phase::Emergency, position, x_m, level, worst, static_state);
     (case.m1_kg, case.m2_kg) = (m.m1_kg, m.m2_kg);
     if let Some(r) = ratio_worst {
-        case.checks[0] = level0::gross_slip_check(&r, design.pulley.mu, design.pulley.wrap_angle_rad)
-            .governed_by(case.label.clone());
+        if let Some(check) = check::named_mut(&mut case.checks, level0::GROSS_SLIP_CHECK) {
+            *check = level0::gross_slip_check(&r, design.pulley.mu, design.pulley.wrap_angle_rad)
+                .governed_by(case.label.clone());
+        }
         case.tension_ratio = r.tension_ratio();
     }
-    if let Some(o) = &onset {
-        case.checks[0].fail();
-        case.checks[0].note = Some(format!(
+    if let Some(o) = &onset
+        && let Some(check) = check::named_mut(&mut case.checks, level0::GROSS_SLIP_CHECK)
+    {
+        check.fail();
+        check.note = Some(format!(
             "gross slip from t = {:.3} s (ratio {:.4}): the rest of the trip is not valid",
             o.t_s, o.ratio
         ));

@@ -90,6 +90,8 @@ impl EndState {
 
 /// Name of the dynamic safety-factor check (present where the scene has a state in motion).
 pub const DYNAMIC_CHECK: &str = "dynamic safety factor";
+/// Name of the static safety-factor check (at rest).
+pub const STATIC_CHECK: &str = "static safety factor";
 
 /// Euler/capstan limit `e^{μα}`.
 pub fn euler_limit(mu: f64, wrap_angle_rad: f64) -> f64 {
@@ -172,7 +174,7 @@ pub fn loads(design: &Design, scene: &LoadsScene) -> Classical {
             .checks
             .into_iter()
             .map(|k| {
-                if k.name == "static safety factor" {
+                if k.name == STATIC_CHECK {
                     k.with_masses([m1_kg, m2_kg], [0.0; 2], 0.0)
                 } else {
                     k.with_masses([m1_kg, m2_kg], guide, a)
@@ -198,7 +200,7 @@ pub fn classical(design: &Design, state: EndState, static_state: EndState) -> Cl
 
     let mut checks = vec![gross_slip_check(&state, mu, alpha)];
     checks.push(safety_check(
-        "static safety factor",
+        STATIC_CHECK,
         "σ_s = T_lo (e^{μα} − 1) / (T_hi − T_lo), at rest (a = 0, v = 0)",
         &static_state,
         limit,
@@ -293,7 +295,7 @@ pub fn over_history(design: &Design, states: &[(f64, EndState)]) -> Classical {
         c.static_state = s;
         c.checks.push(with_time(
             safety_check(
-                "static safety factor",
+                STATIC_CHECK,
                 "σ_s = T_lo (e^{μα} − 1) / (T_hi − T_lo), worst instant at rest",
                 &s,
                 limit,

@@ -21,6 +21,7 @@
 
 use super::level0::EndState;
 use crate::contact::ContactLaw;
+use crate::design::{Direction, Side};
 use crate::wrap::{Piece, TensionField};
 
 /// The steady rolling state over the wrap.
@@ -34,8 +35,8 @@ pub struct SteadyRolling {
     pub active_arc_rad: f64,
     /// Whether the end tensions exceed the Euler limit: the rope slips over the whole wrap.
     pub gross_slip: bool,
-    /// +1: rope enters at θ = 0 (v > 0 or last ran lifting), −1: enters at θ = α.
-    pub travel_sign: f64,
+    /// The rope's travel: `Lift` enters at θ = 0 (v > 0 or last ran lifting), `Lower` at θ = α.
+    pub travel: Direction,
     /// Rope speed, positive side 1 → side 2 (m/s).
     pub speed_m_s: f64,
     /// Tension of the rope entering the wrap (N).
@@ -56,13 +57,13 @@ impl SteadyRolling {
 }
 
 /// The steady rolling distribution for end state `state` on a wrap of `wrap_angle_rad`.
-/// `travel_sign` (+1 / −1) gives the rope's direction of travel when the speed is 0.
-pub fn steady_rolling(mu: f64, wrap_angle_rad: f64, state: &EndState, travel_sign: f64, ea_n: f64) -> SteadyRolling {
+/// `travel` gives the rope's direction of travel when the speed is 0.
+pub fn steady_rolling(mu: f64, wrap_angle_rad: f64, state: &EndState, travel: Direction, ea_n: f64) -> SteadyRolling {
     let c = state.centrifugal_n;
     let law = ContactLaw::new(mu, c);
     let alpha = wrap_angle_rad;
     let (n1, n2) = (state.t1_n - c, state.t2_n - c);
-    let travel_sign = if state.speed_m_s != 0.0 { state.speed_m_s.signum() } else { travel_sign.signum() };
+    let travel = Direction::of_speed(state.speed_m_s).unwrap_or(travel);
     let beta = (n1 / n2).ln().abs() / mu;
     let gross_slip = crate::contact::slips_grossly(n1, n2, mu, alpha);
 
@@ -77,7 +78,7 @@ pub fn steady_rolling(mu: f64, wrap_angle_rad: f64, state: &EndState, travel_sig
         vec![Piece::constant(0.0, alpha, state.t1_n)]
     } else {
         // Rate of ln n along +θ inside the active arc: falls towards the lower tension.
-        if travel_sign > 0.0 {
+        if travel == Direction::Lift {
             let rate = if n2 > n1 { mu } else { -mu };
             let theta_a = alpha - beta;
             vec![Piece::constant(0.0, theta_a, state.t1_n), Piece::exponential(theta_a, alpha, c, n1, rate)]
@@ -92,9 +93,12 @@ pub fn steady_rolling(mu: f64, wrap_angle_rad: f64, state: &EndState, travel_sig
         law,
         active_arc_rad: if gross_slip { alpha } else { beta },
         gross_slip,
-        travel_sign,
+        travel,
         speed_m_s: state.speed_m_s,
-        entry_tension_n: if travel_sign > 0.0 { state.t1_n } else { state.t2_n },
+        entry_tension_n: match travel.entry() {
+            Side::One => state.t1_n,
+            Side::Two => state.t2_n,
+        },
         ea_n,
     }
 }

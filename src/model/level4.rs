@@ -13,11 +13,13 @@ use crate::dynamics::{
     self, AT_REST_M_S, Checkpoint, DynSample, DynamicsError, HoistParams, Kinematics, MotionProfile, Side, SimOptions,
     Stage,
 };
-use crate::margins::{self, Margin};
 use crate::model::braking::{self, BrakeError};
-use crate::model::level0::{EndState, euler_limit};
 use crate::model::stop;
-use crate::roots::RootStats;
+use crate::planner::Level;
+use crate::roots::{self, Holding, RootStats};
+
+/// Name of the dynamic safety factor with the suspended ropes' dynamics (level 4).
+pub const ROPE_DYNAMICS_CHECK: &str = "dynamic safety factor with rope dynamics (level 4)";
 
 /// Finite elements per side of the suspended ropes (the first mode converges to well under 1 %
 /// with far fewer; more elements resolve the higher modes a jerk excites).
@@ -53,7 +55,7 @@ pub enum Level4Error {
          need {short:.1} N more. {advice}",
         side = slack.side,
         t = slack.t_s,
-        model = if *level == 0 { "rigid ropes (level 0)" } else { "the suspended ropes' dynamics" },
+        model = if *level == Level::Closed0 { "rigid ropes (level 0)" } else { "the suspended ropes' dynamics" },
         tension = slack.tension_n,
         v = slack.speed_m_s,
         c = slack.centrifugal_n,
@@ -63,7 +65,7 @@ pub enum Level4Error {
         /// Where and when the rope goes slack, with its tension and m'v².
         slack: Box<SlackRope>,
         /// The model level that found it: 0 (rigid ropes) or 4 (the suspended ropes' dynamics).
-        level: u8,
+        level: Level,
         /// What to change to keep the rope on the pulley (see [`slack_advice`]).
         advice: String,
     },
@@ -299,47 +301,10 @@ fn pair_at(samples: &[DynSample], t_s: f64, of: impl Fn(&DynSample) -> [f64; 2])
     }
 }
 
-/// The largest emergency deceleration of a duty-cycle scene with an emergency stop before gross
-/// slip, and before the dynamic safety factor falls to `dynamic_safety_factor_min`, with the
-/// ropes' dynamics: each trial deceleration d runs the scene's suspended ropes
-/// ([`suspended_ropes`]) and takes the worst sample of the run,
-///
-/// `h_slip(d) = min_t [(T_lo − m'v²)·e^{μα} − (T_hi − m'v²)]`, `h_σ(d) = min_t [(T_lo − m'v²)(e^{μα} − 1) − σ_min(T_hi − T_lo)]`,
-///
-/// whose roots in d (Brent, on [d₀/2, 0.999 g], d₀ the scene's own deceleration: a much gentler
-/// brake would run the conveyance past the end of the shaft) are the margins. `None` for a scene without
-/// an emergency stop. A trial that cannot run (e.g. a hanging length reaching 0 during a long
-/// stop) is a failure of that margin's search, reported as its verdict.
-pub fn emergency_margins(
-    design: &Design,
-    hoist: &Hoist,
-    scene: &DutyCycleScene,
-    stats: &mut RootStats,
-) -> Option<(Margin, Margin)> {
-    let trials = StopTrials::new(design, hoist, scene)?;
-    let limit = euler_limit(design.pulley.mu, design.pulley.wrap_angle_rad);
-    let m_v2 = design.rope.mass_per_m_kg;
-    let state = |s: &DynSample| EndState {
-        t1_n: s.t1_n,
-        t2_n: s.t2_n,
-        speed_m_s: s.speed_m_s,
-        accel_m_s2: s.accel_m_s2,
-        centrifugal_n: m_v2 * s.speed_m_s * s.speed_m_s,
-    };
-    let slip = |s: &DynSample| margins::slip_residual(&state(s), limit);
-    let sf_min = design.requirements.dynamic_safety_factor_min;
-    let sf = |s: &DynSample| margins::sf_residual(&state(s), limit, sf_min);
-    let (slip_before, sf_before) = (trials.worst_before(&slip), trials.worst_before(&sf));
-    let (lo, hi) = (0.5 * trials.stop.decel_m_s2, 0.999 * design.g_m_s2);
-    let to_slip = margins::largest_holding(|d| trials.worst(d, &slip, slip_before), lo, hi, stats);
-    let to_sf = margins::largest_holding(|d| trials.worst(d, &sf, sf_before), lo, hi, stats);
-    Some((to_slip, to_sf))
-}
-
 /// An emergency-stop scene's suspended ropes, integrated once up to the brake (the motion
 /// before it is the same whatever the deceleration); trials of other decelerations continue
-/// from there.
-struct StopTrials<'a> {
+/// from there ([`crate::margins`] searches its emergency margins over them).
+pub struct StopTrials<'a> {
     design: &'a Design,
     hoist: &'a Hoist,
     scene: &'a DutyCycleScene,
@@ -350,7 +315,7 @@ struct StopTrials<'a> {
 
 impl<'a> StopTrials<'a> {
     /// `None` for a scene without an emergency stop, or whose ropes cannot run to it.
-    fn new(design: &'a Design, hoist: &'a Hoist, scene: &'a DutyCycleScene) -> Option<Self> {
+    pub fn new(design: &'a Design, hoist: &'a Hoist, scene: &'a DutyCycleScene) -> Option<Self> {
         let stop = scene.emergency?;
         match resumable_ropes(design, hoist, scene, None, Some(stop.at_s)) {
             Ok((before, Some(checkpoint))) => Some(Self { design, hoist, scene, stop, before, checkpoint }),
@@ -358,15 +323,20 @@ impl<'a> StopTrials<'a> {
         }
     }
 
+    /// The scene's own emergency deceleration (m/s²).
+    pub fn decel_m_s2(&self) -> f64 {
+        self.stop.decel_m_s2
+    }
+
     /// The lowest `residual` over the samples before the brake sets in.
-    fn worst_before(&self, residual: &dyn Fn(&DynSample) -> f64) -> f64 {
+    pub fn worst_before(&self, residual: &dyn Fn(&DynSample) -> f64) -> f64 {
         let t = self.checkpoint.t_s();
         self.before.iter().filter(|s| s.t_s <= t).map(residual).fold(f64::INFINITY, f64::min)
     }
 
     /// The lowest `residual` over a run braking at `decel_m_s2` (from the brake on), at most
     /// `before`; NaN when that run cannot be made (e.g. a hanging length reaching 0).
-    fn worst(&self, decel_m_s2: f64, residual: &dyn Fn(&DynSample) -> f64, before: f64) -> f64 {
+    pub fn worst(&self, decel_m_s2: f64, residual: &dyn Fn(&DynSample) -> f64, before: f64) -> f64 {
         let emergency = Some(EmergencyStop { decel_m_s2, ..self.stop });
         let trial = DutyCycleScene { emergency, ..self.scene.clone() };
         match resumable_ropes(self.design, self.hoist, &trial, Some(&self.checkpoint), None) {
@@ -413,7 +383,7 @@ pub fn first_slack(samples: &[HistorySample], mass_per_m_kg: f64) -> Option<Slac
 /// an emergency stop, the deceleration (with the ropes' dynamics, `level` 4, the largest that
 /// keeps both ropes on the pulley, by Brent's method on `min_t (T_lo − m'v²)` over [d₀/4, d₀]),
 /// else the motion profile's accelerations; or more mass hanging on the slack side.
-pub fn slack_advice(design: &Design, hoist: &Hoist, scene: &DutyCycleScene, slack: &SlackRope, level: u8) -> String {
+pub fn slack_advice(design: &Design, hoist: &Hoist, scene: &DutyCycleScene, slack: &SlackRope, level: Level) -> String {
     let mass_key = match slack.side {
         Side::One => "[hoist] conveyance1_kg or the scene's payload_kg",
         Side::Two => "[hoist] conveyance2_kg",
@@ -427,13 +397,16 @@ pub fn slack_advice(design: &Design, hoist: &Hoist, scene: &DutyCycleScene, slac
     };
     let m = design.rope.mass_per_m_kg;
     let contact = |s: &DynSample| s.t1_n.min(s.t2_n) - m * s.speed_m_s * s.speed_m_s;
-    let largest = (level == 4)
+    let largest = (level == Level::Dynamic4)
         .then(|| StopTrials::new(design, hoist, scene))
         .flatten()
         .and_then(|trials| {
             let before = trials.worst_before(&contact);
             let (lo, hi) = (0.25 * stop.decel_m_s2, stop.decel_m_s2);
-            margins::largest_holding(|d| trials.worst(d, &contact, before), lo, hi, &mut RootStats::default()).value
+            match roots::largest_holding(|d| trials.worst(d, &contact, before), lo, hi, &mut RootStats::default()) {
+                Holding::Until(d) => Some(d),
+                _ => None,
+            }
         })
         .map_or_else(String::new, |d| {
             format!(" With the ropes' dynamics both ropes stay on the pulley up to about {d:.3} m/s².")

@@ -136,11 +136,32 @@ pub fn slip_onset(design: &Design, states: &[(f64, EndState)]) -> Option<SlipOns
     states.iter().find(|(_, s)| s.tension_ratio() > limit).map(|(t, s)| SlipOnset { t_s: *t, ratio: s.tension_ratio() })
 }
 
+/// How an emergency stop brakes; serialised as `brake` or `imposed deceleration`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+pub enum StopMode {
+    /// The brake's force on the pulley as a body.
+    #[serde(rename = "brake")]
+    Brake,
+    /// A deceleration imposed on the pulley.
+    #[serde(rename = "imposed deceleration")]
+    Imposed,
+}
+
+impl StopMode {
+    /// The mode's word in reports.
+    pub fn word(self) -> &'static str {
+        match self {
+            StopMode::Brake => "brake",
+            StopMode::Imposed => "imposed deceleration",
+        }
+    }
+}
+
 /// What an emergency stop reached.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct StopReport {
     /// `brake` (the pulley as a body) or `imposed deceleration`.
-    pub mode: &'static str,
+    pub mode: StopMode,
     /// Lifting or lowering side 1 when the stop trips.
     pub lifting: bool,
     /// A stop in time (from a trip through idle and build-up to standstill); `false` for the
@@ -176,7 +197,7 @@ pub fn stop_report(
     params: &HoistParams,
     kin: &[(f64, Kinematics)],
     full_force_after_s: f64,
-    mode: &'static str,
+    mode: StopMode,
 ) -> Result<StopReport, DynamicsError> {
     let (trip_s, trip) = kin.first().copied().unwrap_or_default();
     let (stop_s, stop) = kin.last().copied().unwrap_or_default();

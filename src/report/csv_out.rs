@@ -1,6 +1,7 @@
 //! CSV reports: summary.csv (one row per scene), `<scene>/distribution.csv` and `<scene>/history.csv`.
 
 use super::summary::Summary;
+use crate::design::HISTORY_COLUMNS;
 use crate::model::history::HistoryRow;
 use crate::wrap::Distribution;
 use std::io::Write;
@@ -62,23 +63,7 @@ pub fn write_history<W: Write>(
     midpoints_n: &[[f64; 2]],
 ) -> csv::Result<()> {
     let mut w = csv::Writer::from_writer(out);
-    w.write_record([
-        "t_s",
-        "t1_n",
-        "t2_n",
-        "speed_m_s",
-        "accel_m_s2",
-        "jdp_deg",
-        "positive_arc_deg",
-        "reverse_arc_deg",
-        "max_utilization",
-        "safety_factor",
-        "gross_slip",
-        "anchor1_n",
-        "anchor2_n",
-        "mid1_n",
-        "mid2_n",
-    ])?;
+    w.write_record(HISTORY_COLUMNS.map(|(name, _)| name))?;
     let opt = |v: Option<f64>| v.map_or_else(String::new, |v| v.to_string());
     for (i, r) in rows.iter().enumerate() {
         let anchors = anchors_n.get(i);

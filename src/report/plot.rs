@@ -398,12 +398,19 @@ pub(crate) fn tick_format(lo: f64, hi: f64) -> impl Fn(&f64) -> String {
 #[cfg(test)]
 pub(crate) fn steady_distribution(speed_m_s: f64, mirror: bool) -> Distribution {
     use crate::derived;
+    use crate::design::Direction;
     use crate::model::level0::EndState;
     use crate::model::level1::steady_rolling;
     let (t1_n, t2_n) = if mirror { (211.9e3, 248.5e3) } else { (248.5e3, 211.9e3) };
     let v = if mirror { -speed_m_s } else { speed_m_s };
     let state = EndState { t1_n, t2_n, speed_m_s: v, accel_m_s2: 0.0, centrifugal_n: 0.0 };
-    let rolling = steady_rolling(0.25, 187.42f64.to_radians(), &state, if mirror { -1.0 } else { 1.0 }, 1.2e8);
+    let rolling = steady_rolling(
+        0.25,
+        187.42f64.to_radians(),
+        &state,
+        if mirror { Direction::Lower } else { Direction::Lift },
+        1.2e8,
+    );
     let summary = derived::summarize(&rolling.field, &rolling.law).expect("summary");
     derived::distribution(0.0, &rolling.field, &rolling.law, &summary, 180, rolling.gross_slip, |_, t| {
         rolling.slip_velocity_m_s(t)

@@ -9,6 +9,7 @@ use crate::margins::Margins;
 use crate::model::history::SolverReport;
 use crate::model::level3::Level3Stats;
 use crate::model::stop::StopReport;
+use crate::planner::Level;
 use crate::roots::RootStats;
 use crate::run::{RunResult, SceneResult};
 use serde::Serialize;
@@ -21,7 +22,7 @@ pub struct SceneSummary {
     /// Its kind: `loads`, `history` or `duty-cycle`.
     pub kind: &'static str,
     /// The model level that ran (0–4).
-    pub level: u8,
+    pub level: Level,
     /// Why the planner chose that level (or that it was forced).
     pub level_reason: String,
     /// Time of the reported state (s); `None` for a `loads` scene.

@@ -216,7 +216,7 @@ fn render_margins(out: &mut String, m: &Margins) {
     let line = |out: &mut String, name: &str, formula: &str, margin: &Margin, unit: &str, digits: usize| {
         let value = match margin.value {
             Some(v) => format!("{v:.digits$} {unit}"),
-            None => margin.verdict.clone(),
+            None => margin.verdict.to_string(),
         };
         let _ = writeln!(out, "    {name:<37} {formula:<44} {}", value.trim_end());
     };

@@ -6,7 +6,8 @@ use crate::design::{Design, Direction, Output, Scene, SceneKind};
 use crate::fit;
 use crate::margins;
 use crate::model::level0::EndState;
-use crate::model::level4;
+use crate::model::level4::StopTrials;
+use crate::planner::Level;
 
 /// The answers derived from a scene's result that it asks for: margins from its state (a time
 /// scene's worst instant), the creep-theory fit of its reported distribution.
@@ -28,9 +29,11 @@ pub(super) fn derive_answers(design: &Design, scene: &Scene, result: &mut SceneR
             None => margins::of(design, &state, at_t_s),
         };
         // An emergency stop with the ropes' dynamics (level 4): each trial runs the ropes.
-        if let (SceneKind::DutyCycle(cycle), Some(hoist), 4) = (&scene.kind, &design.hoist, result.plan.level)
-            && let Some((slip, sf)) = level4::emergency_margins(design, hoist, cycle, &mut m.root_finding)
+        if let (SceneKind::DutyCycle(cycle), Some(hoist), Level::Dynamic4) =
+            (&scene.kind, &design.hoist, result.plan.level)
+            && let Some(trials) = StopTrials::new(design, hoist, cycle)
         {
+            let (slip, sf) = margins::emergency(design, &trials, &mut m.root_finding);
             m.emergency_braking_to_slip_m_s2 = Some(slip);
             m.emergency_braking_to_min_safety_factor_m_s2 = Some(sf);
         }
@@ -40,12 +43,11 @@ pub(super) fn derive_answers(design: &Design, scene: &Scene, result: &mut SceneR
         && let Some(wrap) = &result.wrap
     {
         let state = &result.classical.state;
-        let entry_side1 = match &scene.kind {
-            _ if state.speed_m_s != 0.0 => Some(state.speed_m_s > 0.0),
-            SceneKind::Loads(l) => Some(l.direction == Direction::Lift),
-            _ => None,
+        let travel = match &scene.kind {
+            SceneKind::Loads(l) => Direction::of_speed(state.speed_m_s).or(Some(l.direction)),
+            _ => Direction::of_speed(state.speed_m_s),
         };
-        let fitted = fit::creep_fit(&wrap.distribution, state.centrifugal_n, entry_side1)
+        let fitted = fit::creep_fit(&wrap.distribution, state.centrifugal_n, travel)
             .map_err(|source| RunError::Fit { scene: scene.name.clone(), source })?;
         result.fit = Some(fitted);
     }

@@ -6,7 +6,7 @@ use crate::derived;
 use crate::design::{Design, EndLoads, LoadsScene, Scene};
 use crate::model::level0;
 use crate::model::level1;
-use crate::planner::Plan;
+use crate::planner::{Level, Plan};
 use crate::wrap::Distribution;
 
 pub(super) fn run_loads(
@@ -22,13 +22,13 @@ pub(super) fn run_loads(
         result.hanging_kg = Some([m1_kg, m2_kg]);
     }
     match result.plan.level {
-        0 => {}
-        1 => {
+        Level::Closed0 => {}
+        Level::Capstan1 => {
             let rolling = level1::steady_rolling(
                 design.pulley.mu,
                 design.pulley.wrap_angle_rad,
                 &result.classical.state,
-                loads.direction.sign(),
+                loads.direction,
                 design.rope.ea_n,
             );
             let summary = derived::summarize(&rolling.field, &rolling.law)

@@ -31,7 +31,7 @@ use crate::model::level2::{Level2Error, Params, Solver};
 use crate::model::level3::{Level3Error, Level3Stats};
 use crate::model::level4::Level4Error;
 use crate::model::stop::{SlipOnset, StopReport};
-use crate::planner::{self, Plan, PlanError, Request};
+use crate::planner::{self, Level, Plan, PlanError, Request};
 use crate::roots::RootError;
 use crate::wrap::Distribution;
 use rayon::prelude::*;
@@ -117,7 +117,7 @@ pub enum RunError {
         /// The scene's name.
         scene: String,
         /// The level the scene runs at.
-        level: u8,
+        level: Level,
     },
     #[error("scene \"{scene}\": level 3: {source}")]
     /// The level-3 simulation of a scene failed.
@@ -329,8 +329,10 @@ pub fn run_all_with_progress(
 ) -> Result<RunResult, RunError> {
     let start = Instant::now();
     let mut result = run_with_progress(design, scenes, options, progress)?;
-    let rope_dynamics =
-        !matches!(options.request, planner::Request::ChecksOnly | planner::Request::Full { forced_level: Some(0) });
+    let rope_dynamics = !matches!(
+        options.request,
+        planner::Request::ChecksOnly | planner::Request::Full { forced_level: Some(Level::Closed0) }
+    );
     result.design = Some(design_checks::evaluate(design, &result.scenes, rope_dynamics)?);
     result.runtime_ms = start.elapsed().as_secs_f64() * 1e3;
     Ok(result)

@@ -5,6 +5,7 @@
 use super::trip::{self, Trip};
 use super::wrap_run::{Initial, run_model, wrap_model};
 use super::{HistoryOutput, Options, RunError, SceneResult, WrapResult, empty};
+use crate::check;
 use crate::design::{Design, Direction, DutyCycleScene, HistorySample, HistoryScene, Hoist, Scene};
 use crate::dynamics::Kinematics;
 use crate::model::history;
@@ -12,7 +13,7 @@ use crate::model::level0::{self, EndState};
 use crate::model::level1;
 use crate::model::level4::{self, Level4Error};
 use crate::model::stop;
-use crate::planner::Plan;
+use crate::planner::{Level, Plan};
 
 pub(super) fn run_history(
     design: &Design,
@@ -54,16 +55,13 @@ pub(super) fn run_duty_cycle(
     let Some(hoist) = &design.hoist else {
         return Err(err(Level4Error::NoHoist));
     };
-    let before = match cycle.direction {
-        Direction::Lift => Direction::Lower,
-        Direction::Lower => Direction::Lift,
-    };
+    let before = cycle.direction.reversed();
     let params = level4::hoist_params(design, hoist, cycle);
     // The classical check: rigid ropes along the motion (and the brake's stop).
     let kin = level4::rigid_kinematics(design, hoist, cycle, &params).map_err(err)?;
     let rigid_samples = stop::rigid_samples(design, &params, &kin).map_err(|e| err(e.into()))?;
     let rigid = Trip::valid_part(design, rigid_samples, kin.into_iter().map(|(_, k)| k).collect());
-    let (trip, dynamics) = if plan.level == 0 {
+    let (trip, dynamics) = if plan.level == Level::Closed0 {
         (rigid, None)
     } else {
         let dynamics = level4::suspended_ropes(design, hoist, cycle).map_err(err)?;
@@ -111,7 +109,7 @@ fn refuse_slack(
     hoist: &Hoist,
     cycle: &DutyCycleScene,
     samples: &[HistorySample],
-    level: u8,
+    level: Level,
 ) -> Result<(), Level4Error> {
     match level4::first_slack(samples, design.rope.mass_per_m_kg) {
         Some(slack) => {
@@ -165,7 +163,7 @@ fn run_samples(
     let mut result = empty(scene, plan, classical);
     result.t_s = samples.last().map(|s| s.t_s);
     result.worst = level0::worst_instant(design, &states);
-    if result.plan.level < 2 {
+    if result.plan.level < Level::Rigid2 {
         if scene.tracks.is_some() {
             return Err(RunError::TracksBelowLevel2 { scene: scene.name.clone(), level: result.plan.level });
         }
@@ -175,7 +173,7 @@ fn run_samples(
     let alpha = design.pulley.wrap_angle_rad;
     // Uniform rope when the history starts balanced, else the steady rolling state of its first loads.
     let rolling = (first.t1_n != first.t2_n)
-        .then(|| level1::steady_rolling(design.pulley.mu, alpha, &first, direction.sign(), design.rope.ea_n));
+        .then(|| level1::steady_rolling(design.pulley.mu, alpha, &first, direction, design.rope.ea_n));
     let initial = match &rolling {
         None => Initial::Uniform(first.t1_n),
         Some(r) => Initial::Rolling { level1: r, first, direction },
@@ -195,7 +193,7 @@ fn run_samples(
     }
     if run.rows.iter().any(|r| r.gross_slip) {
         result.classical.gross_slip = true;
-        if let Some(check) = result.classical.checks.first_mut() {
+        if let Some(check) = check::named_mut(&mut result.classical.checks, level0::GROSS_SLIP_CHECK) {
             check.fail();
         }
     }

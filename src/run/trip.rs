@@ -2,14 +2,14 @@
 //! the code's dynamic safety factor on rigid ropes beside the one with the ropes' dynamics, the
 //! emergency stop's report and checks, and the masses that hang at the worst instant.
 
-use crate::check::{Check, Verdict, braking};
+use crate::check::{Check, Verdict};
 use crate::design::{Design, DutyCycleScene, HistorySample, SafetyFactorBasis};
 use crate::dynamics::{self, HoistParams, Kinematics};
+use crate::model::braking_checks as braking;
 use crate::model::level0::{self, Classical, DYNAMIC_CHECK, EndState};
-use crate::model::stop::{self, SlipOnset, StopReport};
+use crate::model::stop::{self, SlipOnset, StopMode, StopReport};
 
-/// Name of the dynamic safety factor with the suspended ropes' dynamics (level 4).
-pub const ROPE_DYNAMICS_CHECK: &str = "dynamic safety factor with rope dynamics (level 4)";
+pub use crate::model::level4::ROPE_DYNAMICS_CHECK;
 
 /// A trip's samples with the pulley's kinematics at each.
 pub(super) struct Trip {
@@ -51,8 +51,8 @@ impl Trip {
     /// What the emergency stop reached, when the trip has one.
     pub fn stop_report(&self, design: &Design, params: &HoistParams, cycle: &DutyCycleScene) -> Option<StopReport> {
         let (trip_s, after_s, mode) = match (cycle.brake_stop_s, cycle.emergency, design.machine.brake) {
-            (Some(at), _, Some(b)) => (at, b.idle_time_s + b.build_up_s, "brake"),
-            (None, Some(e), _) => (e.at_s, 0.0, "imposed deceleration"),
+            (Some(at), _, Some(b)) => (at, b.idle_time_s + b.build_up_s, StopMode::Brake),
+            (None, Some(e), _) => (e.at_s, 0.0, StopMode::Imposed),
             _ => return None,
         };
         let kin: Vec<(f64, Kinematics)> = self

@@ -11,7 +11,7 @@ use crate::model::level1;
 use crate::model::level2::{self, Profile};
 use crate::model::level3;
 use crate::model::numerics::Numerics;
-use crate::planner::{self, Plan, PlanError};
+use crate::planner::{self, Level, Plan, PlanError};
 
 /// Creep speed used to reach the state "after the rope last ran" for a scene at rest (m/s):
 /// slow enough that its m'v² (1e-6 m²/s² times m') is negligible against the tension, as the
@@ -72,7 +72,7 @@ pub(super) fn wrap_model<'a>(
 ) -> Result<Model<'a>, RunError> {
     let alpha = design.pulley.wrap_angle_rad;
     match (planner::wrap_level(plan, design.lining.is_some()), design.lining) {
-        (3, Some(lining)) => {
+        (Level::Elastic3, Some(lining)) => {
             let params = level3::Params {
                 wrap: params(design, options.solver),
                 shear_stiffness_n_per_m2: lining.shear_stiffness_n_per_m2,
@@ -98,7 +98,7 @@ pub(super) fn wrap_model<'a>(
             let sim = level3::Simulation::new(params, samples, initial).map_err(err)?;
             Ok(Model::Elastic(Box::new(sim), stats))
         }
-        (3, None) => Err(PlanError::NoLining { scene: scene.name.clone() }.into()),
+        (Level::Elastic3, None) => Err(PlanError::NoLining { scene: scene.name.clone() }.into()),
         _ => {
             let initial = level2_initial(design, initial);
             Ok(Model::Rigid(Box::new(level2::Simulation::new(params(design, options.solver), samples, initial))))

@@ -5,7 +5,7 @@
 use super::diag::{Collector, join_key};
 use super::raw::RawCompare;
 use super::validate::valid_scene_name;
-use crate::design::{COMPARE_COLUMNS, Compare, CompareQuantity, Scene, SceneKind};
+use crate::design::{Compare, CompareQuantity, Scene, SceneKind, compare_columns};
 use toml::Spanned;
 
 /// The sheet's compare figures: `None` when one is wrong (or the section failed to read).
@@ -60,12 +60,12 @@ fn one(c: &mut Collector, label: &str, table: &Spanned<RawCompare>, scenes: Opti
     };
     let quantity = match &raw.quantity {
         Some(q) if q.get_ref() == "track" => Some(CompareQuantity::Track),
-        Some(q) => match COMPARE_COLUMNS.iter().find(|col| **col == q.get_ref().as_str()) {
+        Some(q) => match compare_columns().find(|col| *col == q.get_ref().as_str()) {
             Some(col) => Some(CompareQuantity::History(col)),
             None => {
                 let msg = format!(
                     "unknown quantity; expected \"track\" or a history.csv column: {}",
-                    COMPARE_COLUMNS.join(", ")
+                    compare_columns().collect::<Vec<_>>().join(", ")
                 );
                 c.push(Some(q.span()), None, &key("quantity"), msg);
                 None

@@ -8,6 +8,7 @@
 
 use super::grid::KEYS;
 use crate::design::Requirements;
+use crate::planner::Level;
 use crate::report::summary::SceneSummary;
 use std::io::Write;
 use std::path::Path;
@@ -90,7 +91,7 @@ pub struct SweepRow {
     /// The scene's kind.
     pub kind: String,
     /// Model level the scene ran at.
-    pub level: u8,
+    pub level: Level,
     /// In [`RESULT_COLUMNS`] order.
     pub cells: Vec<Cell>,
 }
@@ -222,7 +223,11 @@ fn parse_row(record: &csv::StringRecord, nkeys: usize) -> Result<SweepRow, Strin
     }
     let values = (0..nkeys).map(|k| number(2 + k, field(2 + k))).collect::<Result<Vec<_>, _>>()?;
     let s = 2 + nkeys;
-    let level = field(s + 2).parse::<u8>().map_err(|_| format!("level: {:?} is not a model level", field(s + 2)))?;
+    let level = field(s + 2)
+        .parse::<u8>()
+        .ok()
+        .and_then(Level::from_number)
+        .ok_or_else(|| format!("level: {:?} is not a model level", field(s + 2)))?;
     let cells = RESULT_COLUMNS
         .iter()
         .enumerate()

@@ -2,6 +2,7 @@
 //! directory they were just drawn into), each with a one-line caption saying what to read in it.
 
 use super::{Context, esc};
+use crate::planner::Level;
 use base64::Engine;
 use std::fmt::Write;
 use std::io;
@@ -39,7 +40,11 @@ pub fn figures(out: &mut String, ctx: &Context) -> io::Result<()> {
             let png = std::fs::read(&path)?;
             let data = base64::engine::general_purpose::STANDARD.encode(png);
             let nodes = match (file, s.plan.level, s.nodes) {
-                ("history.png" | "wrap_map.png" | "distribution.png" | "wrap_diagram.png", 4, Some(n)) => format!(
+                (
+                    "history.png" | "wrap_map.png" | "distribution.png" | "wrap_diagram.png",
+                    Level::Dynamic4,
+                    Some(n),
+                ) => format!(
                     " The arcs and JDP of a duty cycle depend on the node count: N = {n} here; at N = 180 their RMS error is about 29° against N = 2880 (README, Speed and accuracy), while the tensions agree to 3e-4."
                 ),
                 _ => String::new(),

@@ -16,6 +16,7 @@ mod sections;
 mod software;
 mod style;
 
+use super::accuracy::Evidence;
 use crate::design::Design;
 use crate::run::RunResult;
 use sha2::{Digest, Sha256};
@@ -23,7 +24,7 @@ use std::fmt::Write;
 use std::path::Path;
 
 /// Where the report comes from: the sheet as read, and the command that ran it.
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Provenance {
     /// The sheet's text (its values are echoed under "inputs").
     pub sheet_text: String,
@@ -32,6 +33,9 @@ pub struct Provenance {
     /// The command line that ran the sheet, one argument per entry (shown shell-quoted under
     /// "software").
     pub command_line: Vec<String>,
+    /// The accuracy evidence of the build that writes the report (the bench's closed-form
+    /// cases and their errors), shown under "software"; empty when not computed.
+    pub accuracy: Vec<Evidence>,
 }
 
 impl Provenance {
@@ -48,7 +52,17 @@ impl Provenance {
             let _ = write!(s, "{b:02x}");
             s
         });
-        Self { sheet_text: String::from_utf8_lossy(bytes).into_owned(), sheet_sha256, command_line }
+        Self {
+            sheet_text: String::from_utf8_lossy(bytes).into_owned(),
+            sheet_sha256,
+            command_line,
+            accuracy: Vec::new(),
+        }
+    }
+
+    /// The same provenance with the build's accuracy evidence.
+    pub fn with_accuracy(self, accuracy: Vec<Evidence>) -> Self {
+        Self { accuracy, ..self }
     }
 }
 

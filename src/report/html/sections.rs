@@ -3,6 +3,7 @@
 
 use super::{Context, esc, table};
 use crate::design::Limit;
+use crate::planner::Level;
 use crate::requirements::SafetyFactorBasis;
 use std::collections::BTreeSet;
 use std::fmt::Write;
@@ -77,28 +78,28 @@ pub fn basis(out: &mut String, ctx: &Context) -> io::Result<()> {
 }
 
 /// What each level assumes and where it stops being valid.
-fn level_text(level: u8) -> &'static str {
+fn level_text(level: Level) -> &'static str {
     match level {
-        0 => {
+        Level::Closed0 => {
             "Closed-form checks (Euler/capstan): rope as a string on a rigid pulley, Coulomb friction with one \
               μ, tension ratio (T_hi − m'v²)/(T_lo − m'v²) against e^{μα}; says whether the rope slips grossly, \
               not where friction acts over the wrap."
         }
-        1 => {
+        Level::Capstan1 => {
             "Creep theory of steady rolling: constant end tensions and speed; an idle arc at the entry tension, \
               then an active arc β = ln(ratio)/μ at the exit where the tension falls exponentially. Exact for a \
               steady state; no load history."
         }
-        2 => {
+        Level::Rigid2 => {
             "Discrete stick–slip model on a rigid lining: the rope sticks where |q| < μn and slips at the \
               Coulomb bound; the load history is carried by the pulley. Exact exponential pieces between knots; \
               no lining elasticity, no rope bending, rope inertia only through m'v²."
         }
-        3 => {
+        Level::Elastic3 => {
             "Elastic lining: a shear foundation k_s under an extensible rope (EA), increments solved as a \
               convex program with |q| ≤ μn; the segment length Rα/N should stay well below λ = √(EA/k_s)."
         }
-        _ => {
+        Level::Dynamic4 => {
             "Duty cycle: the suspended ropes as finite elements (axial stiffness, damping) driven by the \
               motion profile give the end tensions; the wrap takes them every 5 ms. Arcs and JDP converge \
               slowly with the node count (indicative below N = 1440)."
@@ -108,7 +109,7 @@ fn level_text(level: u8) -> &'static str {
 
 /// 4. Assumptions and limits of the levels the run used.
 pub fn assumptions(out: &mut String, ctx: &Context) -> io::Result<()> {
-    let levels: BTreeSet<u8> = ctx.run.scenes.iter().map(|s| s.plan.level).collect();
+    let levels: BTreeSet<Level> = ctx.run.scenes.iter().map(|s| s.plan.level).collect();
     out.push_str("<p>Common to every level: tensions per rope, θ from the side-1 tangent point (0) to the side-2 tangent point (α); Coulomb's law |q| ≤ μn holds at every output point.</p>\n");
     let rows = levels.iter().map(|l| {
         let scenes: Vec<&str> = ctx.run.scenes.iter().filter(|s| s.plan.level == *l).map(|s| s.name.as_str()).collect();

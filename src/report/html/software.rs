@@ -28,7 +28,7 @@ pub fn software(out: &mut String, ctx: &Context) -> io::Result<()> {
         "<p>Computed while this report was written, by this build: the closed-form cases of the bench run through the same code as the sheet's scenes, on N = {} nodes, with their errors against the closed forms.</p>",
         accuracy::NODES
     );
-    let rows = accuracy::evidence().into_iter().map(|e| {
+    let rows = ctx.provenance.accuracy.iter().map(|e| {
         let (err, ok) = match (e.error, &e.failure) {
             (Some(x), _) => (format!("{x:.2e}"), x < REPRODUCED_BELOW),
             (None, Some(f)) => (esc(f), false),

@@ -1,10 +1,10 @@
 //! The emergency stop's checks: the deceleration reached against the sheet's window (a minimum
 //! and a maximum for lifting and for lowering side 1), and against the slip-limited deceleration.
 
-use super::{Check, Relation, q};
+use crate::check::{Check, Relation, q};
 use crate::design::{Design, Direction, Limit};
 use crate::model::braking;
-use crate::model::stop::{SlipOnset, StopReport};
+use crate::model::stop::{SlipOnset, StopMode, StopReport};
 
 /// Names of the braking checks: the window when lifting and when lowering side 1, and the slip
 /// limit.
@@ -35,7 +35,7 @@ pub fn stop_checks(design: &Design, stop: &StopReport, onset: Option<&SlipOnset>
     let way = if stop.lifting { "lifting side 1" } else { "lowering side 1" };
     let formula_window = if stop.timed {
         "d = v(t_full)/(t_stop − t_full): mean from full brake force to standstill"
-    } else if stop.mode == "brake" {
+    } else if stop.mode == StopMode::Brake {
         "d = (F_b ± (m1 − m2)g)/M: the full brake force at this position, rigid ropes"
     } else {
         "d: the imposed deceleration"
@@ -83,7 +83,7 @@ pub fn stop_checks(design: &Design, stop: &StopReport, onset: Option<&SlipOnset>
 }
 
 /// What a stop's checks print as inputs: the stop, the brake and the masses.
-fn stop_inputs(design: &Design, stop: &StopReport) -> Vec<super::Quantity> {
+fn stop_inputs(design: &Design, stop: &StopReport) -> Vec<crate::check::Quantity> {
     let m = &stop.masses;
     let mut inputs = if stop.timed {
         vec![
@@ -102,7 +102,7 @@ fn stop_inputs(design: &Design, stop: &StopReport) -> Vec<super::Quantity> {
         q("J/R² + n·m'·R·α", m.pulley_kg, "kg"),
         q("M", m.total_kg(), "kg"),
     ]);
-    if let (Some(b), "brake") = (design.machine.brake, stop.mode) {
+    if let (Some(b), StopMode::Brake) = (design.machine.brake, stop.mode) {
         let direction = if stop.lifting { Direction::Lift } else { Direction::Lower };
         inputs.extend([
             q("F_b", b.force_n, "N"),

@@ -21,24 +21,68 @@
 //! A bracket without a sign change is a verdict, not an error: "no slip within the searched
 //! range", or "already beyond" when the criterion fails at the current state.
 
-use crate::design::Design;
-use crate::model::level0::{EndState, euler_limit};
-use crate::roots::{self, RootError, RootStats};
-use serde::Serialize;
+mod emergency;
+pub use emergency::emergency;
 
-/// Relative tolerance of every margin (x-tolerance of Brent's method over the bracket width).
-const REL_TOL: f64 = 1e-13;
+use crate::design::{Design, Direction};
+use crate::model::level0::{EndState, euler_limit};
+use crate::roots::{self, Holding, RootError, RootStats};
+use serde::{Serialize, Serializer};
+use std::fmt;
 
 /// Outcome of one margin search.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Margin {
     /// The margin, when the criterion changes within the searched range.
     pub value: Option<f64>,
-    /// `found`, `no slip within the searched range`, `already beyond at the current state`,
-    /// `not applicable: …` or the root finder's failure.
-    pub verdict: String,
+    /// How the search ended.
+    pub verdict: MarginVerdict,
     /// The searched range `[lo, hi]`.
     pub searched: [f64; 2],
+}
+
+/// How a margin search ended; serialised and printed as its sentence.
+#[derive(Debug, Clone, PartialEq)]
+pub enum MarginVerdict {
+    /// `found`: the criterion changes within the searched range.
+    Found,
+    /// `no slip within the searched range`.
+    NoSlipInRange,
+    /// `already beyond at the current state`.
+    AlreadyBeyond,
+    /// `beyond the searched range: μ_c > 2` (the critical μ only).
+    CriticalMuAboveRange,
+    /// `not applicable: the criterion is not finite on the searched range`.
+    NotFinite,
+    /// `not applicable: the state is at rest` (braking margins only).
+    AtRest,
+    /// The root finder's failure.
+    Failed(RootError),
+}
+
+/// Largest friction coefficient searched for the critical μ (the largest a sheet may give).
+pub const MU_SEARCH_MAX: f64 = 2.0;
+
+impl fmt::Display for MarginVerdict {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            MarginVerdict::Found => f.write_str("found"),
+            MarginVerdict::NoSlipInRange => f.write_str("no slip within the searched range"),
+            MarginVerdict::AlreadyBeyond => f.write_str("already beyond at the current state"),
+            MarginVerdict::CriticalMuAboveRange => write!(f, "beyond the searched range: μ_c > {MU_SEARCH_MAX}"),
+            MarginVerdict::NotFinite => {
+                f.write_str("not applicable: the criterion is not finite on the searched range")
+            }
+            MarginVerdict::AtRest => f.write_str("not applicable: the state is at rest"),
+            MarginVerdict::Failed(e) => write!(f, "{e}"),
+        }
+    }
+}
+
+impl Serialize for MarginVerdict {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.collect_str(self)
+    }
 }
 
 /// The margins of one state.
@@ -80,22 +124,14 @@ pub struct Margins {
 /// Largest x in [lo, hi] from which the criterion `h` (≥ 0: holds) still holds, as the root of h.
 pub fn largest_holding(h: impl Fn(f64) -> f64, lo: f64, hi: f64, stats: &mut RootStats) -> Margin {
     let searched = [lo, hi];
-    let verdict = |v: &str| Margin { value: None, verdict: v.to_string(), searched };
-    let (h_lo, h_hi) = (h(lo), h(hi));
-    if !(h_lo.is_finite() && h_hi.is_finite()) {
-        return verdict("not applicable: the criterion is not finite on the searched range");
-    }
-    if h_lo < 0.0 {
-        return verdict("already beyond at the current state");
-    }
-    if h_hi >= 0.0 {
-        return verdict("no slip within the searched range");
-    }
-    match roots::brent(&h, lo, hi, REL_TOL * (hi - lo), stats) {
-        Ok(x) => Margin { value: Some(x), verdict: "found".into(), searched },
-        Err(RootError::NoBracket { .. }) => verdict("no slip within the searched range"),
-        Err(e) => verdict(&e.to_string()),
-    }
+    let (value, verdict) = match roots::largest_holding(h, lo, hi, stats) {
+        Holding::Until(x) => (Some(x), MarginVerdict::Found),
+        Holding::Throughout => (None, MarginVerdict::NoSlipInRange),
+        Holding::NotAtStart => (None, MarginVerdict::AlreadyBeyond),
+        Holding::NotFinite => (None, MarginVerdict::NotFinite),
+        Holding::Failed(e) => (None, MarginVerdict::Failed(e)),
+    };
+    Margin { value, verdict, searched }
 }
 
 /// `(T_lo − c)·E − (T_hi − c)`: ≥ 0 while the state does not slip grossly.
@@ -141,11 +177,9 @@ pub fn of_masses(
     // Critical μ: the state slips for μ below μ_c, where ln(ratio) − μα changes sign (searched
     // up to the largest μ a sheet may give).
     let ln_ratio = state.tension_ratio().ln();
-    let critical_mu = largest_holding(|m| ln_ratio - m * alpha, 0.0, 2.0, &mut stats);
-    let critical_mu = match critical_mu.verdict.as_str() {
-        "no slip within the searched range" => {
-            Margin { verdict: "beyond the searched range: μ_c > 2".into(), ..critical_mu }
-        }
+    let critical_mu = largest_holding(|m| ln_ratio - m * alpha, 0.0, MU_SEARCH_MAX, &mut stats);
+    let critical_mu = match critical_mu.verdict {
+        MarginVerdict::NoSlipInRange => Margin { verdict: MarginVerdict::CriticalMuAboveRange, ..critical_mu },
         _ => critical_mu,
     };
 
@@ -162,15 +196,15 @@ pub fn of_masses(
         largest_holding(|x| sf_residual(&with_payload(x), limit, payload_sf_min), 0.0, payload_hi, &mut stats);
 
     // Braking deceleration opposing the motion, up to just below free fall of the rising side.
-    let running_sign = if state.speed_m_s != 0.0 { state.speed_m_s.signum() } else { state.accel_m_s2.signum() };
+    let running = Direction::of_speed(state.speed_m_s).or(Direction::of_speed(state.accel_m_s2));
+    let running_sign = running.map_or(0.0, Direction::sign);
     let braking = |d: f64| {
         let a = -running_sign * d;
         EndState { t1_n: (m1 * (g + a) + g1 * a) / n, t2_n: (m2 * (g - a) - g2 * a) / n, accel_m_s2: a, ..*state }
     };
     let braking_hi = 0.999 * g;
     let (braking_to_slip_m_s2, braking_to_min_safety_factor_m_s2) = if at_rest {
-        let none =
-            Margin { value: None, verdict: "not applicable: the state is at rest".into(), searched: [0.0, braking_hi] };
+        let none = Margin { value: None, verdict: MarginVerdict::AtRest, searched: [0.0, braking_hi] };
         (none.clone(), none)
     } else {
         (

@@ -3,6 +3,9 @@
 
 pub use crate::requirements::{DEFAULT_SAFETY_FACTOR_SOURCE, Limit, Requirements, SafetyFactorBasis};
 
+mod direction;
+pub use direction::{Direction, Side};
+
 /// Standard gravity, used unless the sheet gives `g_m_s2`.
 pub const STANDARD_GRAVITY_M_S2: f64 = 9.81;
 
@@ -58,22 +61,30 @@ pub enum CompareQuantity {
     History(&'static str),
 }
 
-/// The history.csv columns a `[[compare]]` figure can overlay.
-pub const COMPARE_COLUMNS: [&str; 13] = [
-    "t1_n",
-    "t2_n",
-    "speed_m_s",
-    "accel_m_s2",
-    "jdp_deg",
-    "positive_arc_deg",
-    "reverse_arc_deg",
-    "max_utilization",
-    "safety_factor",
-    "anchor1_n",
-    "anchor2_n",
-    "mid1_n",
-    "mid2_n",
+/// The columns of history.csv in order (docs/interface.md), each with whether a `[[compare]]`
+/// figure can overlay it (every number but the time).
+pub const HISTORY_COLUMNS: [(&str, bool); 15] = [
+    ("t_s", false),
+    ("t1_n", true),
+    ("t2_n", true),
+    ("speed_m_s", true),
+    ("accel_m_s2", true),
+    ("jdp_deg", true),
+    ("positive_arc_deg", true),
+    ("reverse_arc_deg", true),
+    ("max_utilization", true),
+    ("safety_factor", true),
+    ("gross_slip", false),
+    ("anchor1_n", true),
+    ("anchor2_n", true),
+    ("mid1_n", true),
+    ("mid2_n", true),
 ];
+
+/// The history.csv columns a `[[compare]]` figure can overlay, in history.csv's order.
+pub fn compare_columns() -> impl Iterator<Item = &'static str> {
+    HISTORY_COLUMNS.iter().filter(|(_, comparable)| *comparable).map(|(name, _)| *name)
+}
 
 /// The title block of the calculation report, echoed as the sheet gives it.
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
@@ -547,23 +558,4 @@ pub enum EndLoads {
         /// Tension per rope at the side-2 tangent point (N).
         t2_n: f64,
     },
-}
-
-/// Travel direction: `Lift` = side 1 goes up, the rope runs from side 1 to side 2 (v > 0).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Direction {
-    /// Side 1 goes up (v > 0).
-    Lift,
-    /// Side 1 goes down (v < 0).
-    Lower,
-}
-
-impl Direction {
-    /// +1 for lift, −1 for lower.
-    pub fn sign(self) -> f64 {
-        match self {
-            Direction::Lift => 1.0,
-            Direction::Lower => -1.0,
-        }
-    }
 }
