@@ -218,3 +218,34 @@ fn the_impulse_turns_down_where_friction_reverses_on_a_stiff_lining() {
     assert!((mirrored.theta_deg - (180.0 - turn.theta_deg)).abs() < 1e-6);
     assert!((mirrored.impulse_n_s + turn.impulse_n_s).abs() < 1e-7 * turn.impulse_n_s.abs());
 }
+
+/// On a soft lining (λ = √(EA/k_s) = 1 m against 7.9 m of wrap) the friction on the element of
+/// the turn scene no longer jumps from positive to reverse: it passes through zero smoothly,
+/// taking several rows to cross the band ±0.001·μN in which friction counts as none. The
+/// impulse J = ∫F dt still turns down, at the zero of F: the instant found lies between the last
+/// row with F > 0 and the first with F ≤ 0, and J there is the largest of the track: a row's J
+/// differs from J at the zero by at most |F|·Δt over the row interval Δt around it, where |F| is
+/// inside the band (2 ms rows). Both directions.
+#[test]
+fn the_impulse_turns_down_where_friction_reverses_smoothly_on_a_soft_lining() {
+    let soft = EA / 1.0;
+    let mirrored_scene = TURN_SCENE.replace("t1_n", "t_tmp").replace("t2_n", "t1_n").replace("t_tmp", "t2_n");
+    for (scene, sign) in [(TURN_SCENE.to_string(), 1.0), (mirrored_scene.replace("[2.0, 2.0]", "[-2.0, -2.0]"), -1.0)] {
+        let track = &tracks(&design(soft, &scene))[0];
+        let turn = track.turn_down.expect("the impulse turns down");
+        let rows = &track.rows;
+        let k = rows.iter().position(|r| r.t_s > turn.t_s).expect("a row after the turn-down");
+        let (before, after) = (&rows[k - 1], &rows[k]);
+        assert!(sign * before.friction_force_n > 0.0 && sign * after.friction_force_n <= 0.0);
+        // The reversal is smooth: the rows on either side of the zero are inside the band.
+        let band = 1e-3 * MU * before.contact_force_n;
+        assert!(sign * before.friction_force_n < band, "F = {} N before the zero: a jump", before.friction_force_n);
+        let peak = rows.iter().map(|r| sign * r.impulse_n_s).fold(f64::NEG_INFINITY, f64::max);
+        let dt = after.t_s - before.t_s;
+        assert!(
+            (sign * turn.impulse_n_s - peak).abs() <= band * dt,
+            "J at the turn-down {} N·s, largest row {peak} N·s",
+            turn.impulse_n_s
+        );
+    }
+}

@@ -128,25 +128,33 @@ pub fn run_tracks<M: WrapModel + Clone>(
     // Tolerance of "on the pulley" at an entry or exit instant (round-off of φ).
     let slack = 1e-9 * (1.0 + alpha);
     let mut before: Option<(f64, M)> = None;
+    let mut watch: Vec<Watch<M>> = elements.iter().map(|_| Watch::default()).collect();
     for &t in &times {
         model.advance_to(t)?;
         let phi = turn.at(t);
         let mut any = false;
-        for (e, track) in elements.iter().zip(tracks.iter_mut()) {
+        for ((e, track), w) in elements.iter().zip(tracks.iter_mut()).zip(watch.iter_mut()) {
             let centre = phi - e.phi_rad;
             if centre < -half - slack || centre > alpha + half + slack {
                 continue;
             }
             any = true;
             let row = row_at(&model, t, centre, half, track.rows.last());
-            let on = centre >= half && centre <= alpha - half;
-            if track.turn_down.is_none()
-                && let (Some(prev), Some((t_before, earlier))) = (track.rows.last(), before.as_ref())
-                && prev.t_s == *t_before
-                && turns_down(prev, &row, on, wrap.mu, turn.omega_per_s(0.5 * (prev.t_s + t)))
-            {
-                let probe = Probe { model: earlier, turn: &turn, element: e, half };
-                track.turn_down = Some(probe.turn_down(prev, t, &mut roots)?);
+            if track.turn_down.is_none() {
+                let on = centre >= half && centre <= alpha - half;
+                let sign = if turn.omega_per_s(0.5 * (track.rows.last().map_or(t, |p| p.t_s) + t)) >= 0.0 {
+                    1.0
+                } else {
+                    -1.0
+                };
+                let earlier =
+                    before.as_ref().filter(|(t_before, _)| track.rows.last().is_some_and(|p| p.t_s == *t_before));
+                if let Some((prev, next, start)) =
+                    w.step(track.rows.last(), &row, on, sign, wrap.mu, earlier.map(|b| &b.1))
+                {
+                    let probe = Probe { model: &start, turn: &turn, element: e, half };
+                    track.turn_down = Some(probe.turn_down(&prev, &next, &mut roots)?);
+                }
             }
             track.rows.push(row);
         }
@@ -156,17 +164,62 @@ pub fn run_tracks<M: WrapModel + Clone>(
     Ok((tracks, roots))
 }
 
-/// Whether the friction force on an element goes from the sign of the motion `omega` to the
-/// other sign between rows `a` and `b`. As for the arcs of the wrap, friction counts only
-/// beyond 0.001 of its Coulomb bound μN: from above +0.001·μN (along the motion) to below
-/// −0.001·μN, or to exactly zero while the element lies wholly on the pulley (`on`: a stuck
-/// stretch without friction; an element leaving the pulley loses its force too, but that is no
-/// reversal).
-fn turns_down(a: &TrackRow, b: &TrackRow, on: bool, mu: f64, omega: f64) -> bool {
-    let s = if omega >= 0.0 { 1.0 } else { -1.0 };
-    let along = |r: &TrackRow| s * r.friction_force_n > ARC_THRESHOLD * mu * r.contact_force_n;
-    let against = |r: &TrackRow| s * r.friction_force_n < -ARC_THRESHOLD * mu * r.contact_force_n;
-    along(a) && (against(b) || (on && b.friction_force_n == 0.0))
+/// What an element's rows have shown of its friction force so far, to find where its impulse
+/// turns down. As for the arcs of the wrap, friction counts only beyond 0.001 of its Coulomb
+/// bound μN: the impulse turns down once the force, having been along the motion (above
+/// +0.001·μN), reaches the other sign (below −0.001·μN), or exactly zero while the element lies
+/// wholly on the pulley (a stuck stretch without friction; an element leaving the pulley loses
+/// its force too, but that is no reversal). The instant is the force's zero between the last row
+/// along the motion (F > 0) and the first that is not: the rows on either side of it are kept,
+/// with the state at the earlier one, until the force confirms the reversal or goes back along
+/// the motion. On a rigid lining the force jumps and both rows are those of one step; on an
+/// elastic lining it passes smoothly through the band around zero over several rows.
+struct Watch<M> {
+    /// A row since the last reversal candidate had the force along the motion.
+    armed: bool,
+    /// The rows bracketing the zero and the state at the earlier one.
+    candidate: Option<(TrackRow, TrackRow, M)>,
+}
+
+impl<M> Default for Watch<M> {
+    fn default() -> Self {
+        Self { armed: false, candidate: None }
+    }
+}
+
+impl<M: Clone> Watch<M> {
+    /// Takes the next row `b` after `a` (`sign`: the direction of motion between them, `earlier`:
+    /// the state at `a` when kept); returns the bracket of a confirmed turn-down.
+    fn step(
+        &mut self,
+        a: Option<&TrackRow>,
+        b: &TrackRow,
+        on: bool,
+        sign: f64,
+        mu: f64,
+        earlier: Option<&M>,
+    ) -> Option<(TrackRow, TrackRow, M)> {
+        let band = |r: &TrackRow| ARC_THRESHOLD * mu * r.contact_force_n;
+        if sign * b.friction_force_n > band(b) {
+            self.armed = true;
+            self.candidate = None;
+            return None;
+        }
+        if self.armed
+            && self.candidate.is_none()
+            && let (Some(a), Some(start)) = (a, earlier)
+            && sign * a.friction_force_n > 0.0
+            && sign * b.friction_force_n <= 0.0
+        {
+            self.candidate = Some((*a, *b, start.clone()));
+        }
+        let reversed = sign * b.friction_force_n < -band(b) || (on && b.friction_force_n == 0.0);
+        if reversed && self.candidate.is_some() {
+            self.armed = false;
+            return self.candidate.take();
+        }
+        None
+    }
 }
 
 /// The times of the rows: every `step_s` from the first sample, every sample, and every instant
@@ -247,13 +300,24 @@ impl<M: WrapModel + Clone> Probe<'_, M> {
     }
 
     /// The first instant after `prev` at which the force leaves the sign of the motion: the root
-    /// of `s·F` (a force that vanishes over a stuck stretch counts as the other sign, so that
-    /// the root is where it first reaches zero).
-    fn turn_down(&self, prev: &TrackRow, t1: f64, roots: &mut RootStats) -> Result<TurnDown, M::Error> {
+    /// of `s·F` between the rows `prev` and `next` (a force that vanishes over a stuck stretch
+    /// counts as the other sign, so that the root is where it first reaches zero). The ends take
+    /// the rows' own forces, whose signs bracket the root; inside, a copy of the state at `prev`
+    /// is advanced (on an elastic lining its iterative increments may differ from the run's in
+    /// the last digits, which moves the root by as much, not the bracket).
+    fn turn_down(&self, prev: &TrackRow, next: &TrackRow, roots: &mut RootStats) -> Result<TurnDown, M::Error> {
+        let t1 = next.t_s;
         let s = if self.turn.omega_per_s(0.5 * (prev.t_s + t1)) >= 0.0 { 1.0 } else { -1.0 };
         let floor = 1e-12 * prev.friction_force_n.abs();
         let f = |t: f64| {
-            let g = s * self.force_n(t);
+            let force = if t <= prev.t_s {
+                prev.friction_force_n
+            } else if t >= t1 {
+                next.friction_force_n
+            } else {
+                self.force_n(t)
+            };
+            let g = s * force;
             if g > 0.0 { g } else { g - floor }
         };
         let t = roots::bracketed(f, prev.t_s, t1, TURN_DOWN_TOL_S, roots)?;
