@@ -3,7 +3,7 @@
 //! selection) is left out.
 
 use super::plot_panels::{Line, PALETTE, Panel, plot_panels};
-use super::plot_track::track_panels;
+use super::plot_track::{Clock, track_panels};
 use super::{ReportError, io};
 use crate::design::{Compare, CompareQuantity};
 use crate::model::track::Track;
@@ -36,7 +36,7 @@ pub fn write(dir: &Path, figures: &[Compare], scenes: &[SceneResult], plots: boo
                         &out.join(format!("{}.png", figure.name)),
                         &title,
                         "time t (s)",
-                        &track_panels(&tracks, mu),
+                        &track_panels(&tracks, mu, Clock::Scene),
                     )?;
                 }
             }
