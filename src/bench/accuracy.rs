@@ -19,7 +19,7 @@ const TENSION: &str = "max |T − T_exact| / T_ref over the output grid";
 /// Runs the analytic cases (a few milliseconds) and returns their errors.
 pub fn evidence() -> Vec<Evidence> {
     let closed = |case: Case, level: Level, reference: &'static str| {
-        let outcome = cases::run_closed_form(case, level.number(), Solver::Fast, NODES);
+        let outcome = cases::run_closed_form(case, level, Solver::Fast, NODES);
         entry(case.name(), level, reference, TENSION, outcome.map(|o| o.error))
     };
     vec![

@@ -40,7 +40,7 @@ use crate::design::{
 pub use crate::model::history::HistoryRow;
 use crate::model::history::HistorySample;
 use crate::model::level2::Solver;
-use crate::planner::Request;
+use crate::planner::{Level, Request};
 use crate::run::{self, Options, RunError, RunResult};
 use crate::wrap::Distribution;
 use std::path::Path;
@@ -318,15 +318,10 @@ pub fn run_checks(case: Case) -> Result<Outcome, RunError> {
 }
 
 /// A closed-form case at `level` (1, 2 or 3) on `nodes` nodes.
-pub fn run_closed_form(case: Case, level: u8, solver: Solver, nodes: usize) -> Result<Outcome, RunError> {
+pub fn run_closed_form(case: Case, level: Level, solver: Solver, nodes: usize) -> Result<Outcome, RunError> {
     let design = design_of(case).expect("a closed-form case has a design");
     let scenes: Vec<&Scene> = design.scenes.iter().collect();
-    let options = Options {
-        request: Request::Full { forced_level: crate::planner::Level::from_number(level) },
-        nodes,
-        solver,
-        ..Options::default()
-    };
+    let options = Options { request: Request::Full { forced_level: Some(level) }, nodes, solver, ..Options::default() };
     let result = run::run(&design, &scenes, options)?;
     let scene = &result.scenes[0];
     let error = scene.wrap.as_ref().and_then(|w| tension_error(case, &w.distribution));
@@ -428,9 +423,12 @@ mod tests {
         // Levels 1 and 2 are exact on these cases (slip boundaries inserted exactly, exact
         // exponentials between knots): the error is rounding, 1e-12 leaves room for the
         // exp/ln round trips over a few hundred knots.
-        for (case, level) in
-            [(Case::StandstillStep, 2), (Case::NestedUnloading, 2), (Case::SteadyRolling, 1), (Case::SteadyRolling, 2)]
-        {
+        for (case, level) in [
+            (Case::StandstillStep, Level::Rigid2),
+            (Case::NestedUnloading, Level::Rigid2),
+            (Case::SteadyRolling, Level::Capstan1),
+            (Case::SteadyRolling, Level::Rigid2),
+        ] {
             let out = run_closed_form(case, level, Solver::Fast, 64).expect("runs");
             let error = out.error.expect("a closed form");
             assert!(error < 1e-12, "{} at level {level}: {error}", case.name());
@@ -441,7 +439,7 @@ mod tests {
         // error of order (Rh/λ)² of ΔT. At N = 180, Rh = 2.5·α/180 = 0.0454 m and λ = 2.045 m:
         // (Rh/λ)² = 4.9e-4, and 2(Rh/λ)² ≈ 1e-3 of ΔT bounds it; at N = 64, 2(Rh/λ)² = 7.8e-3.
         for (nodes, bound) in [(180, 1e-3), (64, 7.8e-3)] {
-            let out = run_closed_form(Case::ShearLag, 3, Solver::Fast, nodes).expect("runs");
+            let out = run_closed_form(Case::ShearLag, Level::Elastic3, Solver::Fast, nodes).expect("runs");
             let error = out.error.expect("a closed form");
             assert!(error < bound, "shear lag at N = {nodes}: {error}");
         }
@@ -450,7 +448,8 @@ mod tests {
         // adds O(μ n h²/λ) ≈ 3e-5 T0 at most (measured 7.1e-6 and 3.1e-5): bound 5e-5.
         for case in [Case::BoundStep, Case::BoundRolling] {
             for solver in [Solver::Fast, Solver::Clarabel] {
-                let error = run_closed_form(case, 3, solver, 360).expect("runs").error.expect("a closed form");
+                let error =
+                    run_closed_form(case, Level::Elastic3, solver, 360).expect("runs").error.expect("a closed form");
                 assert!(error < 5e-5, "{} ({solver:?}) at N = 360: {error}", case.name());
             }
         }

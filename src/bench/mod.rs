@@ -19,6 +19,7 @@ pub mod table;
 pub mod walk;
 
 use crate::model::level2::{Level2Error, Solver};
+use crate::planner::Level;
 use crate::run::RunError;
 use crate::sheet::SheetError;
 use cases::{Case, Outcome};
@@ -47,7 +48,7 @@ pub struct BenchRow {
     /// Case name ([`Case::name`]).
     pub case: &'static str,
     /// Model level (0–4).
-    pub level: u8,
+    pub level: Level,
     /// Solver of the wrap model.
     pub solver: Solver,
     /// Sweep name ([`Sweep::name`]).
@@ -136,7 +137,7 @@ struct Point {
 #[derive(Debug, Clone, Copy, PartialEq)]
 struct Spec {
     case: Case,
-    level: u8,
+    level: Level,
     solver: Solver,
     point: Point,
 }
@@ -166,7 +167,7 @@ impl Spec {
         }
         Some(Spec {
             case: Case::ALL.iter().copied().find(|c| c.name() == case)?,
-            level: level.parse().ok()?,
+            level: Level::from_number(level.parse().ok()?)?,
             solver: match solver {
                 "fast" => Solver::Fast,
                 "clarabel" => Solver::Clarabel,
@@ -306,14 +307,14 @@ fn run_once(options: &BenchOptions, spec: Spec) -> Result<Outcome, BenchError> {
             let samples = cases::rolling_walk(spec.point.samples.unwrap_or(1000));
             cases::run_walk(&samples, nodes).map_err(|source| BenchError::Level2 { case, source })
         }
-        _ if spec.level == 0 => cases::run_checks(spec.case).map_err(run_err),
+        _ if spec.level == Level::Closed0 => cases::run_checks(spec.case).map_err(run_err),
         _ => cases::run_closed_form(spec.case, spec.level, spec.solver, nodes).map_err(run_err),
     }
 }
 
 /// The median time of the point's wrap model alone ([`model_time`]; level 2 only).
 fn model_ms(spec: Spec) -> Result<Option<f64>, BenchError> {
-    let Some(model) = model_time::ModelRun::of(spec.case, spec.solver).filter(|_| spec.level == 2) else {
+    let Some(model) = model_time::ModelRun::of(spec.case, spec.solver).filter(|_| spec.level == Level::Rigid2) else {
         return Ok(None);
     };
     let case = spec.case.name();
@@ -333,7 +334,7 @@ fn row_of(
     let error_metric = match (spec.case, spec.level) {
         (Case::RollingWalk, _) => "none (scaling only)",
         (Case::DutyMid, _) => cases::DUTY_METRIC,
-        (_, 0) => cases::CHECKS_METRIC,
+        (_, Level::Closed0) => cases::CHECKS_METRIC,
         (Case::BoundStep | Case::BoundRolling, _) => cases::WINDOW_METRIC,
         _ => cases::TENSION_METRIC,
     };
@@ -346,7 +347,7 @@ fn row_of(
         level: spec.level,
         solver: spec.solver,
         sweep,
-        nodes: point.nodes.filter(|_| spec.level > 0),
+        nodes: point.nodes.filter(|_| spec.level > Level::Closed0),
         time_step_s,
         samples: point.samples,
         steps: m.value.steps,
@@ -368,7 +369,7 @@ mod tests {
     fn probe_specs_round_trip() {
         let spec = Spec {
             case: Case::DutyMid,
-            level: 4,
+            level: Level::Dynamic4,
             solver: Solver::Fast,
             point: Point { nodes: Some(360), time_step_s: Some(2.5e-4), samples: None },
         };
@@ -388,7 +389,7 @@ mod tests {
         assert_eq!(selected(&options(&[])).unwrap().len(), TABLE.len());
         let bound = selected(&options(&["bound-rolling"])).unwrap();
         assert_eq!(bound.len(), 2, "fast and clarabel");
-        assert!(bound.iter().all(|e| e.case == Case::BoundRolling && e.level == 3));
+        assert!(bound.iter().all(|e| e.case == Case::BoundRolling && e.level == Level::Elastic3));
         let err = selected(&options(&["bound-rolling", "nope"])).unwrap_err();
         assert!(matches!(&err, BenchError::UnknownCase { name } if name == "nope"), "{err}");
         assert!(err.to_string().contains("bound-step"), "{err}");

@@ -3,6 +3,7 @@
 
 use super::BenchRow;
 use crate::model::level2::Solver;
+use crate::planner::Level;
 use crate::report::plot::{PlotError, draw_legend, font, render};
 use plotters::prelude::*;
 use std::path::Path;
@@ -13,15 +14,15 @@ pub const ERROR_FLOOR: f64 = 1e-16;
 const WIDTH: u32 = 1400;
 const HEIGHT: u32 = 1000;
 
-fn color(level: u8, solver: Solver) -> RGBColor {
+fn color(level: Level, solver: Solver) -> RGBColor {
     match (level, solver) {
-        (0, _) => RGBColor(90, 90, 90),
-        (1, _) => RGBColor(20, 130, 60),
-        (2, Solver::Fast) => RGBColor(20, 70, 160),
-        (2, Solver::Clarabel) => RGBColor(230, 120, 20),
-        (3, Solver::Fast) => RGBColor(0, 150, 170),
-        (3, Solver::Clarabel) => RGBColor(200, 170, 0),
-        _ => RGBColor(170, 30, 120),
+        (Level::Closed0, _) => RGBColor(90, 90, 90),
+        (Level::Capstan1, _) => RGBColor(20, 130, 60),
+        (Level::Rigid2, Solver::Fast) => RGBColor(20, 70, 160),
+        (Level::Rigid2, Solver::Clarabel) => RGBColor(230, 120, 20),
+        (Level::Elastic3, Solver::Fast) => RGBColor(0, 150, 170),
+        (Level::Elastic3, Solver::Clarabel) => RGBColor(200, 170, 0),
+        (Level::Dynamic4, _) => RGBColor(170, 30, 120),
     }
 }
 
@@ -41,12 +42,12 @@ fn curves(rows: &[BenchRow]) -> Vec<Curve<'_>> {
             cases.push(r.case);
         }
         let solver = match r.solver {
-            Solver::Fast if r.level == 2 => " fast",
+            Solver::Fast if r.level == Level::Rigid2 => " fast",
             Solver::Clarabel => " clarabel",
             _ => "",
         };
         let sweep = match r.sweep {
-            "nodes" if r.level == 4 => ", N sweep",
+            "nodes" if r.level == Level::Dynamic4 => ", N sweep",
             "time_step" => ", Δt sweep",
             "reference" => ", reference",
             _ => "",
@@ -178,7 +179,7 @@ fn marker(shape: usize, c: RGBColor) -> Polygon<(i32, i32)> {
 mod tests {
     use super::*;
 
-    fn row(case: &'static str, level: u8, nodes: usize, runtime_ms: f64, error: Option<f64>) -> BenchRow {
+    fn row(case: &'static str, level: Level, nodes: usize, runtime_ms: f64, error: Option<f64>) -> BenchRow {
         BenchRow {
             case,
             level,
@@ -202,10 +203,10 @@ mod tests {
     fn draws_curves_and_degenerate_inputs_or_says_why_not() {
         let dir = tempfile::tempdir().expect("temp dir");
         let rows = [
-            row("standstill-step", 2, 16, 0.02, Some(0.0)),
-            row("standstill-step", 2, 64, 0.05, Some(1e-15)),
-            row("duty-MID", 4, 90, 80.0, Some(0.3)),
-            row("rolling-walk", 2, 720, 5.0, None),
+            row("standstill-step", Level::Rigid2, 16, 0.02, Some(0.0)),
+            row("standstill-step", Level::Rigid2, 64, 0.05, Some(1e-15)),
+            row("duty-MID", Level::Dynamic4, 90, 80.0, Some(0.3)),
+            row("rolling-walk", Level::Rigid2, 720, 5.0, None),
         ];
         for (name, rows) in [("full", &rows[..]), ("none", &[][..]), ("one", &rows[..1])] {
             let path = dir.path().join(format!("{name}.png"));

@@ -2,6 +2,7 @@
 
 use super::{BenchRow, Sweep, TABLE};
 use crate::model::level2::Solver;
+use crate::planner::Level;
 use serde::Serialize;
 
 /// The measured scaling of one sweep: log–log slopes of run time and of peak memory (above the
@@ -12,7 +13,7 @@ pub struct Scaling {
     /// Case name.
     pub case: &'static str,
     /// Model level (0–4).
-    pub level: u8,
+    pub level: Level,
     /// Solver of the wrap model.
     pub solver: Solver,
     /// The swept size: `nodes`, `1/time_step_s` or `samples`.

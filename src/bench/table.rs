@@ -2,6 +2,7 @@
 
 use super::cases::Case;
 use crate::model::level2::Solver;
+use crate::planner::Level;
 
 /// What a point varies along its sweep.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -51,7 +52,7 @@ pub struct Entry {
     /// The bench case.
     pub case: Case,
     /// Model level (0–4) the case runs at.
-    pub level: u8,
+    pub level: Level,
     /// Solver of the wrap model.
     pub solver: Solver,
     /// What the line varies.
@@ -78,34 +79,34 @@ pub const DUTY_DEFAULT_STEP_S: f64 = 1e-3;
 
 /// The case × level table: add a line here to bench a new level or case.
 pub const TABLE: &[Entry] = &[
-    Entry { case: Case::StandstillStep, level: 0, solver: Solver::Fast, sweep: Sweep::Single },
+    Entry { case: Case::StandstillStep, level: Level::Closed0, solver: Solver::Fast, sweep: Sweep::Single },
     Entry {
         case: Case::StandstillStep,
-        level: 2,
+        level: Level::Rigid2,
         solver: Solver::Fast,
         sweep: Sweep::Nodes { nodes: NODES, long: LONG_NODES },
     },
     Entry {
         case: Case::StandstillStep,
-        level: 2,
+        level: Level::Rigid2,
         solver: Solver::Clarabel,
         sweep: Sweep::Nodes { nodes: CLARABEL_NODES, long: &[] },
     },
     Entry {
         case: Case::NestedUnloading,
-        level: 2,
+        level: Level::Rigid2,
         solver: Solver::Fast,
         sweep: Sweep::Nodes { nodes: NODES, long: LONG_NODES },
     },
     Entry {
         case: Case::NestedUnloading,
-        level: 2,
+        level: Level::Rigid2,
         solver: Solver::Clarabel,
         sweep: Sweep::Nodes { nodes: CLARABEL_NODES, long: &[] },
     },
     Entry {
         case: Case::SteadyRolling,
-        level: 1,
+        level: Level::Capstan1,
         solver: Solver::Fast,
         sweep: Sweep::Nodes { nodes: NODES, long: LONG_NODES },
     },
@@ -113,62 +114,67 @@ pub const TABLE: &[Entry] = &[
     // nodes) and 1.5 N events: O(N²), so no long points.
     Entry {
         case: Case::SteadyRolling,
-        level: 2,
+        level: Level::Rigid2,
         solver: Solver::Fast,
         sweep: Sweep::Nodes { nodes: NODES, long: &[] },
     },
     Entry {
         case: Case::SteadyRolling,
-        level: 2,
+        level: Level::Rigid2,
         solver: Solver::Clarabel,
         sweep: Sweep::Nodes { nodes: &[16, 64], long: &[] },
     },
-    Entry { case: Case::DutyMid, level: 4, solver: Solver::Fast, sweep: Sweep::Nodes { nodes: DUTY_NODES, long: &[] } },
     Entry {
         case: Case::DutyMid,
-        level: 4,
+        level: Level::Dynamic4,
+        solver: Solver::Fast,
+        sweep: Sweep::Nodes { nodes: DUTY_NODES, long: &[] },
+    },
+    Entry {
+        case: Case::DutyMid,
+        level: Level::Dynamic4,
         solver: Solver::Fast,
         sweep: Sweep::TimeStep { nodes: 360, steps_s: DUTY_STEPS_S },
     },
     Entry {
         case: Case::ShearLag,
-        level: 3,
+        level: Level::Elastic3,
         solver: Solver::Fast,
         sweep: Sweep::Nodes { nodes: &[16, 64, 180, 256, 1024, 4096], long: &[16384] },
     },
     Entry {
         case: Case::ShearLag,
-        level: 3,
+        level: Level::Elastic3,
         solver: Solver::Clarabel,
         sweep: Sweep::Nodes { nodes: &[16, 64, 180, 256], long: &[] },
     },
     Entry {
         case: Case::BoundStep,
-        level: 3,
+        level: Level::Elastic3,
         solver: Solver::Fast,
         sweep: Sweep::Nodes { nodes: BOUND_NODES, long: &[] },
     },
     Entry {
         case: Case::BoundStep,
-        level: 3,
+        level: Level::Elastic3,
         solver: Solver::Clarabel,
         sweep: Sweep::Nodes { nodes: BOUND_NODES, long: &[] },
     },
     Entry {
         case: Case::BoundRolling,
-        level: 3,
+        level: Level::Elastic3,
         solver: Solver::Fast,
         sweep: Sweep::Nodes { nodes: BOUND_NODES, long: &[] },
     },
     Entry {
         case: Case::BoundRolling,
-        level: 3,
+        level: Level::Elastic3,
         solver: Solver::Clarabel,
         sweep: Sweep::Nodes { nodes: BOUND_NODES, long: &[] },
     },
     Entry {
         case: Case::RollingWalk,
-        level: 2,
+        level: Level::Rigid2,
         solver: Solver::Fast,
         sweep: Sweep::Samples { nodes: 720, samples: &[1_000, 10_000, 100_000], long: &[1_000_000] },
     },
