@@ -18,7 +18,7 @@ fn alpha() -> f64 {
 /// 10 000 samples 10 ms apart, rolling at 1 m/s, end tensions a bounded random walk (the
 /// bench report's `rolling-walk` history).
 fn history() -> Vec<HistorySample> {
-    wrapcalc::bench::cases::rolling_walk(10_000)
+    wrapcalc::bench::walk::rolling_walk(10_000)
 }
 
 fn params(solver: Solver) -> Params {

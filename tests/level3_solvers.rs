@@ -6,7 +6,7 @@
 mod common;
 
 use common::{EA_N, T0_N, assert_coulomb, at_rest, mirror, mirror_gap, params};
-use wrapcalc::bench::cases::random_walk;
+use wrapcalc::bench::walk::random_walk;
 use wrapcalc::contact::SLIP_UTILIZATION;
 use wrapcalc::model::history::HistorySample;
 use wrapcalc::model::level2::Solver;

@@ -291,7 +291,7 @@ fn hundred_thousand_nodes() {
 /// A random walk of end tensions (±1 % per sample) rolling at 1 m/s and reversing every 1000
 /// samples.
 fn walk(samples: usize) -> Vec<HistorySample> {
-    wrapcalc::bench::cases::random_walk(samples, 0x2545_F491_4F6C_DD1D, 0.02, Some(1000))
+    wrapcalc::bench::walk::random_walk(samples, 0x2545_F491_4F6C_DD1D, 0.02, Some(1000))
 }
 
 /// Runs a walk and checks the final state: admissible, ends right, every row finite, the run's

@@ -32,7 +32,6 @@
 //! (a derivative of the tension) against a threshold of 0.001, which a tension difference of
 //! 1e-4 moves by tens of degrees where the utilization is small over long stretches.
 
-pub use super::walk::{random_walk, rolling_walk, run_walk};
 use crate::design::{
     Design, Direction, EndLoads, HistoryScene, LoadsScene, Output, Outputs, Pulley, Requirements, Rope, Scene,
     SceneKind, WrapSource,

@@ -304,8 +304,8 @@ fn run_once(options: &BenchOptions, spec: Spec) -> Result<Outcome, BenchError> {
             cases::run_duty(&design, nodes).map_err(run_err)
         }
         Case::RollingWalk => {
-            let samples = cases::rolling_walk(spec.point.samples.unwrap_or(1000));
-            cases::run_walk(&samples, nodes).map_err(|source| BenchError::Level2 { case, source })
+            let samples = walk::rolling_walk(spec.point.samples.unwrap_or(1000));
+            walk::run_walk(&samples, nodes).map_err(|source| BenchError::Level2 { case, source })
         }
         _ if spec.level == Level::Closed0 => cases::run_checks(spec.case).map_err(run_err),
         _ => cases::run_closed_form(spec.case, spec.level, spec.solver, nodes).map_err(run_err),

@@ -13,6 +13,6 @@ pub mod level1;
 pub mod level2;
 pub mod level3;
 pub mod level4;
+pub use level4::stop;
 pub mod numerics;
-pub mod stop;
 pub mod track;

@@ -15,6 +15,7 @@ pub mod html;
 pub mod matrix;
 pub mod plot;
 pub mod plot_colorbar;
+pub mod plot_distribution;
 pub mod plot_history;
 pub mod plot_panels;
 pub mod plot_series;
@@ -194,7 +195,7 @@ fn write_scene(
             at,
             table::state_label(&scene.classical.state)
         );
-        plot::plot_distribution(&scene_dir.join("distribution.png"), &title, &wrap.distribution)?;
+        plot_distribution::plot_distribution(&scene_dir.join("distribution.png"), &title, &wrap.distribution)?;
         let title = format!("{} — wrap diagram, level {}, {}", scene.name, scene.plan.level, at.trim_end_matches(", "));
         plot_wrap::plot_wrap_diagram(
             &scene_dir.join("wrap_diagram.png"),

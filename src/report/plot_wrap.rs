@@ -303,7 +303,7 @@ fn draw_ends(chart: &super::plot::Chart, d: &WrapDiagram) -> Result<(), String> 
 
 #[cfg(test)]
 mod tests {
-    use super::super::plot::steady_distribution;
+    use super::super::plot_distribution::steady_distribution;
     use super::*;
     use crate::wrap::{Sample, Zone};
 

@@ -1,8 +1,7 @@
 //! The `solver` block of summary.json: the increments and events of a wrap model's run in one
-//! serialisable record, whichever model ran (the counters a model does not have are zero).
+//! serialisable record, whichever model ran (the counters a model does not have are zero; each
+//! model's counters convert into it beside their own definition).
 
-use crate::model::level2::stats::Level2Stats;
-use crate::model::level3::Level3Stats;
 use serde::Serialize;
 
 /// Solver tallies of a history run, as summary.json's `solver` block reports them.
@@ -35,35 +34,4 @@ pub struct SolverReport {
     /// Level 3 with the fast solver: increments whose unconstrained (elastic) minimiser met
     /// every Coulomb bound strictly, so that it is the program's solution without clarabel.
     pub elastic_increments: u64,
-}
-
-impl From<&Level2Stats> for SolverReport {
-    fn from(s: &Level2Stats) -> Self {
-        Self {
-            increments: s.increments,
-            gross_slip_increments: s.gross_slip_increments,
-            centrifugal_steps: s.centrifugal_steps,
-            repairs: s.repairs,
-            qp_solved: s.qp_solved,
-            qp_polished: s.qp_polished,
-            qp_almost_solved: s.qp_almost_solved,
-            qp_max_deviation_rel: s.qp_max_deviation_rel,
-            ..Self::default()
-        }
-    }
-}
-
-impl From<&Level3Stats> for SolverReport {
-    fn from(s: &Level3Stats) -> Self {
-        Self {
-            increments: s.increments,
-            node_events: s.pitches_moved,
-            gross_slip_increments: s.gross_slip_increments,
-            qp_solved: s.clarabel.solved,
-            qp_almost_solved: s.clarabel.almost_solved,
-            normal_force_passes: s.fixed_point_passes,
-            elastic_increments: s.elastic_increments,
-            ..Self::default()
-        }
-    }
 }

@@ -8,7 +8,7 @@
 //! the wrap.
 
 use super::envelope::{self, Envelopes};
-use super::profile::Profile;
+use super::profile::{self, Profile};
 use crate::roots::RootStats;
 use crate::wrap::Piece;
 
@@ -100,7 +100,7 @@ pub fn merge(pieces: &mut Vec<Piece>) {
     for i in 0..pieces.len() {
         let p = pieces[i];
         let sliver = p.len_rad() < super::profile::MIN_PIECE_RAD && pieces.len() > 1;
-        if kept > 0 && (sliver || envelope::continues(&pieces[kept - 1], &p)) {
+        if kept > 0 && (sliver || profile::continues(&pieces[kept - 1], &p)) {
             pieces[kept - 1].theta1_rad = p.theta1_rad;
         } else {
             pieces[kept] = p;

@@ -19,7 +19,7 @@
 //! found from the signs at its ends and one bracketed root per line.
 
 use crate::roots::{RootStats, bracketed};
-use crate::wrap::{Piece, Shape};
+use crate::wrap::Piece;
 
 /// One of the four envelope lines.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -255,46 +255,4 @@ fn bound_at(piece: &Piece, env: &Envelopes, theta: f64) -> Bound {
 pub fn strictly_inside(piece: &Piece, env: &Envelopes, theta: f64, side1: bool) -> bool {
     let (lo, hi) = if side1 { (Line::Lower1, Line::Upper1) } else { (Line::Lower2, Line::Upper2) };
     env.gap(piece, lo, theta) > 0.0 && env.gap(piece, hi, theta) < 0.0
-}
-
-/// Whether `b` continues `a` with the same closed form (the same line of a slip zone, the
-/// same constant, or the rope that entered during one linear ramp of the end tension), so
-/// that the two can be one piece with `a`'s closed form.
-pub fn continues(a: &Piece, b: &Piece) -> bool {
-    match (a.shape, b.shape) {
-        (Shape::Entry(x), Shape::Entry(y)) => {
-            // One ramp written with more samples has slopes equal to round-off.
-            let same = |p: f64, q: f64| p == q || (p - q).abs() <= 1e-12 * p.abs().max(q.abs());
-            if !same(x.slope_n_per_s, y.slope_n_per_s) || !same(x.alpha_per_s2, y.alpha_per_s2) {
-                return false;
-            }
-            // y started τ0 seconds after x: the same ramp if its start lies on x's curve.
-            let tau0 = if x.alpha_per_s2 != 0.0 {
-                (y.omega_per_s - x.omega_per_s) / x.alpha_per_s2
-            } else if x.omega_per_s == y.omega_per_s {
-                (y.tension_n - x.tension_n) / x.slope_n_per_s
-            } else {
-                return false;
-            };
-            let close = |p: f64, q: f64, scale: f64| (p - q).abs() <= 1e-12 * scale;
-            let turn = x.omega_per_s * tau0 + 0.5 * x.alpha_per_s2 * tau0 * tau0;
-            close(x.tension_n + x.slope_n_per_s * tau0, y.tension_n, y.tension_n.abs())
-                && close(x.omega_per_s + x.alpha_per_s2 * tau0, y.omega_per_s, y.omega_per_s.abs().max(1e-300))
-                && close(x.theta_a_rad - turn, y.theta_a_rad, 1.0 + y.theta_a_rad.abs())
-        }
-        (
-            Shape::Exp { base_n: b1, amp_n: a1, rate_per_rad: r1 },
-            Shape::Exp { base_n: b2, amp_n: a2, rate_per_rad: r2 },
-        ) => {
-            if b1 != b2 || r1 != r2 {
-                return false;
-            }
-            if r1 == 0.0 {
-                return b1 + a1 == b2 + a2;
-            }
-            let predicted = a1 * (r1 * (b.theta0_rad - a.theta0_rad)).exp();
-            (predicted - a2).abs() <= 1e-14 * a2.abs()
-        }
-        _ => false,
-    }
 }

@@ -1,6 +1,7 @@
 //! What the rigid-lining model did over a run, as typed counters (summary.json's `solver` block
 //! through [`crate::model::history::SolverReport`]).
 
+use crate::model::history::SolverReport;
 use serde::Serialize;
 
 /// Level-2 solver tallies of a run.
@@ -23,4 +24,20 @@ pub struct Level2Stats {
     pub qp_almost_solved: u64,
     /// Largest relative difference between clarabel's optimum and the exact clamp at a knot.
     pub qp_max_deviation_rel: f64,
+}
+
+impl From<&Level2Stats> for SolverReport {
+    fn from(s: &Level2Stats) -> Self {
+        Self {
+            increments: s.increments,
+            gross_slip_increments: s.gross_slip_increments,
+            centrifugal_steps: s.centrifugal_steps,
+            repairs: s.repairs,
+            qp_solved: s.qp_solved,
+            qp_polished: s.qp_polished,
+            qp_almost_solved: s.qp_almost_solved,
+            qp_max_deviation_rel: s.qp_max_deviation_rel,
+            ..Self::default()
+        }
+    }
 }

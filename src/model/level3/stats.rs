@@ -2,6 +2,7 @@
 
 use super::active_set::Termination;
 use super::qp::Verdict;
+use crate::model::history::SolverReport;
 use serde::Serialize;
 
 /// How the active-set (fast) solves of a run ended, one count per [`Termination`].
@@ -104,5 +105,20 @@ impl Level3Stats {
         self.normal_force_passes += o.normal_force_passes;
         self.max_clarabel_solves = self.max_clarabel_solves.max(o.max_clarabel_solves);
         self.fixed_point_passes += o.fixed_point_passes;
+    }
+}
+
+impl From<&Level3Stats> for SolverReport {
+    fn from(s: &Level3Stats) -> Self {
+        Self {
+            increments: s.increments,
+            node_events: s.pitches_moved,
+            gross_slip_increments: s.gross_slip_increments,
+            qp_solved: s.clarabel.solved,
+            qp_almost_solved: s.clarabel.almost_solved,
+            normal_force_passes: s.fixed_point_passes,
+            elastic_increments: s.elastic_increments,
+            ..Self::default()
+        }
     }
 }

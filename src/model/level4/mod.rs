@@ -8,13 +8,14 @@
 //! 1e-3, far below what moves their tensions. The wrap therefore does not feed back into the
 //! suspended ropes, and each side's tension is what its rope column pulls with.
 
+pub mod stop;
+
 use crate::design::{Design, Direction, DutyCycleScene, EmergencyStop, HistorySample, Hoist};
 use crate::dynamics::{
     self, AT_REST_M_S, Checkpoint, DynSample, DynamicsError, HoistParams, Kinematics, MotionProfile, Side, SimOptions,
     Stage,
 };
 use crate::model::braking::{self, BrakeError};
-use crate::model::stop;
 use crate::planner::Level;
 use crate::roots::{self, Holding, RootStats};
 
@@ -161,7 +162,7 @@ fn stages_until(stages: &[Stage], at_s: f64) -> Result<Vec<Stage>, Level4Error> 
 /// The scene's motion profile: the hoist's stages (mirrored when lowering side 1), cut at the
 /// emergency stop and followed by constant braking to rest when the scene has an imposed
 /// deceleration; cut at the trip when the `[brake]` stops it (the stop then follows from the
-/// pulley as a body, [`crate::model::stop`]).
+/// pulley as a body, [`stop`]).
 pub fn motion_profile(hoist: &Hoist, scene: &DutyCycleScene) -> Result<MotionProfile, Level4Error> {
     let stages = trip_stages(hoist, scene.direction, scene.return_after_s);
     if let Some(at_s) = scene.brake_stop_s {

@@ -4,13 +4,13 @@
 //! inertia; the onset of gross slip, after which a trip's results are not valid; and what the
 //! stop reached (deceleration, stopping distance, the slip-limited deceleration).
 
+use super::{ELEMENTS_PER_SIDE, Level4Error, WRAP_SAMPLE_S, profile_until};
 use crate::design::{Brake, Design, Direction, HistorySample, Hoist};
 use crate::dynamics::{
     self, DynSample, DynamicsError, HoistParams, Kinematics, MotionProfile, PulleyBody, SimOptions, Stage,
 };
 use crate::model::braking::{self, StopMasses};
 use crate::model::level0::{EndState, euler_limit};
-use crate::model::level4::{ELEMENTS_PER_SIDE, Level4Error, WRAP_SAMPLE_S, profile_until};
 
 /// The suspended ropes' parameters of `design` with `payload_kg` on conveyance 1, the travel
 /// measured from `x0_m` (lowering from the top: `x0_m` = the travel's end). The lengths at the
