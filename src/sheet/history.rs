@@ -3,7 +3,7 @@
 
 use super::diag::{Collector, join_key};
 use super::raw::RawScene;
-use super::validate::{At, SPEED_MAX_M_S, direction_keyword, foreign_keys};
+use super::rules::{At, SPEED_MAX_M_S, direction_keyword, foreign_keys};
 use crate::design::{Direction, HistorySample, HistoryScene, Rope};
 use std::ops::Range;
 use std::path::Path;

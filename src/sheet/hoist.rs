@@ -3,7 +3,7 @@
 
 use super::diag::{Collector, join_key};
 use super::raw::{RawHoist, RawScene, RawStage};
-use super::validate::{
+use super::rules::{
     At, NON_NEGATIVE, POSITIVE, Rule, checked, direction_keyword, foreign_keys, in_range, optional, required,
 };
 use crate::design::{Direction, DutyCycleScene, EmergencyStop, Hoist, MotionStage};

@@ -3,7 +3,7 @@
 use super::diag::Collector;
 use super::hoist::DEFAULT_TIME_STEP_S;
 use super::raw::RawLoadCases;
-use super::validate::{At, in_range};
+use super::rules::{At, in_range};
 use crate::design::{Direction, LoadCases, Phase};
 use toml::Spanned;
 

@@ -6,7 +6,7 @@
 
 use super::diag::Collector;
 use super::raw::RawScene;
-use super::validate::{At, POSITIVE, checked, foreign_keys};
+use super::rules::{At, POSITIVE, checked, foreign_keys};
 use crate::design::{ElementAt, SceneKind, Tracks};
 use toml::Spanned;
 
