@@ -129,3 +129,11 @@ pub(super) fn foreign_keys(c: &mut Collector, at: At, kind: &str, keys: &[(&str,
     }
     ok
 }
+
+/// Snapshot times in order, each once.
+pub(super) fn sorted_times(times: &[f64]) -> Vec<f64> {
+    let mut v = times.to_vec();
+    v.sort_by(f64::total_cmp);
+    v.dedup();
+    v
+}
