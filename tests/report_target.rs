@@ -199,7 +199,6 @@ fn two_processes_writing_the_same_out_leave_one_whole_report() {
     fs::write(&a, SHEET_A).expect("write");
     fs::write(&b, sheet_b()).expect("write");
     let out = tmp.path().join("out");
-    let exe = common::WRAPCALC;
     // A whole report: the marker, the scenes' folders, the calculation report and workbook, the summaries.
     let whole_a = [MARKER, "a1", "a2", "checks.xlsx", "report.html", "summary.csv", "summary.json"];
     let whole_b = [MARKER, "b1", "checks.xlsx", "report.html", "summary.csv", "summary.json"];
@@ -207,7 +206,7 @@ fn two_processes_writing_the_same_out_leave_one_whole_report() {
         // Each process pauses between moving the old report aside and moving its own in, so
         // that the two meet where an unguarded writer would find the other's half-done swap.
         let spawn = |sheet: &Path| {
-            std::process::Command::new(&exe)
+            std::process::Command::new(common::WRAPCALC)
                 .env("WRAPCALC_SWAP_PAUSE_MS", "300")
                 .arg("run")
                 .arg(sheet)
