@@ -15,7 +15,9 @@
 //!   largest static tension        4·29 430 = 117 720 N                   (≤ 1e5: FAIL)
 //!   largest tension difference    4·(29 430 − 24 525) = 19 620 N        (≤ 2e4: PASS)
 
-use assert_cmd::Command;
+mod common;
+
+use std::ffi::OsStr;
 use wrapcalc::check::design::{
     DIFFERENCE_RATING_CHECK, GUIDE_D_CHECK, MU_CAP_CHECK, PEAK_PRESSURE_CHECK, PRESSURE_CHECK, PULLEY_D_CHECK,
     ROPE_SF_CHECK, TENSION_RATING_CHECK,
@@ -140,7 +142,7 @@ fn check_command_prints_the_design_checks() {
     let dir = tempfile::tempdir().expect("a temporary directory");
     let path = dir.path().join("checks.toml");
     std::fs::write(&path, text(12_000.0, 10_000.0, true, true)).unwrap();
-    let out = Command::cargo_bin("wrapcalc").unwrap().args(["check"]).arg(&path).output().unwrap();
+    let out = common::run_wrapcalc([OsStr::new("check"), path.as_os_str()]);
     assert_eq!(out.status.code(), Some(2));
     let stdout = String::from_utf8_lossy(&out.stdout);
     for needle in ["D/d of the guide sheave", "test clause G", "governing case: scene a at rest", "WARNING"] {
@@ -148,7 +150,7 @@ fn check_command_prints_the_design_checks() {
     }
     let bad = text(12_000.0, 10_000.0, true, true).replace("value = 30.0, source", "value = -1.0, source");
     std::fs::write(&path, bad).unwrap();
-    let out = Command::cargo_bin("wrapcalc").unwrap().args(["check"]).arg(&path).output().unwrap();
+    let out = common::run_wrapcalc([OsStr::new("check"), path.as_os_str()]);
     assert_eq!(out.status.code(), Some(1));
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(stderr.contains("requirements.rope_safety_factor_min") && stderr.contains(":"), "{stderr}");

@@ -10,7 +10,9 @@
 //! 4·8·2·3.316126 = 212.232 kg. Profile: 0.8 m/s² reached in 1 s, held 8 s, back to 0 in 1 s,
 //! 15 s at 7.2 m/s, the same down: 180 m of travel. Brake 300 kN, idle 0.2 s, build-up 0.3 s.
 
-use assert_cmd::Command;
+mod common;
+
+use std::ffi::OsStr;
 use wrapcalc::check::{Check, Verdict};
 use wrapcalc::design::{Design, Phase};
 use wrapcalc::load_cases::{self, CaseResult, MatrixResult, Position};
@@ -267,7 +269,7 @@ fn check_command_shows_the_matrix() {
     let dir = tempfile::tempdir().expect("a temporary directory");
     let path = dir.path().join("matrix.toml");
     std::fs::write(&path, text(false, 180.0)).unwrap();
-    let out = Command::cargo_bin("wrapcalc").unwrap().args(["check"]).arg(&path).output().unwrap();
+    let out = common::run_wrapcalc([OsStr::new("check"), path.as_os_str()]);
     let stdout = String::from_utf8_lossy(&out.stdout);
     for needle in ["Load-case matrix", "emergency", "worst t=", "governing case: payload 0 kg"] {
         assert!(stdout.contains(needle), "{needle} in\n{stdout}");
@@ -277,7 +279,7 @@ fn check_command_shows_the_matrix() {
     let mut no_hoist = text(false, 180.0);
     no_hoist.replace_range(start..end, "");
     std::fs::write(&path, no_hoist).unwrap();
-    let out = Command::cargo_bin("wrapcalc").unwrap().args(["check"]).arg(&path).output().unwrap();
+    let out = common::run_wrapcalc([OsStr::new("check"), path.as_os_str()]);
     assert_eq!(out.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&out.stderr).contains("load_cases"));
 }

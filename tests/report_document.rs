@@ -5,7 +5,8 @@
 //! missing; with WRAPCALC_REQUIRE_EXTERNAL=1 (set by CI) a missing program fails it instead.
 //! Also: the `[document]` title block as the sheet gives it, and its errors.
 
-use assert_cmd::Command;
+mod common;
+
 use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
 
@@ -27,13 +28,7 @@ fn reference_report() -> &'static Path {
     DIR.get_or_init(|| {
         let dir = tempfile::tempdir().expect("temp dir");
         let sheet = Path::new(env!("CARGO_MANIFEST_DIR")).join("tables/guo2020.toml");
-        Command::cargo_bin("wrapcalc")
-            .expect("binary")
-            .args(["run", "--quiet", "--out"])
-            .arg(dir.path().join("r"))
-            .arg(&sheet)
-            .assert()
-            .success();
+        common::wrapcalc().args(["run", "--quiet", "--out"]).arg(dir.path().join("r")).arg(&sheet).assert().success();
         dir
     })
     .path()
@@ -174,21 +169,7 @@ fn workbook_recomputed_by_libreoffice_equals_wrapcalc() {
     assert!(formulas >= 30 && by_hand >= 10, "{formulas} formulas, {by_hand} ratios by hand");
 }
 
-const SHEET: &str = r#"
-[pulley]
-diameter_m = 4.0
-mu = 0.25
-wrap_angle_deg = 180.0
-[rope]
-count = 4
-mass_per_m_kg = 5.0
-ea_n = 1.0e8
-[[scene]]
-name = "a"
-kind = "loads"
-m1_kg = 12000.0
-m2_kg = 10000.0
-"#;
+const SHEET: &str = concat!("\n", common::sheets::base_sheet!());
 
 #[test]
 fn document_section_is_echoed_as_given() {

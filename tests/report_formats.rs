@@ -4,15 +4,15 @@
 //! version as `<version>`, so these snapshots pin names, order and column widths, not results:
 //! the physics is asserted against closed forms elsewhere.
 
-use assert_cmd::Command;
+mod common;
+
 use std::path::Path;
 
 /// Runs the reference sheet on three scenes (steady loads, a load history, a duty cycle) into
 /// a temporary directory; returns the directory and what the terminal showed (piped: plain).
 fn reference_run() -> (tempfile::TempDir, String) {
     let dir = tempfile::tempdir().expect("temp dir");
-    let out = Command::cargo_bin("wrapcalc")
-        .expect("binary")
+    let out = common::wrapcalc()
         .current_dir(env!("CARGO_MANIFEST_DIR"))
         .env("NO_COLOR", "1")
         .args([

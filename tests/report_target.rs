@@ -3,22 +3,16 @@
 //! is refused with exit status 1 and left byte-identical, by every command that writes; two
 //! processes writing the same report leave one whole report.
 
-use assert_cmd::Command;
+mod common;
+
 use std::fs;
 use std::path::{Path, PathBuf};
 use wrapcalc::report::target::{self, Existing, MARKER};
 
-const SHEET_A: &str = r#"title = "report target A"
-[pulley]
-diameter_m = 4.0
-mu = 0.25
-wrap_angle_deg = 180.0
-
-[rope]
-count = 4
-mass_per_m_kg = 5.0
-ea_n = 1.0e8
-
+const SHEET_A: &str = concat!(
+    "title = \"report target A\"\n",
+    common::sheets::base_sections!(),
+    r#"
 [[scene]]
 name = "a1"
 kind = "loads"
@@ -32,16 +26,13 @@ t_s = [0.0, 1.0, 2.0]
 t1_n = [30000.0, 33000.0, 33000.0]
 t2_n = [30000.0, 30000.0, 30000.0]
 output_step_s = 0.01
-"#;
+"#
+);
 
 /// The same hoist with one differently named scene: its report is told apart from A's.
 fn sheet_b() -> String {
     let head = &SHEET_A[..SHEET_A.find("[[scene]]").unwrap_or(0)];
     format!("{head}[[scene]]\nname = \"b1\"\nkind = \"loads\"\nt1_n = 31000.0\nt2_n = 30000.0\nspeed_m_s = 2.0\n")
-}
-
-fn wrapcalc() -> Command {
-    Command::cargo_bin("wrapcalc").expect("binary")
 }
 
 /// Every file under `dir` (recursively) with its bytes, sorted; a directory appears by its path.
@@ -92,7 +83,7 @@ fn inputs(dir: &Path) -> (PathBuf, PathBuf) {
     let sheet = dir.join("hoist.toml");
     fs::write(&sheet, SHEET_A).expect("write sheet");
     let shards = dir.join("shards");
-    wrapcalc()
+    common::wrapcalc()
         .args(["sweep", "--vary", "pulley.mu=0.2:0.3:2", "--scene", "a1", "--shard", "1/1", "--quiet", "--out"])
         .arg(&shards)
         .arg(&sheet)
@@ -106,7 +97,7 @@ fn inputs(dir: &Path) -> (PathBuf, PathBuf) {
 fn assert_refused(root: &Path, sheet: &Path, shard: &Path, out: &Path, reason: &str) {
     for (command, args) in writers(sheet, shard, out) {
         let before = snapshot(root);
-        let output = wrapcalc().args(&args).output().expect("runs");
+        let output = common::wrapcalc().args(&args).output().expect("runs");
         let stderr = String::from_utf8_lossy(&output.stderr);
         assert_eq!(output.status.code(), Some(1), "{command}: status {:?}, stderr:\n{stderr}", output.status);
         for needle in [&out.display().to_string(), "not written, and left as it is", reason, "give --out a new"] {
@@ -145,7 +136,7 @@ fn a_new_an_empty_and_an_earlier_report_directory_are_written() {
     let tmp = tempfile::tempdir().expect("tempdir");
     let sheet = tmp.path().join("hoist.toml");
     fs::write(&sheet, SHEET_A).expect("write sheet");
-    let run = |out: &Path| wrapcalc().arg("run").arg(&sheet).arg("--out").arg(out).arg("--no-plots").output();
+    let run = |out: &Path| common::wrapcalc().arg("run").arg(&sheet).arg("--out").arg(out).arg("--no-plots").output();
     // New: written and marked.
     let out = tmp.path().join("new");
     assert_eq!(run(&out).expect("runs").status.code(), Some(0));
@@ -161,14 +152,18 @@ fn a_new_an_empty_and_an_earlier_report_directory_are_written() {
     assert_eq!(target::check(&empty).expect("check"), Existing::Report);
     // The default reports/<stem>/ relative to the working directory, twice.
     for _ in 0..2 {
-        let o = wrapcalc().current_dir(tmp.path()).args(["run", "hoist.toml", "--no-plots"]).output().expect("runs");
+        let o = common::wrapcalc()
+            .current_dir(tmp.path())
+            .args(["run", "hoist.toml", "--no-plots"])
+            .output()
+            .expect("runs");
         assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
     }
     assert!(tmp.path().join("reports").join("hoist").join(MARKER).is_file());
     // A sweep directory is marked too and takes more files (shards share it).
     let sweep_dir = tmp.path().join("sweep");
     for shard in ["1/2", "2/2"] {
-        wrapcalc()
+        common::wrapcalc()
             .args(["sweep", "--vary", "pulley.mu=0.2:0.3:2", "--scene", "a1", "--quiet", "--shard", shard, "--out"])
             .arg(&sweep_dir)
             .arg(&sheet)
@@ -204,7 +199,6 @@ fn two_processes_writing_the_same_out_leave_one_whole_report() {
     fs::write(&a, SHEET_A).expect("write");
     fs::write(&b, sheet_b()).expect("write");
     let out = tmp.path().join("out");
-    let exe = assert_cmd::cargo::cargo_bin("wrapcalc");
     // A whole report: the marker, the scenes' folders, the calculation report and workbook, the summaries.
     let whole_a = [MARKER, "a1", "a2", "checks.xlsx", "report.html", "summary.csv", "summary.json"];
     let whole_b = [MARKER, "b1", "checks.xlsx", "report.html", "summary.csv", "summary.json"];
@@ -212,7 +206,7 @@ fn two_processes_writing_the_same_out_leave_one_whole_report() {
         // Each process pauses between moving the old report aside and moving its own in, so
         // that the two meet where an unguarded writer would find the other's half-done swap.
         let spawn = |sheet: &Path| {
-            std::process::Command::new(&exe)
+            std::process::Command::new(common::WRAPCALC)
                 .env("WRAPCALC_SWAP_PAUSE_MS", "300")
                 .arg("run")
                 .arg(sheet)

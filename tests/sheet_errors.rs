@@ -1,34 +1,24 @@
 //! Bad input through the real binary: every malformed sheet gives exit status 1, a message
 //! naming the key or file, no panic, and leaves an existing report exactly as it was.
 
-use assert_cmd::Command;
+mod common;
+
+use std::ffi::OsStr;
 use std::fs;
 use std::path::Path;
 
-const VALID: &str = r#"title = "test hoist"
-[pulley]
-diameter_m = 4.0
-mu = 0.25
-wrap_angle_deg = 180.0
-
-[rope]
-count = 4
-mass_per_m_kg = 5.0
-ea_n = 1.0e8
-
-[[scene]]
-name = "a"
-kind = "loads"
-m1_kg = 12000.0
-m2_kg = 10000.0
-
+const VALID: &str = concat!(
+    "title = \"test hoist\"\n",
+    common::sheets::base_sheet!(),
+    r#"
 [[scene]]
 name = "b"
 kind = "loads"
 t1_n = 30000.0
 t2_n = 25000.0
 speed_m_s = 3.0
-"#;
+"#
+);
 
 /// What a case writes as its sheet.
 enum Input {
@@ -361,8 +351,7 @@ fn every_malformed_sheet_fails_cleanly_and_leaves_the_report_untouched() {
         fs::write(out.join(wrapcalc::report::target::MARKER), "wrapcalc report (run)\n").expect("write");
         let before = snapshot(tmp.path());
 
-        let assert =
-            Command::cargo_bin("wrapcalc").expect("binary").arg("run").arg(&sheet).arg("--out").arg(&out).assert();
+        let assert = common::wrapcalc().arg("run").arg(&sheet).arg("--out").arg(&out).assert();
         let output = assert.get_output();
         let stderr = String::from_utf8_lossy(&output.stderr);
         assert_eq!(
@@ -394,7 +383,7 @@ fn all_errors_of_a_sheet_are_reported_at_once_with_their_line() {
     let tmp = tempfile::tempdir().expect("tempdir");
     let sheet = tmp.path().join("test.toml");
     fs::write(&sheet, &text).expect("write");
-    let output = Command::cargo_bin("wrapcalc").expect("binary").arg("check").arg(&sheet).output().expect("runs");
+    let output = common::run_wrapcalc([OsStr::new("check"), sheet.as_os_str()]);
     let stderr = String::from_utf8_lossy(&output.stderr);
     assert_eq!(output.status.code(), Some(1));
     let line_of = |needle: &str| text.lines().position(|l| l.contains(needle)).expect("in sheet") + 1;
@@ -414,15 +403,7 @@ fn unknown_scene_and_unavailable_level_are_errors() {
     fs::write(&sheet, VALID).expect("write");
     let out = tmp.path().join("r");
     let run = |args: &[&str]| {
-        Command::cargo_bin("wrapcalc")
-            .expect("binary")
-            .arg("run")
-            .arg(&sheet)
-            .arg("--out")
-            .arg(&out)
-            .args(args)
-            .output()
-            .expect("runs")
+        common::wrapcalc().arg("run").arg(&sheet).arg("--out").arg(&out).args(args).output().expect("runs")
     };
     let o = run(&["--scene", "nosuch"]);
     assert_eq!(o.status.code(), Some(1));
@@ -442,8 +423,7 @@ fn a_valid_sheet_writes_the_whole_report_and_gross_slip_exits_2() {
     let sheet = tmp.path().join("test.toml");
     fs::write(&sheet, VALID).expect("write");
     let out = tmp.path().join("r");
-    let o = Command::cargo_bin("wrapcalc")
-        .expect("binary")
+    let o = common::wrapcalc()
         .args(["run", "--no-plots", "--quiet"])
         .arg(&sheet)
         .arg("--out")
@@ -457,8 +437,7 @@ fn a_valid_sheet_writes_the_whole_report_and_gross_slip_exits_2() {
     // Gross slip: T1/T2 = 3 > e^{0.25 π} = 2.19 → exit 2 with the report written.
     let slip = VALID.replacen("t1_n = 30000.0", "t1_n = 75000.0", 1);
     fs::write(&sheet, slip).expect("write");
-    let o = Command::cargo_bin("wrapcalc")
-        .expect("binary")
+    let o = common::wrapcalc()
         .args(["run", "--no-plots", "--format", "json"])
         .arg(&sheet)
         .arg("--out")

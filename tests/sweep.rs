@@ -3,7 +3,8 @@
 //! of the sheet with the value set; clear errors for bad specs, values the sheet rejects and
 //! inconsistent shards.
 
-use assert_cmd::Command;
+mod common;
+
 use std::fs;
 use std::path::{Path, PathBuf};
 use wrapcalc::planner::Request;
@@ -15,17 +16,10 @@ use wrapcalc::sweep::{self, Spec, SweepError, merge};
 
 /// Two loads scenes (one at rest, one accelerating at speed) and a short standstill history,
 /// so that levels 1 and 2 both run at every point.
-const SHEET: &str = r#"title = "sweep test hoist"
-[pulley]
-diameter_m = 4.0
-mu = 0.25
-wrap_angle_deg = 180.0
-
-[rope]
-count = 4
-mass_per_m_kg = 5.0
-ea_n = 1.0e8
-
+const SHEET: &str = concat!(
+    "title = \"sweep test hoist\"\n",
+    common::sheets::base_sections!(),
+    r#"
 [[scene]]
 name = "rest"
 kind = "loads"
@@ -48,7 +42,8 @@ t_s = [0.0, 1.0, 2.0]
 t1_n = [25000.0, 29000.0, 29000.0]
 t2_n = [25000.0, 25000.0, 27000.0]
 speed_m_s = [0.0, 0.0, 0.0]
-"#;
+"#
+);
 
 const G_M_S2: f64 = 9.81;
 
@@ -149,15 +144,14 @@ fn shards_and_merge_through_the_binary() {
         a.extend(extra.iter().map(|s| s.to_string()));
         a
     };
-    Command::cargo_bin("wrapcalc").expect("binary").args(args(&[])).assert().success();
+    common::wrapcalc().args(args(&[])).assert().success();
     for k in 1..=3 {
-        Command::cargo_bin("wrapcalc").expect("binary").args(args(&["--shard", &format!("{k}/3")])).assert().success();
+        common::wrapcalc().args(args(&["--shard", &format!("{k}/3")])).assert().success();
     }
     let merged = dir.path().join("merged");
     let shards: Vec<String> =
         (1..=3).map(|k| out.join(format!("sweep-shard-{k}-of-3.csv")).display().to_string()).collect();
-    Command::cargo_bin("wrapcalc")
-        .expect("binary")
+    common::wrapcalc()
         .arg("merge")
         .args(&shards)
         .args(["--out", merged.to_str().unwrap_or(""), "--quiet"])
@@ -169,8 +163,7 @@ fn shards_and_merge_through_the_binary() {
     assert!(fs::metadata(merged.join("sweep.png")).map(|m| m.len() > 10_000).unwrap_or(false), "merged sweep.png");
     // A missing shard is an error, and nothing is written.
     let partial = dir.path().join("partial");
-    let assert = Command::cargo_bin("wrapcalc")
-        .expect("binary")
+    let assert = common::wrapcalc()
         .arg("merge")
         .args(&shards[..2])
         .args(["--out", partial.to_str().unwrap_or("")])
@@ -346,8 +339,7 @@ fn an_out_of_range_sweep_through_the_binary_exits_1_and_writes_nothing() {
     let dir = tempfile::tempdir().expect("temp dir");
     let path = sheet_in(dir.path(), SHEET);
     let out = dir.path().join("out");
-    let assert = Command::cargo_bin("wrapcalc")
-        .expect("binary")
+    let assert = common::wrapcalc()
         .args(["sweep", path.to_str().unwrap_or(""), "--vary", "pulley.mu=0.5:2.5:5", "--out"])
         .arg(&out)
         .assert()
@@ -358,8 +350,7 @@ fn an_out_of_range_sweep_through_the_binary_exits_1_and_writes_nothing() {
     assert!(stderr.contains("0 < μ ≤ 2"), "{stderr}");
     assert!(!stderr.contains("panicked"));
     assert!(!out.exists());
-    let assert = Command::cargo_bin("wrapcalc")
-        .expect("binary")
+    let assert = common::wrapcalc()
         .args(["sweep", path.to_str().unwrap_or(""), "--vary", "pulley.mu=0.2:0.3:2", "--shard", "4/3"])
         .assert()
         .code(1);

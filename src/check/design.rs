@@ -6,7 +6,7 @@
 //! requirement given"; an input it does not give leaves the check "not evaluated".
 
 use super::{Check, Relation, q};
-use crate::design::Design;
+use crate::design::{Design, Limit};
 
 /// A static state (per rope, at rest) and the case it belongs to.
 #[derive(Debug, Clone, PartialEq)]
@@ -50,63 +50,98 @@ fn largest(statics: &[StaticState], key: impl Fn(&StaticState) -> f64) -> Option
     statics.iter().max_by(|a, b| key(a).total_cmp(&key(b)))
 }
 
+/// Why a check that needs the rope's diameter is not evaluated.
+const NO_DIAMETER: &str = "rope.diameter_m is not given";
+/// Why a check over the static states is not evaluated.
+const NO_STATES: &str = "no static state: the sheet has neither [load_cases] nor scenes at rest";
+
+/// The larger end tension of a static state, per rope.
+fn t_hi(s: &StaticState) -> f64 {
+    s.t1_n.max(s.t2_n)
+}
+
 /// Every check beside anti-slip over `statics`; `peak`: the largest n(θ) of the wrap models (a
 /// run's distributions), else taken as the larger end tension at rest (exact for the string on a
 /// rigid lining, where n = T − m'v² ≤ T_hi).
 pub fn design_checks(design: &Design, statics: &[StaticState], peak: Option<PeakContact>) -> Vec<Check> {
     let req = &design.requirements;
-    let n = f64::from(design.rope.count);
-    let d_pulley = design.pulley.diameter_m;
-    let rope_d = design.rope.diameter_m;
-    let no_diameter = "rope.diameter_m is not given";
-    let no_states = "no static state: the sheet has neither [load_cases] nor scenes at rest";
-    let t_hi = |s: &StaticState| s.t1_n.max(s.t2_n);
-    let mut checks = Vec::new();
+    let mut checks = vec![rope_safety_factor(design, statics)];
+    checks.push(ratio_check(design, PULLEY_D_CHECK, design.pulley.diameter_m, req.pulley_d_ratio_min.as_ref()));
+    if let Some(g) = design.machine.guide {
+        checks.push(ratio_check(design, GUIDE_D_CHECK, g.diameter_m, req.guide_d_ratio_min.as_ref()));
+    }
+    checks.push(specific_pressure(design, statics));
+    checks.push(peak_pressure(design, statics, peak));
+    // The design cap on μ: a warning above it, not a failure.
+    checks.push(
+        Check::new(MU_CAP_CHECK, "μ ≤ μ_cap (a warning above it)", Some(design.pulley.mu), "")
+            .inputs(vec![q("μ", design.pulley.mu, "")])
+            .against(Relation::AtMost, req.mu_design_max.as_ref(), false),
+    );
+    checks.push(rating(
+        design,
+        statics,
+        (TENSION_RATING_CHECK, "n·max(T1, T2), static"),
+        &|s| s.t1_n.max(s.t2_n),
+        req.static_tension_max_n.as_ref(),
+    ));
+    checks.push(rating(
+        design,
+        statics,
+        (DIFFERENCE_RATING_CHECK, "n·|T1 − T2|, static"),
+        &|s| (s.t1_n - s.t2_n).abs(),
+        req.static_tension_difference_max_n.as_ref(),
+    ));
+    checks
+}
 
-    // Rope safety factor n·F_min / (n·T_max).
+/// Rope safety factor n·F_min / (n·T_max).
+fn rope_safety_factor(design: &Design, statics: &[StaticState]) -> Check {
+    let n = f64::from(design.rope.count);
     let c = Check::new(
         ROPE_SF_CHECK,
         "n·F_min / max(n·T_s): minimum breaking force of the rope set over its largest static load, hanging ropes included",
         None,
         "",
     );
-    checks.push(match (design.rope.min_breaking_force_n, largest(statics, t_hi)) {
+    match (design.rope.min_breaking_force_n, largest(statics, t_hi)) {
         (None, _) => c.not_evaluated("rope.min_breaking_force_n is not given"),
-        (_, None) => c.not_evaluated(no_states),
+        (_, None) => c.not_evaluated(NO_STATES),
         (Some(f), Some(s)) => Check { value: Some(f / t_hi(s)), ..c }
             .inputs(vec![q("n", n, ""), q("F_min (one rope)", f, "N"), q("T_s,max (per rope)", t_hi(s), "N")])
             .intermediates(vec![q("n·F_min", n * f, "N"), q("n·T_s,max", n * t_hi(s), "N")])
             .governed_by(s.case.clone())
-            .against(Relation::AtLeast, req.rope_safety_factor_min.as_ref(), true),
-    });
-
-    // D/d of the pulleys.
-    let ratio_check = |name: &'static str, d_sheave: f64, limit| {
-        let c = Check::new(name, "D/d: sheave diameter over rope diameter", None, "");
-        match rope_d {
-            None => c.not_evaluated(no_diameter),
-            Some(d) => Check { value: Some(d_sheave / d), ..c }
-                .inputs(vec![q("D", d_sheave, "m"), q("d", d, "m")])
-                .against(Relation::AtLeast, limit, true),
-        }
-    };
-    checks.push(ratio_check(PULLEY_D_CHECK, d_pulley, req.pulley_d_ratio_min.as_ref()));
-    if let Some(g) = design.machine.guide {
-        checks.push(ratio_check(GUIDE_D_CHECK, g.diameter_m, req.guide_d_ratio_min.as_ref()));
+            .against(Relation::AtLeast, design.requirements.rope_safety_factor_min.as_ref(), true),
     }
+}
 
-    // Specific pressure (T1 + T2)/(D·d), the classical mean, at the largest static T1 + T2.
+/// D/d of a sheave of diameter `d_sheave`.
+fn ratio_check(design: &Design, name: &'static str, d_sheave: f64, limit: Option<&Limit>) -> Check {
+    let c = Check::new(name, "D/d: sheave diameter over rope diameter", None, "");
+    match design.rope.diameter_m {
+        None => c.not_evaluated(NO_DIAMETER),
+        Some(d) => Check { value: Some(d_sheave / d), ..c }
+            .inputs(vec![q("D", d_sheave, "m"), q("d", d, "m")])
+            .against(Relation::AtLeast, limit, true),
+    }
+}
+
+/// Specific pressure (T1 + T2)/(D·d), the classical mean, at the largest static T1 + T2.
+fn specific_pressure(design: &Design, statics: &[StaticState]) -> Check {
+    let d_pulley = design.pulley.diameter_m;
     let c = Check::new(PRESSURE_CHECK, "p = (T1 + T2)/(D·d) per rope, static tensions", None, "Pa");
-    checks.push(match (rope_d, largest(statics, |s| s.t1_n + s.t2_n)) {
-        (None, _) => c.not_evaluated(no_diameter),
-        (_, None) => c.not_evaluated(no_states),
+    match (design.rope.diameter_m, largest(statics, |s| s.t1_n + s.t2_n)) {
+        (None, _) => c.not_evaluated(NO_DIAMETER),
+        (_, None) => c.not_evaluated(NO_STATES),
         (Some(d), Some(s)) => Check { value: Some((s.t1_n + s.t2_n) / (d_pulley * d)), ..c }
             .inputs(vec![q("T1", s.t1_n, "N"), q("T2", s.t2_n, "N"), q("D", d_pulley, "m"), q("d", d, "m")])
             .governed_by(s.case.clone())
-            .against(Relation::AtMost, req.lining_pressure_max_pa.as_ref(), true),
-    });
+            .against(Relation::AtMost, design.requirements.lining_pressure_max_pa.as_ref(), true),
+    }
+}
 
-    // Local peak n(θ)/(R·d).
+/// Local peak n(θ)/(R·d); without the wrap models' peak, n ≤ T_hi at rest.
+fn peak_pressure(design: &Design, statics: &[StaticState], peak: Option<PeakContact>) -> Check {
     let c = Check::new(
         PEAK_PRESSURE_CHECK,
         "p_peak = max n(θ)/(R·d): largest contact force per radian over the wrap",
@@ -117,47 +152,34 @@ pub fn design_checks(design: &Design, statics: &[StaticState], peak: Option<Peak
         largest(statics, t_hi)
             .map(|s| PeakContact { case: format!("{} (n ≤ T_hi at rest)", s.case), normal_n_per_rad: t_hi(s) })
     });
-    checks.push(match (rope_d, peak) {
-        (None, _) => c.not_evaluated(no_diameter),
-        (_, None) => c.not_evaluated(no_states),
+    match (design.rope.diameter_m, peak) {
+        (None, _) => c.not_evaluated(NO_DIAMETER),
+        (_, None) => c.not_evaluated(NO_STATES),
         (Some(d), Some(p)) => {
-            let r = 0.5 * d_pulley;
+            let r = 0.5 * design.pulley.diameter_m;
             Check { value: Some(p.normal_n_per_rad / (r * d)), ..c }
                 .inputs(vec![q("n_max", p.normal_n_per_rad, "N/rad"), q("R", r, "m"), q("d", d, "m")])
                 .governed_by(p.case)
-                .against(Relation::AtMost, req.lining_peak_pressure_max_pa.as_ref(), true)
+                .against(Relation::AtMost, design.requirements.lining_peak_pressure_max_pa.as_ref(), true)
         }
-    });
+    }
+}
 
-    // The design cap on μ: a warning above it, not a failure.
-    checks.push(
-        Check::new(MU_CAP_CHECK, "μ ≤ μ_cap (a warning above it)", Some(design.pulley.mu), "")
-            .inputs(vec![q("μ", design.pulley.mu, "")])
-            .against(Relation::AtMost, req.mu_design_max.as_ref(), false),
-    );
-
-    // Machine ratings: all ropes together.
-    let rating = |name: &'static str, formula: &'static str, key: &dyn Fn(&StaticState) -> f64, limit| {
-        let c = Check::new(name, formula, None, "N");
-        match statics.iter().max_by(|a, b| key(a).total_cmp(&key(b))) {
-            None => c.not_evaluated(no_states),
-            Some(s) => Check { value: Some(n * key(s)), ..c }
-                .inputs(vec![q("n", n, ""), q("T1", s.t1_n, "N"), q("T2", s.t2_n, "N")])
-                .governed_by(s.case.clone())
-                .against(Relation::AtMost, limit, true),
-        }
-    };
-    checks.push(rating(
-        TENSION_RATING_CHECK,
-        "n·max(T1, T2), static",
-        &|s| s.t1_n.max(s.t2_n),
-        req.static_tension_max_n.as_ref(),
-    ));
-    checks.push(rating(
-        DIFFERENCE_RATING_CHECK,
-        "n·|T1 − T2|, static",
-        &|s| (s.t1_n - s.t2_n).abs(),
-        req.static_tension_difference_max_n.as_ref(),
-    ));
-    checks
+/// A machine rating: all ropes together, n·key at the static state with the largest `key`.
+fn rating(
+    design: &Design,
+    statics: &[StaticState],
+    (name, formula): (&'static str, &'static str),
+    key: &dyn Fn(&StaticState) -> f64,
+    limit: Option<&Limit>,
+) -> Check {
+    let n = f64::from(design.rope.count);
+    let c = Check::new(name, formula, None, "N");
+    match statics.iter().max_by(|a, b| key(a).total_cmp(&key(b))) {
+        None => c.not_evaluated(NO_STATES),
+        Some(s) => Check { value: Some(n * key(s)), ..c }
+            .inputs(vec![q("n", n, ""), q("T1", s.t1_n, "N"), q("T2", s.t2_n, "N")])
+            .governed_by(s.case.clone())
+            .against(Relation::AtMost, limit, true),
+    }
 }

@@ -155,44 +155,10 @@ pub fn simulate_resumable(
     from: Option<&Checkpoint>,
     keep_at_s: Option<f64>,
 ) -> Result<(Vec<DynSample>, Option<Checkpoint>), DynamicsError> {
-    p.validate()?;
-    let dt = opt.dt_s;
-    if !(dt.is_finite() && dt > 0.0) {
-        return Err(DynamicsError::TimeStep { dt_s: dt });
-    }
-    let n = opt.elements;
-    if n == 0 {
-        return Err(DynamicsError::NoElements);
-    }
-    for (k, off) in opt.initial_offset_m.iter().enumerate() {
-        super::finite(if k == 0 { "initial_offset_m[0]" } else { "initial_offset_m[1]" }, *off)?;
-    }
-    // Lengths at the extremes of x (exact, between the steps too).
-    for t in profile.x_extreme_times() {
-        let x = profile.at(t).x_m;
-        for side in Side::BOTH {
-            p.side_at(side, x, Some(t))?;
-        }
-    }
-    let total_s = profile.duration_s();
-    let steps_f = (total_s / dt).ceil();
-    if steps_f > MAX_STEPS as f64 {
-        return Err(DynamicsError::TooManySteps { steps: steps_f, limit: MAX_STEPS });
-    }
-    let steps = steps_f as usize;
+    let steps = step_count(p, profile, opt)?;
+    let (dt, n, total_s) = (opt.dt_s, opt.elements, profile.duration_s());
     let every = opt.record_every.max(1);
-
-    let k0 = profile.at(0.0);
-    let mut sides: Vec<Side2> = Vec::with_capacity(2);
-    for (k, side) in Side::BOTH.into_iter().enumerate() {
-        // equilibrium under the loads at rest, then the loads of t = 0 (a step stage may start
-        // with a non-zero acceleration)
-        let rest = coeffs(p, side, n, 0.0, 0.0, 0.0)?;
-        let mut state = SideState::at_equilibrium(&rest, n);
-        let c = coeffs(p, side, n, 0.0, k0.x_m, k0.accel_m_s2)?;
-        state.displace(&c, opt.initial_offset_m[k]);
-        sides.push(Side2 { side, state, coeffs: c });
-    }
+    let mut sides = initial_sides(p, profile, opt)?;
     let sample = |t_s: f64, k: super::Kinematics, sides: &[Side2], work_j: f64, dissipated_j: f64| {
         sample_of(p, t_s, k, sides, work_j, dissipated_j)
     };
@@ -205,22 +171,7 @@ pub fn simulate_resumable(
     }
     let mut out = Vec::with_capacity((steps + 1 - first_step) / every + 2);
     out.push(sample(t_prev, profile.at(t_prev), &sides, work_j, dissipated_j));
-    // The step a checkpoint is kept at: the last one strictly before `keep_at_s` (at that instant
-    // a stage that steps in may already act).
-    // A time at or beyond the end keeps the final state.
-    let keep_step = keep_at_s.filter(|t| !t.is_nan() && *t > 0.0).map(|t| {
-        if t >= total_s {
-            return steps;
-        }
-        let mut k = ((t / dt).ceil() as usize).saturating_sub(1);
-        while k > 0 && k as f64 * dt >= t {
-            k -= 1;
-        }
-        while ((k + 1) as f64 * dt) < t {
-            k += 1;
-        }
-        k
-    });
+    let keep_step = keep_at_s.and_then(|t| keep_step(t, total_s, dt, steps));
     let checkpoint = |step: usize, t_s: f64, sides: &[Side2], work_j: f64, dissipated_j: f64| Checkpoint {
         step,
         t_s,
@@ -252,6 +203,68 @@ pub fn simulate_resumable(
     }
     crate::tally::add_increments((steps + 1 - first_step) as u64);
     Ok((out, kept))
+}
+
+/// Checks the parameters, the time step, the mesh, the initial offsets and the rope lengths at
+/// the extremes of the travel (exact, between the steps too), and returns the number of steps.
+fn step_count(p: &HoistParams, profile: &MotionProfile, opt: &SimOptions) -> Result<usize, DynamicsError> {
+    p.validate()?;
+    let dt = opt.dt_s;
+    if !(dt.is_finite() && dt > 0.0) {
+        return Err(DynamicsError::TimeStep { dt_s: dt });
+    }
+    if opt.elements == 0 {
+        return Err(DynamicsError::NoElements);
+    }
+    for (k, off) in opt.initial_offset_m.iter().enumerate() {
+        super::finite(if k == 0 { "initial_offset_m[0]" } else { "initial_offset_m[1]" }, *off)?;
+    }
+    for t in profile.x_extreme_times() {
+        let x = profile.at(t).x_m;
+        for side in Side::BOTH {
+            p.side_at(side, x, Some(t))?;
+        }
+    }
+    let steps_f = (profile.duration_s() / dt).ceil();
+    if steps_f > MAX_STEPS as f64 {
+        return Err(DynamicsError::TooManySteps { steps: steps_f, limit: MAX_STEPS });
+    }
+    Ok(steps_f as usize)
+}
+
+/// Both sides at t = 0: in equilibrium under the loads at rest, then under the loads of t = 0 (a
+/// step stage may start with a non-zero acceleration), displaced by the initial offsets.
+fn initial_sides(p: &HoistParams, profile: &MotionProfile, opt: &SimOptions) -> Result<Vec<Side2>, DynamicsError> {
+    let n = opt.elements;
+    let k0 = profile.at(0.0);
+    let mut sides: Vec<Side2> = Vec::with_capacity(2);
+    for (k, side) in Side::BOTH.into_iter().enumerate() {
+        let rest = coeffs(p, side, n, 0.0, 0.0, 0.0)?;
+        let mut state = SideState::at_equilibrium(&rest, n);
+        let c = coeffs(p, side, n, 0.0, k0.x_m, k0.accel_m_s2)?;
+        state.displace(&c, opt.initial_offset_m[k]);
+        sides.push(Side2 { side, state, coeffs: c });
+    }
+    Ok(sides)
+}
+
+/// The step a checkpoint is kept at: the last one strictly before `keep_at_s` (at that instant
+/// a stage that steps in may already act); a time at or beyond the end keeps the final state.
+fn keep_step(keep_at_s: f64, total_s: f64, dt: f64, steps: usize) -> Option<usize> {
+    if keep_at_s.is_nan() || keep_at_s <= 0.0 {
+        return None;
+    }
+    if keep_at_s >= total_s {
+        return Some(steps);
+    }
+    let mut k = ((keep_at_s / dt).ceil() as usize).saturating_sub(1);
+    while k > 0 && k as f64 * dt >= keep_at_s {
+        k -= 1;
+    }
+    while ((k + 1) as f64 * dt) < keep_at_s {
+        k += 1;
+    }
+    Some(k)
 }
 
 /// The recorded sample of the sides' state at `t_s` with the pulley's kinematics `k`.

@@ -4,7 +4,7 @@
 use crate::check::{Check, Quantity, Verdict};
 use crate::margins::{Margin, Margins};
 use crate::model::level0::{DYNAMIC_CHECK, EndState};
-use crate::run::RunResult;
+use crate::run::{RunResult, SceneResult};
 use std::fmt::Write;
 
 /// Colour only when the output is a terminal and `NO_COLOR` is unset (decided by the caller).
@@ -76,6 +76,35 @@ pub fn render(title: &str, sheet: &str, run: &RunResult, style: Style) -> String
         if title.is_empty() { String::new() } else { format!(": {title}") }
     );
     let _ = writeln!(out);
+    summary_table(&mut out, run, style);
+    let _ = writeln!(out);
+    let _ = writeln!(
+        out,
+        "σ_d: the code's dynamic safety factor (rigid ropes, T = m(g ± a)/n); σ_ropes: with the suspended ropes' dynamics (level 4)."
+    );
+    let _ = writeln!(out, "Checks (per rope; σ = ∞ when T1 = T2):");
+    for s in &run.scenes {
+        scene_checks(&mut out, s, style);
+    }
+    if let Some(d) = &run.design {
+        if let Some(m) = &d.matrix {
+            super::matrix::render_matrix(&mut out, m, style);
+        }
+        super::matrix::render_design_checks(&mut out, d, style);
+    }
+    let _ = writeln!(
+        out,
+        "\n{} — {} scene(s) in {:.2} ms",
+        if run.all_checks_pass() { "all checks pass" } else { "SOME CHECKS FAIL" },
+        run.scenes.len(),
+        run.runtime_ms
+    );
+    out
+}
+
+/// The summary table: one row per scene with its end tensions, ratios, safety factors, arcs,
+/// JDP and verdict.
+fn summary_table(out: &mut String, run: &RunResult, style: Style) {
     let name_w = run.scenes.iter().map(|s| s.name.len()).max().unwrap_or(5).max(5);
     let _ = writeln!(
         out,
@@ -118,51 +147,27 @@ pub fn render(title: &str, sheet: &str, run: &RunResult, style: Style) -> String
             },
         );
     }
-    let _ = writeln!(out);
-    let _ = writeln!(
-        out,
-        "σ_d: the code's dynamic safety factor (rigid ropes, T = m(g ± a)/n); σ_ropes: with the suspended ropes' dynamics (level 4)."
-    );
-    let _ = writeln!(out, "Checks (per rope; σ = ∞ when T1 = T2):");
-    for s in &run.scenes {
+}
+
+/// One scene's checks, margins and creep-theory fit, under a heading naming its state and level.
+fn scene_checks(out: &mut String, s: &SceneResult, style: Style) {
+    let _ =
+        writeln!(out, "\n[{}] {} — level {}: {}", s.name, state_label(&s.classical.state), s.plan.level, s.plan.reason);
+    for check in &s.classical.checks {
+        render_check(out, check, style);
+    }
+    if let Some(m) = &s.margins {
+        render_margins(out, m);
+    }
+    if let Some(f) = s.fit.as_ref().filter(|f| f.note.is_some()) {
+        let _ = writeln!(out, "  creep-theory fit: {}", f.note.as_deref().unwrap_or_default());
+    } else if let Some(f) = &s.fit {
         let _ = writeln!(
             out,
-            "\n[{}] {} — level {}: {}",
-            s.name,
-            state_label(&s.classical.state),
-            s.plan.level,
-            s.plan.reason
+            "  creep-theory fit: active arc β = {:.3}° ({} friction, entry at {}), T_idle = {:.1} N, RMS residual {:.1} N = {:.2e} of the tension range",
+            f.active_arc_deg, f.friction, f.entry, f.idle_tension_n, f.rms_residual_n, f.rms_residual_rel
         );
-        for check in &s.classical.checks {
-            render_check(&mut out, check, style);
-        }
-        if let Some(m) = &s.margins {
-            render_margins(&mut out, m);
-        }
-        if let Some(f) = s.fit.as_ref().filter(|f| f.note.is_some()) {
-            let _ = writeln!(out, "  creep-theory fit: {}", f.note.as_deref().unwrap_or_default());
-        } else if let Some(f) = &s.fit {
-            let _ = writeln!(
-                out,
-                "  creep-theory fit: active arc β = {:.3}° ({} friction, entry at {}), T_idle = {:.1} N, RMS residual {:.1} N = {:.2e} of the tension range",
-                f.active_arc_deg, f.friction, f.entry, f.idle_tension_n, f.rms_residual_n, f.rms_residual_rel
-            );
-        }
     }
-    if let Some(d) = &run.design {
-        if let Some(m) = &d.matrix {
-            super::matrix::render_matrix(&mut out, m, style);
-        }
-        super::matrix::render_design_checks(&mut out, d, style);
-    }
-    let _ = writeln!(
-        out,
-        "\n{} — {} scene(s) in {:.2} ms",
-        if run.all_checks_pass() { "all checks pass" } else { "SOME CHECKS FAIL" },
-        run.scenes.len(),
-        run.runtime_ms
-    );
-    out
 }
 
 /// One check: value, relation, limit and verdict, then its formula, inputs, intermediate values,

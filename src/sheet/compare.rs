@@ -4,7 +4,7 @@
 
 use super::diag::{Collector, join_key};
 use super::raw::RawCompare;
-use super::validate::valid_scene_name;
+use super::rules::valid_scene_name;
 use crate::design::{Compare, CompareQuantity, Scene, SceneKind, compare_columns};
 use toml::Spanned;
 

@@ -3,7 +3,7 @@
 
 use super::diag::{Collector, join_key};
 use super::raw::RawScene;
-use super::validate::{At, SPEED_MAX_M_S, direction_keyword, foreign_keys};
+use super::rules::{At, SPEED_MAX_M_S, direction_keyword, foreign_keys, sorted_times};
 use crate::design::{Direction, HistorySample, HistoryScene, Rope};
 use std::ops::Range;
 use std::path::Path;
@@ -12,6 +12,9 @@ use toml::Spanned;
 /// Most samples a history may have.
 pub const MAX_SAMPLES: usize = 10_000_000;
 
+/// A history scene: its samples (inline arrays or a CSV file, checked sample by sample), the
+/// snapshot times within it, its direction (given, or from the sign of the first nonzero speed)
+/// and its output step.
 pub(super) fn history(
     c: &mut Collector,
     scene: Option<&str>,
@@ -21,36 +24,8 @@ pub(super) fn history(
     rope: Option<&Rope>,
 ) -> Option<HistoryScene> {
     let at = At { scene, section: label, table_span };
-    let foreign_ok = foreign_keys(
-        c,
-        at,
-        "history",
-        &[
-            ("m1_kg", raw.m1_kg.as_ref().map(|v| v.span())),
-            ("m2_kg", raw.m2_kg.as_ref().map(|v| v.span())),
-            ("accel_m_s2", raw.accel_m_s2.as_ref().map(|v| v.span())),
-            ("payload_kg", raw.payload_kg.as_ref().map(|v| v.span())),
-            ("emergency_stop_s", raw.emergency_stop_s.as_ref().map(|v| v.span())),
-            ("emergency_decel_m_s2", raw.emergency_decel_m_s2.as_ref().map(|v| v.span())),
-            ("time_step_s", raw.time_step_s.as_ref().map(|v| v.span())),
-            ("return_after_s", raw.return_after_s.as_ref().map(|v| v.span())),
-        ],
-    );
-    let inline = raw.t_s.is_some() || raw.t1_n.is_some() || raw.t2_n.is_some() || raw.speed_m_s.is_some();
-    let samples = match (&raw.csv, inline) {
-        (Some(csv), true) => {
-            c.push(
-                Some(csv.span()),
-                scene,
-                &at.key("csv"),
-                "give either csv or the arrays t_s, t1_n, t2_n, speed_m_s, not both",
-            );
-            None
-        }
-        (Some(csv), false) => from_csv(c, at, csv),
-        (None, _) => from_arrays(c, at, raw),
-    };
-    let samples = samples?;
+    let foreign_ok = history_foreign_keys(c, at, raw);
+    let samples = samples(c, at, raw)?;
     let mut ok = foreign_ok && check_samples(c, at, &samples, rope, raw.csv.as_ref().map(|v| v.span()));
     let (t0, t1) = (samples[0].t_s, samples[samples.len() - 1].t_s);
     let snapshots_s = match &raw.snapshots_s {
@@ -65,10 +40,7 @@ pub(super) fn history(
                 );
                 ok = false;
             }
-            let mut v = s.get_ref().clone();
-            v.sort_by(f64::total_cmp);
-            v.dedup();
-            v
+            sorted_times(s.get_ref())
         }
     };
     let direction = match &raw.direction {
@@ -81,26 +53,67 @@ pub(super) fn history(
             Direction::Lift
         }),
     };
-    let output_step_s = match &raw.output_step_s {
-        None => None,
-        Some(v) => {
-            let step = *v.get_ref();
-            let span = t1 - t0;
-            if step.is_finite() && step > 0.0 && span / step <= 1e6 {
-                Some(step)
-            } else {
-                c.push(
-                    Some(v.span()),
-                    scene,
-                    &at.key("output_step_s"),
-                    format!("expected a step > 0 s giving at most 1e6 rows over the {span} s history"),
-                );
-                ok = false;
-                None
-            }
+    let output_step_s = output_step(c, at, raw, t1 - t0);
+    ok &= output_step_s.is_some();
+    ok.then_some(HistoryScene { samples, snapshots_s, direction, output_step_s: output_step_s.flatten() })
+}
+
+/// Rejects the keys of loads and duty-cycle scenes in a history scene; `false` when any is there.
+fn history_foreign_keys(c: &mut Collector, at: At, raw: &RawScene) -> bool {
+    foreign_keys(
+        c,
+        at,
+        "history",
+        &[
+            ("m1_kg", raw.m1_kg.as_ref().map(|v| v.span())),
+            ("m2_kg", raw.m2_kg.as_ref().map(|v| v.span())),
+            ("accel_m_s2", raw.accel_m_s2.as_ref().map(|v| v.span())),
+            ("payload_kg", raw.payload_kg.as_ref().map(|v| v.span())),
+            ("emergency_stop_s", raw.emergency_stop_s.as_ref().map(|v| v.span())),
+            ("emergency_decel_m_s2", raw.emergency_decel_m_s2.as_ref().map(|v| v.span())),
+            ("time_step_s", raw.time_step_s.as_ref().map(|v| v.span())),
+            ("return_after_s", raw.return_after_s.as_ref().map(|v| v.span())),
+        ],
+    )
+}
+
+/// The samples, read from the CSV file or the inline arrays (one or the other).
+fn samples(c: &mut Collector, at: At, raw: &RawScene) -> Option<Vec<HistorySample>> {
+    let inline = raw.t_s.is_some() || raw.t1_n.is_some() || raw.t2_n.is_some() || raw.speed_m_s.is_some();
+    match (&raw.csv, inline) {
+        (Some(csv), true) => {
+            c.push(
+                Some(csv.span()),
+                at.scene,
+                &at.key("csv"),
+                "give either csv or the arrays t_s, t1_n, t2_n, speed_m_s, not both",
+            );
+            None
         }
+        (Some(csv), false) => from_csv(c, at, csv),
+        (None, _) => from_arrays(c, at, raw),
+    }
+}
+
+/// The output step over a history of `span_s` seconds: `Some(None)` when not given, `None` when
+/// it is not > 0 or gives more than 1e6 rows.
+fn output_step(c: &mut Collector, at: At, raw: &RawScene, span_s: f64) -> Option<Option<f64>> {
+    let v = match &raw.output_step_s {
+        None => return Some(None),
+        Some(v) => v,
     };
-    ok.then_some(HistoryScene { samples, snapshots_s, direction, output_step_s })
+    let step = *v.get_ref();
+    if step.is_finite() && step > 0.0 && span_s / step <= 1e6 {
+        Some(Some(step))
+    } else {
+        c.push(
+            Some(v.span()),
+            at.scene,
+            &at.key("output_step_s"),
+            format!("expected a step > 0 s giving at most 1e6 rows over the {span_s} s history"),
+        );
+        None
+    }
 }
 
 /// Numbers of an inline array key.

@@ -3,8 +3,9 @@
 
 use super::diag::{Collector, join_key};
 use super::raw::{RawHoist, RawScene, RawStage};
-use super::validate::{
+use super::rules::{
     At, NON_NEGATIVE, POSITIVE, Rule, checked, direction_keyword, foreign_keys, in_range, optional, required,
+    sorted_times,
 };
 use crate::design::{Direction, DutyCycleScene, EmergencyStop, Hoist, MotionStage};
 use crate::model::level4;
@@ -135,65 +136,13 @@ pub(super) fn duty_cycle(
     hoist: Option<&Hoist>,
     brake: bool,
 ) -> Option<DutyCycleScene> {
-    let span_of = |v: &Option<Spanned<toml::Value>>| v.as_ref().map(|v| v.span());
-    let foreign_ok = foreign_keys(
-        c,
-        at,
-        "duty-cycle",
-        &[
-            ("m1_kg", raw.m1_kg.as_ref().map(|v| v.span())),
-            ("m2_kg", raw.m2_kg.as_ref().map(|v| v.span())),
-            ("t1_n", span_of(&raw.t1_n)),
-            ("t2_n", span_of(&raw.t2_n)),
-            ("speed_m_s", span_of(&raw.speed_m_s)),
-            ("accel_m_s2", raw.accel_m_s2.as_ref().map(|v| v.span())),
-            ("t_s", raw.t_s.as_ref().map(|v| v.span())),
-            ("csv", raw.csv.as_ref().map(|v| v.span())),
-        ],
-    );
+    let foreign_ok = duty_cycle_foreign_keys(c, at, raw);
     let payload_kg = optional(c, at, "payload_kg", &raw.payload_kg, NON_NEGATIVE, 0.0);
     let direction = match &raw.direction {
         None => Some(Direction::Lift),
         Some(d) => direction_keyword(c, at, d),
     };
-    let mut brake_stop_s = Some(None);
-    let emergency = match (&raw.emergency_stop_s, &raw.emergency_decel_m_s2) {
-        (None, None) => Some(None),
-        (Some(t), None) if brake => {
-            brake_stop_s = checked(c, at, "emergency_stop_s", t, NON_NEGATIVE).map(Some);
-            Some(None)
-        }
-        (Some(t), Some(d)) => {
-            let at_s = checked(c, at, "emergency_stop_s", t, NON_NEGATIVE);
-            let decel = in_range(
-                c,
-                at,
-                "emergency_decel_m_s2",
-                d,
-                |d| d > 0.0 && d <= 9.81,
-                "a deceleration 0 < d ≤ 9.81 m/s²",
-            );
-            at_s.zip(decel).map(|(at_s, decel_m_s2)| Some(EmergencyStop { at_s, decel_m_s2 }))
-        }
-        (Some(t), None) => {
-            c.push(
-                Some(t.span()),
-                at.scene,
-                &at.key("emergency_decel_m_s2"),
-                "missing; an emergency stop needs emergency_decel_m_s2 (an imposed deceleration, m/s² > 0), or a [brake] section that stops the pulley",
-            );
-            None
-        }
-        (None, Some(d)) => {
-            c.push(
-                Some(d.span()),
-                at.scene,
-                &at.key("emergency_stop_s"),
-                "missing; emergency braking needs both emergency_stop_s (s) and emergency_decel_m_s2",
-            );
-            None
-        }
-    };
+    let (emergency, brake_stop_s) = emergency(c, at, raw, brake);
     let return_after_s = match &raw.return_after_s {
         None => Some(None),
         Some(v) => checked(c, at, "return_after_s", v, NON_NEGATIVE).map(Some),
@@ -203,19 +152,7 @@ pub(super) fn duty_cycle(
         None => Some(DEFAULT_TIME_STEP_S),
         Some(v) => in_range(c, at, "time_step_s", v, |d| d > 0.0 && d <= 0.1, "an integration step 0 < dt ≤ 0.1 s"),
     };
-    let snapshots_s = match &raw.snapshots_s {
-        None => Some(Vec::new()),
-        Some(s) if s.get_ref().iter().all(|t| t.is_finite() && *t >= 0.0) => {
-            let mut v = s.get_ref().clone();
-            v.sort_by(f64::total_cmp);
-            v.dedup();
-            Some(v)
-        }
-        Some(s) => {
-            c.push(Some(s.span()), at.scene, &join_key(at.section, "snapshots_s"), "expected times ≥ 0 s");
-            None
-        }
-    };
+    let snapshots_s = snapshot_times(c, at, raw);
     let hoist = hoist?;
     if let (Some(Some(stop)), Some(t)) = (&emergency, &raw.emergency_stop_s)
         && let Some(message) = emergency_at_rest(hoist, stop.at_s, return_after_s.flatten())
@@ -236,6 +173,83 @@ pub(super) fn duty_cycle(
         output_step_s: output_step_s?,
         time_step_s: time_step_s?,
     })
+}
+
+/// Rejects the keys of loads and history scenes in a duty-cycle scene; `false` when any is there.
+fn duty_cycle_foreign_keys(c: &mut Collector, at: At, raw: &RawScene) -> bool {
+    let span_of = |v: &Option<Spanned<toml::Value>>| v.as_ref().map(|v| v.span());
+    foreign_keys(
+        c,
+        at,
+        "duty-cycle",
+        &[
+            ("m1_kg", raw.m1_kg.as_ref().map(|v| v.span())),
+            ("m2_kg", raw.m2_kg.as_ref().map(|v| v.span())),
+            ("t1_n", span_of(&raw.t1_n)),
+            ("t2_n", span_of(&raw.t2_n)),
+            ("speed_m_s", span_of(&raw.speed_m_s)),
+            ("accel_m_s2", raw.accel_m_s2.as_ref().map(|v| v.span())),
+            ("t_s", raw.t_s.as_ref().map(|v| v.span())),
+            ("csv", raw.csv.as_ref().map(|v| v.span())),
+        ],
+    )
+}
+
+/// The emergency stop: an imposed deceleration (`emergency_stop_s` with `emergency_decel_m_s2`),
+/// or, with a `[brake]` section, the time the brake sets in (`emergency_stop_s` alone). Returns
+/// (the imposed stop, the brake's stop time), each `Some(None)` when not given.
+fn emergency(
+    c: &mut Collector,
+    at: At,
+    raw: &RawScene,
+    brake: bool,
+) -> (Option<Option<EmergencyStop>>, Option<Option<f64>>) {
+    match (&raw.emergency_stop_s, &raw.emergency_decel_m_s2) {
+        (None, None) => (Some(None), Some(None)),
+        (Some(t), None) if brake => (Some(None), checked(c, at, "emergency_stop_s", t, NON_NEGATIVE).map(Some)),
+        (Some(t), Some(d)) => {
+            let at_s = checked(c, at, "emergency_stop_s", t, NON_NEGATIVE);
+            let decel = in_range(
+                c,
+                at,
+                "emergency_decel_m_s2",
+                d,
+                |d| d > 0.0 && d <= 9.81,
+                "a deceleration 0 < d ≤ 9.81 m/s²",
+            );
+            (at_s.zip(decel).map(|(at_s, decel_m_s2)| Some(EmergencyStop { at_s, decel_m_s2 })), Some(None))
+        }
+        (Some(t), None) => {
+            c.push(
+                Some(t.span()),
+                at.scene,
+                &at.key("emergency_decel_m_s2"),
+                "missing; an emergency stop needs emergency_decel_m_s2 (an imposed deceleration, m/s² > 0), or a [brake] section that stops the pulley",
+            );
+            (None, Some(None))
+        }
+        (None, Some(d)) => {
+            c.push(
+                Some(d.span()),
+                at.scene,
+                &at.key("emergency_stop_s"),
+                "missing; emergency braking needs both emergency_stop_s (s) and emergency_decel_m_s2",
+            );
+            (None, Some(None))
+        }
+    }
+}
+
+/// The snapshot times of a duty-cycle scene: times ≥ 0 s, sorted, each once.
+fn snapshot_times(c: &mut Collector, at: At, raw: &RawScene) -> Option<Vec<f64>> {
+    match &raw.snapshots_s {
+        None => Some(Vec::new()),
+        Some(s) if s.get_ref().iter().all(|t| t.is_finite() && *t >= 0.0) => Some(sorted_times(s.get_ref())),
+        Some(s) => {
+            c.push(Some(s.span()), at.scene, &join_key(at.section, "snapshots_s"), "expected times ≥ 0 s");
+            None
+        }
+    }
 }
 
 /// Why an emergency stop at `at_s` has nothing to brake, naming the times it may set in: the

@@ -3,7 +3,7 @@
 
 use super::diag::Collector;
 use super::raw::{RawLining, RawRope};
-use super::validate::{At, NON_NEGATIVE, POSITIVE, checked, optional, required};
+use super::rules::{At, NON_NEGATIVE, POSITIVE, checked, optional, required};
 use crate::design::{Lining, Rope};
 use toml::Spanned;
 
@@ -89,7 +89,7 @@ pub(super) fn bending_stiffness(c: &mut Collector, at: At, r: &RawRope) -> Optio
             let e = required(c, at, "modulus_pa", &r.modulus_pa, POSITIVE);
             let ratio = match &r.bending_ratio {
                 Some(v) => {
-                    super::validate::in_range(c, at, "bending_ratio", v, |x| x > 0.0 && x <= 1.0, "a ratio 0 < r ≤ 1")
+                    super::rules::in_range(c, at, "bending_ratio", v, |x| x > 0.0 && x <= 1.0, "a ratio 0 < r ≤ 1")
                 }
                 None => optional(c, at, "bending_ratio", &None, POSITIVE, DEFAULT_BENDING_RATIO),
             };

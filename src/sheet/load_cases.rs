@@ -3,7 +3,7 @@
 use super::diag::Collector;
 use super::hoist::DEFAULT_TIME_STEP_S;
 use super::raw::RawLoadCases;
-use super::validate::{At, in_range};
+use super::rules::{At, in_range};
 use crate::design::{Direction, LoadCases, Phase};
 use toml::Spanned;
 
@@ -30,10 +30,44 @@ pub(super) fn load_cases(
         c.push_at(Some(span.clone()), None, "load_cases", msg);
         return None;
     }
-    let payloads_kg = match &r.payloads_kg {
+    let payloads_kg = payloads(c, at, r);
+    let (positions, stops) = fractions(c, at, r);
+    let directions = match &r.directions {
+        None => Some(vec![Direction::Lift, Direction::Lower]),
+        Some(list) => keywords(c, "directions", list, &[("lift", Direction::Lift), ("lower", Direction::Lower)]),
+    };
+    let rope_dynamics = rope_dynamics(c, r);
+    let emergency_decel_m_s2 = match &r.emergency_decel_m_s2 {
+        None => Some(None),
+        Some(d) => {
+            in_range(c, at, "emergency_decel_m_s2", d, |d| d > 0.0 && d <= 9.81, "a deceleration 0 < d ≤ 9.81 m/s²")
+                .map(Some)
+        }
+    };
+    let time_step_s = match &r.time_step_s {
+        None => Some(DEFAULT_TIME_STEP_S),
+        Some(v) => in_range(c, at, "time_step_s", v, |d| d > 0.0 && d <= 0.1, "an integration step 0 < dt ≤ 0.1 s"),
+    };
+    if !emergency_decel_given(c, r, rope_dynamics.as_deref(), brake) {
+        return None;
+    }
+    Some(Some(LoadCases {
+        payloads_kg: payloads_kg?,
+        directions: directions?,
+        positions: positions?,
+        rope_dynamics: rope_dynamics?,
+        rope_dynamics_stops: stops?,
+        emergency_decel_m_s2: emergency_decel_m_s2?,
+        time_step_s: time_step_s?,
+    }))
+}
+
+/// The payloads on the side-1 conveyance (kg), which the matrix must list.
+fn payloads(c: &mut Collector, at: At, r: &RawLoadCases) -> Option<Vec<f64>> {
+    match &r.payloads_kg {
         None => {
             c.push_at(
-                Some(span.clone()),
+                Some(at.table_span.clone()),
                 None,
                 "load_cases.payloads_kg",
                 "missing; list the payloads on the side-1 conveyance, e.g. [55000, 30000, 5000, 0] (kg)",
@@ -41,7 +75,12 @@ pub(super) fn load_cases(
             None
         }
         Some(p) => numbers(c, at, "payloads_kg", p, |x| x >= 0.0, "payloads ≥ 0 kg"),
-    };
+    }
+}
+
+/// The positions in the travel (default the bottom, middle and top) and the rope-dynamics stops
+/// within the full-speed run (default its middle), as fractions from 0 to 1.
+fn fractions(c: &mut Collector, at: At, r: &RawLoadCases) -> (Option<Vec<f64>>, Option<Vec<f64>>) {
     let positions = match &r.positions {
         None => Some(vec![0.0, 0.5, 1.0]),
         Some(p) => numbers(c, at, "positions", p, |x| (0.0..=1.0).contains(&x), "fractions of the travel from 0 to 1"),
@@ -58,45 +97,30 @@ pub(super) fn load_cases(
             "fractions of the full-speed run from 0 (its start) to 1 (its end)",
         ),
     };
-    let directions = match &r.directions {
-        None => Some(vec![Direction::Lift, Direction::Lower]),
-        Some(list) => keywords(c, "directions", list, &[("lift", Direction::Lift), ("lower", Direction::Lower)]),
-    };
+    (positions, stops)
+}
+
+/// The phases run with rope dynamics (default the emergency stop; empty for none).
+fn rope_dynamics(c: &mut Collector, r: &RawLoadCases) -> Option<Vec<Phase>> {
     let phases: Vec<(&str, Phase)> = Phase::ALL.iter().map(|p| (p.keyword(), *p)).collect();
-    let rope_dynamics = match &r.rope_dynamics {
+    match &r.rope_dynamics {
         None => Some(vec![Phase::Emergency]),
         Some(list) if list.get_ref().is_empty() => Some(Vec::new()),
         Some(list) => keywords(c, "rope_dynamics", list, &phases),
-    };
-    let emergency_decel_m_s2 = match &r.emergency_decel_m_s2 {
-        None => Some(None),
-        Some(d) => {
-            in_range(c, at, "emergency_decel_m_s2", d, |d| d > 0.0 && d <= 9.81, "a deceleration 0 < d ≤ 9.81 m/s²")
-                .map(Some)
-        }
-    };
-    let time_step_s = match &r.time_step_s {
-        None => Some(DEFAULT_TIME_STEP_S),
-        Some(v) => in_range(c, at, "time_step_s", v, |d| d > 0.0 && d <= 0.1, "an integration step 0 < dt ≤ 0.1 s"),
-    };
-    let explicit_emergency =
-        r.rope_dynamics.is_some() && rope_dynamics.as_ref().is_some_and(|p| p.contains(&Phase::Emergency));
+    }
+}
+
+/// An emergency phase asked for explicitly needs a `[brake]` or an imposed deceleration.
+fn emergency_decel_given(c: &mut Collector, r: &RawLoadCases, rope_dynamics: Option<&[Phase]>, brake: bool) -> bool {
+    let explicit_emergency = r.rope_dynamics.is_some() && rope_dynamics.is_some_and(|p| p.contains(&Phase::Emergency));
     if explicit_emergency && !brake && r.emergency_decel_m_s2.is_none() {
         let span = r.rope_dynamics.as_ref().map(|v| v.span());
         let msg =
             "the emergency phase needs a [brake] section or load_cases.emergency_decel_m_s2 (an imposed deceleration)";
         c.push(span, None, "load_cases.rope_dynamics", msg);
-        return None;
+        return false;
     }
-    Some(Some(LoadCases {
-        payloads_kg: payloads_kg?,
-        directions: directions?,
-        positions: positions?,
-        rope_dynamics: rope_dynamics?,
-        rope_dynamics_stops: stops?,
-        emergency_decel_m_s2: emergency_decel_m_s2?,
-        time_step_s: time_step_s?,
-    }))
+    true
 }
 
 /// A non-empty list of finite numbers satisfying `ok`, in the sheet's order, without repeats.

@@ -4,7 +4,7 @@
 
 use super::diag::Collector;
 use super::raw::{RawBrake, RawGuide, RawPulley, RawRope};
-use super::validate::{At, NON_NEGATIVE, POSITIVE, checked, required};
+use super::rules::{At, NON_NEGATIVE, POSITIVE, checked, required};
 use crate::design::{Brake, GuideSheave, Machine};
 use toml::Spanned;
 

@@ -16,6 +16,8 @@ mod machine;
 mod outputs;
 mod raw;
 mod requirements;
+mod rules;
+mod scene;
 mod track;
 mod validate;
 

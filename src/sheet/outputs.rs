@@ -1,7 +1,7 @@
 //! A scene's `outputs` key: what it asks for (docs/physics.md §7), checked against what its kind can give.
 
 use super::diag::Collector;
-use super::validate::At;
+use super::rules::At;
 use crate::design::{Output, Outputs, SceneKind};
 use toml::Spanned;
 

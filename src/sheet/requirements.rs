@@ -14,6 +14,17 @@ pub const UNSOURCED: &str = "the sheet (no source given)";
 pub(super) fn requirements(c: &mut Collector, r: &Option<Spanned<RawRequirements>>) -> Option<Requirements> {
     let Some(r) = r else { return Some(Requirements::default()) };
     let r = r.get_ref();
+    let (mut out, limits_ok) = limits(c, r);
+    let basis = basis(c, r);
+    if let Some(Some(b)) = basis {
+        out.dynamic_safety_factor_basis = b;
+    }
+    let windows_ok = decel_windows(c, r, &out);
+    (limits_ok && basis.is_some() && windows_ok).then_some(out)
+}
+
+/// Every limit of the section (the anti-slip minimums defaulted), and whether all parsed.
+fn limits(c: &mut Collector, r: &RawRequirements) -> (Requirements, bool) {
     let d = Requirements::default();
     let mut ok = true;
     let mut limit = |key: &str, value: &Option<Spanned<toml::Value>>, allowed: Allowed| -> Option<Limit> {
@@ -29,7 +40,7 @@ pub(super) fn requirements(c: &mut Collector, r: &Option<Spanned<RawRequirements
     };
     let static_sf = limit("static_safety_factor_min", &r.static_safety_factor_min, POSITIVE);
     let dynamic_sf = limit("dynamic_safety_factor_min", &r.dynamic_safety_factor_min, POSITIVE);
-    let mut out = Requirements {
+    let out = Requirements {
         static_safety_factor_min: static_sf.as_ref().map_or(d.static_safety_factor_min, |l| l.value),
         static_safety_factor_source: static_sf.map_or_else(|| DEFAULT_SAFETY_FACTOR_SOURCE.into(), |l| l.source),
         dynamic_safety_factor_min: dynamic_sf.as_ref().map_or(d.dynamic_safety_factor_min, |l| l.value),
@@ -60,21 +71,30 @@ pub(super) fn requirements(c: &mut Collector, r: &Option<Spanned<RawRequirements
         ),
         dynamic_safety_factor_basis: SafetyFactorBasis::Code,
     };
-    if let Some(b) = &r.dynamic_safety_factor_basis {
-        match b.get_ref().as_str() {
-            "code" => {}
-            "rope-dynamics" => out.dynamic_safety_factor_basis = SafetyFactorBasis::RopeDynamics,
-            _ => {
-                ok = false;
-                c.push(
-                    Some(b.span()),
-                    None,
-                    "requirements.dynamic_safety_factor_basis",
-                    "expected \"code\" (rigid-rope tensions, the default) or \"rope-dynamics\" (level 4)",
-                );
-            }
+    (out, ok)
+}
+
+/// `dynamic_safety_factor_basis`: `Some(None)` when not given, `None` when not a known basis.
+fn basis(c: &mut Collector, r: &RawRequirements) -> Option<Option<SafetyFactorBasis>> {
+    let Some(b) = &r.dynamic_safety_factor_basis else { return Some(None) };
+    match b.get_ref().as_str() {
+        "code" => Some(None),
+        "rope-dynamics" => Some(Some(SafetyFactorBasis::RopeDynamics)),
+        _ => {
+            c.push(
+                Some(b.span()),
+                None,
+                "requirements.dynamic_safety_factor_basis",
+                "expected \"code\" (rigid-rope tensions, the default) or \"rope-dynamics\" (level 4)",
+            );
+            None
         }
     }
+}
+
+/// Each emergency-deceleration window's minimum must not exceed its maximum.
+fn decel_windows(c: &mut Collector, r: &RawRequirements, out: &Requirements) -> bool {
+    let mut ok = true;
     for (key, lo, hi, raw_hi) in [
         (
             "emergency_decel_lift",
@@ -98,7 +118,7 @@ pub(super) fn requirements(c: &mut Collector, r: &Option<Spanned<RawRequirements
             c.push(span, None, &format!("requirements.{key}_max_m_s2"), msg);
         }
     }
-    ok.then_some(out)
+    ok
 }
 
 /// What a limit's value may be.

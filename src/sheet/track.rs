@@ -6,8 +6,9 @@
 
 use super::diag::Collector;
 use super::raw::RawScene;
-use super::validate::{At, POSITIVE, checked, foreign_keys};
+use super::rules::{At, POSITIVE, checked, foreign_keys};
 use crate::design::{ElementAt, SceneKind, Tracks};
+use std::ops::Range;
 use toml::Spanned;
 
 /// Element length when the sheet gives none (m).
@@ -42,6 +43,35 @@ pub(super) fn tracks(c: &mut Collector, at: At, raw: &RawScene, kind: &SceneKind
         }
         SceneKind::DutyCycle(_) => None,
     };
+    let (elements, lists_ok) = elements(c, at, raw, span);
+    ok &= lists_ok;
+    let length = match &raw.track_length_m {
+        None => Some(DEFAULT_LENGTH_M),
+        Some(v) => checked(c, at, "track_length_m", v, POSITIVE).filter(|l| {
+            let fits = *l <= MAX_LENGTH_M;
+            if !fits {
+                let msg = format!("expected an element length > 0 and ≤ {MAX_LENGTH_M} m");
+                c.push(Some(v.span()), at.scene, &at.key("track_length_m"), msg);
+            }
+            fits
+        }),
+    };
+    let step = match &raw.track_step_s {
+        None => Some(None),
+        Some(v) => step_s(c, at, v, span).map(Some),
+    };
+    ok &= element_count(c, at, &keys, &elements);
+    let (length, step) = (length?, step?);
+    if !ok {
+        return None;
+    }
+    Some((!elements.is_empty()).then_some(Tracks { elements, element_length_m: length, step_s: step }))
+}
+
+/// The elements listed by `track_entry_s`, `track_start_deg` and `track_anchor_m`, in that
+/// order, and whether every number is allowed (`span`: a history's first and last times).
+fn elements(c: &mut Collector, at: At, raw: &RawScene, span: Option<(f64, f64)>) -> (Vec<ElementAt>, bool) {
+    let mut ok = true;
     let mut elements = Vec::new();
     let lists: [List; 3] = [
         ("track_entry_s", &raw.track_entry_s, ElementAt::EntryS),
@@ -75,21 +105,13 @@ pub(super) fn tracks(c: &mut Collector, at: At, raw: &RawScene, kind: &SceneKind
             elements.push(make(*x));
         }
     }
-    let length = match &raw.track_length_m {
-        None => Some(DEFAULT_LENGTH_M),
-        Some(v) => checked(c, at, "track_length_m", v, POSITIVE).filter(|l| {
-            let fits = *l <= MAX_LENGTH_M;
-            if !fits {
-                let msg = format!("expected an element length > 0 and ≤ {MAX_LENGTH_M} m");
-                c.push(Some(v.span()), at.scene, &at.key("track_length_m"), msg);
-            }
-            fits
-        }),
-    };
-    let step = match &raw.track_step_s {
-        None => Some(None),
-        Some(v) => step_s(c, at, v, span).map(Some),
-    };
+    (elements, ok)
+}
+
+/// The element count: the length and step keys need elements to follow, and at most
+/// [`MAX_ELEMENTS`] of them per scene.
+fn element_count(c: &mut Collector, at: At, keys: &[(&str, Option<Range<usize>>)], elements: &[ElementAt]) -> bool {
+    let mut ok = true;
     if elements.is_empty() {
         for (key, span) in &keys[3..] {
             if let Some(span) = span {
@@ -105,11 +127,7 @@ pub(super) fn tracks(c: &mut Collector, at: At, raw: &RawScene, kind: &SceneKind
         c.push(first, at.scene, &at.key("track_entry_s"), msg);
         ok = false;
     }
-    let (length, step) = (length?, step?);
-    if !ok {
-        return None;
-    }
-    Some((!elements.is_empty()).then_some(Tracks { elements, element_length_m: length, step_s: step }))
+    ok
 }
 
 /// `track_step_s`: > 0 s, and for a history at most [`MAX_ROWS`] rows over its span.

@@ -11,6 +11,7 @@ pub mod csv;
 pub mod grid;
 pub mod merge;
 pub mod plot;
+mod plot_map;
 pub mod run;
 
 use crate::report::ReportError;

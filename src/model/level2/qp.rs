@@ -89,56 +89,96 @@ pub fn clamp(
 /// clarabel's optimum of the increment: contact forces at the knots `theta` (old values `old`).
 fn solve(theta: &[f64], old: &[f64], env: &Envelopes) -> Result<(Vec<f64>, QpVerdict), QpError> {
     let m = theta.len();
-    let (n1, n2) = (env.n1, env.n2);
-    let scale = n1.max(n2);
-    let alpha = env.alpha;
-    let setup = |e: String| QpError { status: QpFailure::Setup(e) };
-    // Knots on an end take the end's value: they are data, not unknowns, which keeps the
-    // feasible set's interior non-empty for the interior-point method.
-    let end_of = |j: usize| match j {
-        _ if j == 0 || theta[j] <= 0.0 => Some(n1 / scale),
-        _ if j == m - 1 || theta[j] >= alpha => Some(n2 / scale),
-        _ => None,
-    };
-    let mut var_of = vec![usize::MAX; m];
-    let mut vars = 0usize;
-    for (j, v) in var_of.iter_mut().enumerate() {
-        if end_of(j).is_none() {
-            *v = vars;
-            vars += 1;
-        }
-    }
-    let fixed: Vec<Option<f64>> = (0..m).map(end_of).collect();
-    if vars == 0 {
-        return Ok((fixed.iter().map(|f| f.unwrap_or(0.0) * scale).collect(), QpVerdict::Solved));
+    let scale = env.n1.max(env.n2);
+    let knots = Knots::of(theta, env, scale);
+    if knots.vars == 0 {
+        return Ok((knots.fixed.iter().map(|f| f.unwrap_or(0.0) * scale).collect(), QpVerdict::Solved));
     }
     // Unknowns: the changes d_j = y_j − y_j^old (scaled), so that the objective ½ Σ w d² has no
     // large constant part and the solver's gap tolerance bounds the change itself.
     let old_y: Vec<f64> = old.iter().map(|n| n.max(0.0) / scale).collect();
-    let q = vec![0.0; vars];
     // Equal weights: the optimum of a separable convex distance over this set is the clamp
     // whatever the weights (see [`super::envelope`]); equal ones condition the problem best.
-    let p_diag = vec![1.0; vars];
-    let weights: Vec<f64> = (0..m).map(|j| if var_of[j] == usize::MAX { 0.0 } else { p_diag[var_of[j]] }).collect();
-    let p = CscMatrix::new(vars, vars, (0..=vars).collect(), (0..vars).collect(), p_diag);
-    // Two rows per interval (j, j+1).
+    let p_diag = vec![1.0; knots.vars];
+    let weights: Vec<f64> =
+        (0..m).map(|j| if knots.var_of[j] == usize::MAX { 0.0 } else { p_diag[knots.var_of[j]] }).collect();
+    let links = coulomb_rows(theta, env, &knots, &old_y);
+    let ipm_run = run_clarabel(p_diag, &links)?;
+    let ipm: Vec<f64> =
+        (0..m).map(|j| knots.fixed[j].unwrap_or_else(|| old_y[j] + ipm_run.x[knots.var_of[j]])).collect();
+    let polished = best_polish(&ipm, &knots.fixed, &weights, &old_y, &links.links, (&ipm_run.s, &ipm_run.z));
+    let verdict = match (ipm_run.verdict, &polished) {
+        (QpVerdict::Solved, Some(_)) => QpVerdict::SolvedPolished,
+        (v, _) => v,
+    };
+    let y: Vec<f64> = polished.unwrap_or(ipm).into_iter().map(|v| v * scale).collect();
+    if y.iter().any(|n| !(n.is_finite() && *n > 0.0)) {
+        return Err(QpError { status: QpFailure::NonPhysical });
+    }
+    Ok((y, verdict))
+}
+
+/// Which knots are unknowns: knots on an end take the end's value (scaled by `scale`) — they
+/// are data, not unknowns, which keeps the feasible set's interior non-empty for the
+/// interior-point method.
+struct Knots {
+    /// The end value of each knot that is data, `None` for an unknown.
+    fixed: Vec<Option<f64>>,
+    /// Each unknown knot's variable index (`usize::MAX` for a fixed knot).
+    var_of: Vec<usize>,
+    /// Number of unknowns.
+    vars: usize,
+}
+
+impl Knots {
+    fn of(theta: &[f64], env: &Envelopes, scale: f64) -> Self {
+        let m = theta.len();
+        let fixed: Vec<Option<f64>> = (0..m)
+            .map(|j| match j {
+                _ if j == 0 || theta[j] <= 0.0 => Some(env.n1 / scale),
+                _ if j == m - 1 || theta[j] >= env.alpha => Some(env.n2 / scale),
+                _ => None,
+            })
+            .collect();
+        let mut var_of = vec![usize::MAX; m];
+        let mut vars = 0usize;
+        for (v, f) in var_of.iter_mut().zip(&fixed) {
+            if f.is_none() {
+                *v = vars;
+                vars += 1;
+            }
+        }
+        Knots { fixed, var_of, vars }
+    }
+}
+
+/// Coulomb's law between neighbouring knots as rows of `A d + s = b, s ≥ 0`.
+struct CoulombRows {
+    a_mat: CscMatrix<f64>,
+    b: Vec<f64>,
+    /// For polishing: row r says knot `hi` ≤ a · knot `lo`.
+    links: Vec<(usize, usize, f64)>,
+}
+
+/// Two rows per interval (j, j+1) with `a = e^{μ Δθ}`: `y_{j+1} − a y_j ≤ 0` and
+/// `y_j − a y_{j+1} ≤ 0`, with `y = y_old + d` for the unknowns; rows between two fixed knots
+/// are left out.
+fn coulomb_rows(theta: &[f64], env: &Envelopes, knots: &Knots, old_y: &[f64]) -> CoulombRows {
     let (mut rows, mut cols, mut vals, mut b) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
     let mut row = 0usize;
-    // For polishing: row r says knot `hi` ≤ a · knot `lo`.
     let mut links: Vec<(usize, usize, f64)> = Vec::new();
-    for j in 0..m - 1 {
+    for j in 0..theta.len() - 1 {
         let a = (env.mu * (theta[j + 1] - theta[j])).exp();
         for (hi, lo) in [(j + 1, j), (j, j + 1)] {
-            // y_hi − a y_lo ≤ 0 with y = y_old + d for the unknowns.
             let mut rhs = 0.0;
             let mut any = false;
             for (idx, coef) in [(hi, 1.0), (lo, -a)] {
-                match end_of(idx) {
+                match knots.fixed[idx] {
                     Some(value) => rhs -= coef * value,
                     None => {
                         rhs -= coef * old_y[idx];
                         rows.push(row);
-                        cols.push(var_of[idx]);
+                        cols.push(knots.var_of[idx]);
                         vals.push(coef);
                         any = true;
                     }
@@ -151,7 +191,26 @@ fn solve(theta: &[f64], old: &[f64], env: &Envelopes) -> Result<(Vec<f64>, QpVer
             }
         }
     }
-    let a_mat = CscMatrix::new_from_triplets(row, vars, rows, cols, vals);
+    let a_mat = CscMatrix::new_from_triplets(row, knots.vars, rows, cols, vals);
+    CoulombRows { a_mat, b, links }
+}
+
+/// What the interior-point method returned: the changes `x`, slacks `s`, multipliers `z` and
+/// its verdict.
+struct IpmRun {
+    x: Vec<f64>,
+    s: Vec<f64>,
+    z: Vec<f64>,
+    verdict: QpVerdict,
+}
+
+/// Minimises `½ Σ w d²` (`w` = `p_diag`) subject to the Coulomb rows with clarabel, at tight
+/// tolerances; `Solved` and `AlmostSolved` are verdicts, any other status an error.
+fn run_clarabel(p_diag: Vec<f64>, rows: &CoulombRows) -> Result<IpmRun, QpError> {
+    let setup = |e: String| QpError { status: QpFailure::Setup(e) };
+    let vars = p_diag.len();
+    let q = vec![0.0; vars];
+    let p = CscMatrix::new(vars, vars, (0..=vars).collect(), (0..vars).collect(), p_diag);
     let settings = DefaultSettingsBuilder::default()
         .verbose(false)
         .tol_gap_abs(1e-20)
@@ -164,19 +223,31 @@ fn solve(theta: &[f64], old: &[f64], env: &Envelopes) -> Result<(Vec<f64>, QpVer
         .iterative_refinement_max_iter(50)
         .build()
         .map_err(|e| setup(format!("{e:?}")))?;
-    let cones = [NonnegativeConeT(row)];
-    let mut solver = DefaultSolver::new(&p, &q, &a_mat, &b, &cones, settings).map_err(|e| setup(format!("{e}")))?;
+    let cones = [NonnegativeConeT(rows.b.len())];
+    let mut solver =
+        DefaultSolver::new(&p, &q, &rows.a_mat, &rows.b, &cones, settings).map_err(|e| setup(format!("{e}")))?;
     solver.solve();
     let verdict = match solver.solution.status {
         SolverStatus::Solved => QpVerdict::Solved,
         SolverStatus::AlmostSolved => QpVerdict::AlmostSolved,
         other => return Err(QpError { status: QpFailure::Status(format!("{other:?}")) }),
     };
-    let ipm: Vec<f64> = (0..m).map(|j| end_of(j).unwrap_or_else(|| old_y[j] + solver.solution.x[var_of[j]])).collect();
-    // Candidate active sets: by complementarity (s < z), and by position in the slab (the
-    // interior-point iterate within a tenth of the slab's width of the bound, where tiny
-    // weights leave the multiplier small). The feasible polished point of least cost is kept.
-    let (sol_s, sol_z) = (&solver.solution.s, &solver.solution.z);
+    let sol = solver.solution;
+    Ok(IpmRun { x: sol.x, s: sol.s, z: sol.z, verdict })
+}
+
+/// Candidate active sets: by complementarity (s < z), and by position in the slab (the
+/// interior-point iterate within a tenth of the slab's width of the bound, where tiny
+/// weights leave the multiplier small). The feasible polished point of least cost is kept.
+fn best_polish(
+    ipm: &[f64],
+    fixed: &[Option<f64>],
+    weights: &[f64],
+    old_y: &[f64],
+    links: &[(usize, usize, f64)],
+    (sol_s, sol_z): (&[f64], &[f64]),
+) -> Option<Vec<f64>> {
+    let m = ipm.len();
     let by_complementarity: Vec<bool> = sol_s.iter().zip(sol_z).map(|(s, z)| *z > 1e-12 && s < z).collect();
     let by_slab = |fraction: f64| -> Vec<bool> {
         links
@@ -194,19 +265,10 @@ fn solve(theta: &[f64], old: &[f64], env: &Envelopes) -> Result<(Vec<f64>, QpVer
         union(&by_complementarity, &by_slab(0.1)),
         union(&by_complementarity, &by_slab(0.3)),
     ];
-    let polished = candidates
+    candidates
         .iter()
-        .filter_map(|active| polish(&ipm, &fixed, &weights, &old_y, &links, (active, sol_s)))
-        .min_by(|a, b| cost(a).total_cmp(&cost(b)));
-    let verdict = match (verdict, &polished) {
-        (QpVerdict::Solved, Some(_)) => QpVerdict::SolvedPolished,
-        (v, _) => v,
-    };
-    let y: Vec<f64> = polished.unwrap_or(ipm).into_iter().map(|v| v * scale).collect();
-    if y.iter().any(|n| !(n.is_finite() && *n > 0.0)) {
-        return Err(QpError { status: QpFailure::NonPhysical });
-    }
-    Ok((y, verdict))
+        .filter_map(|active| polish(ipm, fixed, weights, old_y, links, (active, sol_s)))
+        .min_by(|a, b| cost(a).total_cmp(&cost(b)))
 }
 
 /// Active-set polishing of the interior-point solution: with the constraints taken as active

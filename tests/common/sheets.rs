@@ -1,0 +1,25 @@
+//! The base design sheet of the test hoist, and what tests build from it.
+//!
+//! The hoist: a pulley of D = 4 m with μ = 0.25 over α = 180°, four ropes of 5 kg/m with
+//! EA = 1e8 N. A sheet adds its title before and its scenes (or other sections) after.
+
+/// The base sheet's `[pulley]` and `[rope]` sections, as a literal for `concat!` (so that a
+/// test's sheet stays a `const` whose lines and columns the test can name).
+macro_rules! base_sections {
+    () => {
+        "[pulley]\ndiameter_m = 4.0\nmu = 0.25\nwrap_angle_deg = 180.0\n[rope]\ncount = 4\nmass_per_m_kg = 5.0\nea_n = 1.0e8\n"
+    };
+}
+pub(crate) use base_sections;
+
+/// The base sections with one loads scene `a` at rest (m1 = 12 t, m2 = 10 t): the smallest
+/// valid sheet, for tests that add a scene or a section to it.
+macro_rules! base_sheet {
+    () => {
+        concat!(
+            $crate::common::sheets::base_sections!(),
+            "[[scene]]\nname = \"a\"\nkind = \"loads\"\nm1_kg = 12000.0\nm2_kg = 10000.0\n"
+        )
+    };
+}
+pub(crate) use base_sheet;
