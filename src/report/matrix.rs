@@ -1,7 +1,7 @@
 //! The load-case matrix and the design's checks on the terminal and in matrix.csv: one row per
 //! case, then every check of the design as a whole at its governing case.
 
-use super::table::{Style, render_check};
+use super::check_text::{Style, render_check};
 use crate::check::Verdict;
 use crate::load_cases::{CaseResult, MatrixResult, Position};
 use crate::run::DesignResult;

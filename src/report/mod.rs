@@ -7,6 +7,7 @@
 //! wrapcalc wrote itself is ever replaced ([`target`]).
 
 pub mod accuracy;
+pub mod check_text;
 pub mod checklist;
 pub mod compare;
 pub mod csv_out;

@@ -1,43 +1,12 @@
 //! The human report on the terminal: a table of scenes, then every check with its formula,
 //! inputs and intermediate values so that it can be redone by hand.
 
-use crate::check::{Check, Quantity, Verdict};
+pub use super::check_text::Style;
+use super::check_text::render_check;
 use crate::margins::{Margin, Margins};
 use crate::model::level0::{DYNAMIC_CHECK, EndState};
 use crate::run::{RunResult, SceneResult};
 use std::fmt::Write;
-
-/// Colour only when the output is a terminal and `NO_COLOR` is unset (decided by the caller).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Style {
-    /// Whether verdicts and headings carry ANSI colour codes.
-    pub color: bool,
-}
-
-impl Style {
-    /// A check's verdict word, coloured on a terminal.
-    pub fn verdict_of(&self, verdict: Verdict) -> String {
-        match (verdict, self.color) {
-            (Verdict::Pass, _) | (Verdict::Fail, _) => self.verdict(verdict == Verdict::Pass),
-            (Verdict::Warning, true) => "\x1b[1;33mWARNING\x1b[0m".into(),
-            (v, _) => v.label().into(),
-        }
-    }
-
-    /// PASS / FAIL.
-    pub fn verdict_pass(&self, pass: bool) -> String {
-        self.verdict(pass)
-    }
-
-    fn verdict(&self, pass: bool) -> String {
-        match (pass, self.color) {
-            (true, true) => "\x1b[32mPASS\x1b[0m".into(),
-            (false, true) => "\x1b[1;31mFAIL\x1b[0m".into(),
-            (true, false) => "PASS".into(),
-            (false, false) => "FAIL".into(),
-        }
-    }
-}
 
 /// "T1 = 207.7 kN, T2 = 211.9 kN, v = 0 m/s, a = 0.6 m/s²".
 pub fn state_label(s: &EndState) -> String {
@@ -138,7 +107,7 @@ fn summary_table(out: &mut String, run: &RunResult, style: Style) {
             opt(w.map(|w| w.positive_arc_rad.to_degrees()), 2),
             opt(w.map(|w| w.reverse_arc_rad.to_degrees()), 2),
             opt(w.and_then(|w| w.jdp_rad.map(f64::to_degrees)), 2),
-            style.verdict(s.checks_pass()),
+            style.verdict_pass(s.checks_pass()),
             match (&s.slip_onset, c.gross_slip) {
                 (Some(o), _) =>
                     format!("  GROSS SLIP from t = {:.3} s (ratio {:.4}): the trip ends there", o.t_s, o.ratio),
@@ -168,46 +137,6 @@ fn scene_checks(out: &mut String, s: &SceneResult, style: Style) {
             f.active_arc_deg, f.friction, f.entry, f.idle_tension_n, f.rms_residual_n, f.rms_residual_rel
         );
     }
-}
-
-/// One check: value, relation, limit and verdict, then its formula, inputs, intermediate values,
-/// the limit's source and the case that governs it.
-pub(crate) fn render_check(out: &mut String, check: &Check, style: Style) {
-    let value = match (check.value, check.verdict) {
-        (_, Verdict::NotEvaluated) => "—".to_string(),
-        (Some(v), _) => format!("{}{}", number(v), unit_suffix(check.unit)),
-        (None, _) => "∞".into(),
-    };
-    let limit = check
-        .limit
-        .map_or_else(String::new, |l| format!(" {} {}{}", check.relation.symbol(), number(l), unit_suffix(check.unit)));
-    let _ = writeln!(out, "  {:<44} {value}{limit}  {}", check.name, style.verdict_of(check.verdict));
-    let _ = writeln!(out, "      formula: {}", check.formula);
-    let fmt_q = |qs: &[Quantity]| qs.iter().map(Quantity::display).collect::<Vec<_>>().join(", ");
-    if !check.inputs.is_empty() {
-        let _ = writeln!(out, "      inputs:  {}", fmt_q(&check.inputs));
-    }
-    if !check.intermediates.is_empty() {
-        let _ = writeln!(out, "      values:  {}", fmt_q(&check.intermediates));
-    }
-    if let Some(source) = &check.limit_source {
-        let _ = writeln!(out, "      limit:   {source}");
-    }
-    if let Some(case) = &check.governing_case {
-        let _ = writeln!(out, "      governing case: {case}");
-    }
-    if let Some(note) = &check.note {
-        let _ = writeln!(out, "      note:    {note}");
-    }
-}
-
-/// A check's value or limit: 4 decimals below 1000, else 5 significant digits.
-pub(crate) fn number(v: f64) -> String {
-    if v.abs() >= 1e4 { format!("{v:.4e}") } else { format!("{v:.4}") }
-}
-
-pub(crate) fn unit_suffix(unit: &str) -> String {
-    if unit.is_empty() { String::new() } else { format!(" {unit}") }
 }
 
 /// The margins of a scene, one line each with its rigid-rope formula.

@@ -152,7 +152,7 @@ fn section<T: for<'de> Deserialize<'de>>(
 }
 
 /// The `[[scene]]` array: each table deserialized on its own (`None` where it failed).
-fn scene_tables(c: &mut Collector, value: Spanned<DeValue<'_>>) -> Vec<validate::SceneSlot> {
+fn scene_tables(c: &mut Collector, value: Spanned<DeValue<'_>>) -> Vec<scene::SceneSlot> {
     let span = value.span();
     match value.into_inner() {
         DeValue::Array(items) => items
@@ -172,7 +172,7 @@ fn scene_tables(c: &mut Collector, value: Spanned<DeValue<'_>>) -> Vec<validate:
                         None
                     }
                 };
-                validate::SceneSlot { label, raw }
+                scene::SceneSlot { label, raw }
             })
             .collect(),
         _ => {

@@ -6,11 +6,16 @@ use super::raw::RawScene;
 use super::rules::{
     ANY, At, POSITIVE, SPEED_MAX_M_S, checked, direction_keyword, foreign_keys, in_range, required, valid_scene_name,
 };
-use super::validate::SceneSlot;
 use crate::design::{Direction, EndLoads, Hoist, LoadsScene, Rope, Scene, SceneKind};
 use std::collections::HashSet;
 use std::ops::Range;
 use toml::Spanned;
+
+/// One `[[scene]]` table: its label (`scene[i]`) and contents when they deserialized.
+pub struct SceneSlot {
+    pub label: String,
+    pub raw: Option<Spanned<RawScene>>,
+}
 
 /// What the scenes need from the rest of the sheet.
 pub(super) struct SceneContext<'a> {

@@ -3,9 +3,9 @@
 //! and builds the [`Design`]; the rules each value follows live in `rules`.
 
 use super::diag::Collector;
-use super::raw::{RawBrake, RawGuide, RawHoist, RawLoadCases, RawPulley, RawRequirements, RawRope, RawScene};
+use super::raw::{RawBrake, RawGuide, RawHoist, RawLoadCases, RawPulley, RawRequirements, RawRope};
 use super::rules::{At, MU_MAX, NON_NEGATIVE, POSITIVE, ROPE_COUNT_MAX, WRAP_ANGLE_MAX_DEG, in_range, required};
-use super::scene::SceneContext;
+use super::scene::{SceneContext, SceneSlot};
 use crate::design::{Design, Pulley, Rope, STANDARD_GRAVITY_M_S2, WrapSource};
 use crate::geometry::wrap_angle_from_guide_rad;
 use std::ops::Range;
@@ -29,12 +29,6 @@ pub struct Sections {
     pub load_cases: Option<Spanned<RawLoadCases>>,
     pub document: Option<Spanned<super::document::RawDocument>>,
     pub compare: Option<Spanned<Vec<Spanned<super::raw::RawCompare>>>>,
-}
-
-/// One `[[scene]]` table: its label (`scene[i]`) and contents when they deserialized.
-pub struct SceneSlot {
-    pub label: String,
-    pub raw: Option<Spanned<RawScene>>,
 }
 
 pub fn design(c: &mut Collector, s: Sections) -> Option<Design> {

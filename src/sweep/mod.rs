@@ -9,6 +9,7 @@
 pub mod apply;
 pub mod csv;
 pub mod grid;
+mod labels;
 pub mod merge;
 pub mod plot;
 mod plot_map;

@@ -7,6 +7,7 @@
 //! The safety factor plotted is the lowest one of a time scene, else the reported state's.
 
 use super::csv::SweepRow;
+use super::labels::{factor, key_label};
 use super::plot_map::draw_map;
 pub use super::plot_map::{contour, safety_bar};
 use crate::report::history_figure::{OFF_SCALE, clipped_intervals, mark_clipped, safety_top};
@@ -19,21 +20,6 @@ use std::path::Path;
 
 /// The required minima (static, dynamic, …), one colour each.
 const MIN_COLORS: [RGBColor; 2] = [RGBColor(200, 0, 0), RGBColor(230, 130, 0)];
-
-/// The axis label of a key: its path and the unit its name ends in.
-pub fn key_label(key: &str) -> String {
-    let units =
-        [("_m_s2", "m/s²"), ("_m_s", "m/s"), ("_kg", "kg"), ("_deg", "deg"), ("_n", "N"), ("_s", "s"), ("_m", "m")];
-    match units.iter().find(|(suffix, _)| key.ends_with(suffix)) {
-        Some((_, unit)) => format!("{key} ({unit})"),
-        None => key.to_string(),
-    }
-}
-
-/// The safety factor a row is judged by, and the minimum it must reach.
-pub(super) fn factor(row: &SweepRow) -> (Option<f64>, Option<f64>) {
-    (row.num("worst_safety_factor").or(row.num("safety_factor")), row.num("safety_factor_min"))
-}
 
 /// Draws sweep.png for the rows of a sweep over `keys` (one or two).
 pub fn plot_sweep(path: &Path, keys: &[String], rows: &[SweepRow]) -> Result<(), PlotError> {

@@ -3,7 +3,7 @@
 //! and the required-minimum contour traced by marching squares.
 
 use super::csv::SweepRow;
-use super::plot::{factor, key_label};
+use super::labels::{factor, key_label};
 use crate::report::plot::{Area, e, font, tick_format};
 use crate::report::plot_colorbar::{BAR_AREA_W, ColourBar, draw_colour_bar};
 use plotters::prelude::*;

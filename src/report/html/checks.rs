@@ -5,9 +5,10 @@
 
 use super::{Context, esc, table};
 use crate::check::{Check, Quantity, Verdict};
+use crate::report::check_text::{number, unit_suffix};
 use crate::report::checklist::{self, DESIGN_GROUP};
 use crate::report::matrix::position;
-use crate::report::table::{number, state_label, unit_suffix};
+use crate::report::table::state_label;
 use std::fmt::Write;
 use std::io;
 
