@@ -69,10 +69,18 @@ fn draw(body: &Area, x_desc: &str, panels: &[Panel]) -> Result<(), String> {
             } else {
                 chart.draw_series(LineSeries::new(points, color.stroke_width(3))).map_err(e)?
             };
+            // The legend's swatch is drawn as the line is: a dot, a dashed or a solid stroke.
             if !line.label.is_empty() {
-                drawn
-                    .label(line.label.clone())
-                    .legend(move |(px, py)| Rectangle::new([(px, py - 3), (px + 24, py + 3)], color.filled()));
+                let drawn = drawn.label(line.label.clone());
+                if line.markers {
+                    drawn.legend(move |(px, py)| Circle::new((px + 12, py), 6, color.filled()));
+                } else if line.dashed {
+                    drawn.legend(move |(px, py)| {
+                        DashedPathElement::new(vec![(px, py), (px + 24, py)], 8, 5, color.stroke_width(2))
+                    });
+                } else {
+                    drawn.legend(move |(px, py)| Rectangle::new([(px, py - 3), (px + 24, py + 3)], color.filled()));
+                }
             }
         }
         draw_legend(&mut chart, SeriesLabelPosition::UpperRight, 15)?;

@@ -9,6 +9,9 @@ use super::plot_panels::{Line, PALETTE, Panel, plot_panels};
 use crate::model::track::Track;
 use std::path::Path;
 
+/// The legend entry of the Coulomb bounds, dashed in each element's colour.
+const BOUND_LABEL: &str = "±μN, the Coulomb bound (dashed, in each element's colour)";
+
 /// The time axis of a track figure.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Clock {
@@ -50,9 +53,8 @@ pub fn track_panels(tracks: &[(String, &Track)], mu: f64, clock: Clock) -> Vec<P
         panels[1].lines.push(Line::solid(label.clone(), color, series(&|r| kn(r.friction_force_n))));
         let bound =
             |s: f64| Line { dashed: true, ..Line::solid("", color, series(&|r| s * mu * kn(r.contact_force_n))) };
-        panels[1]
-            .lines
-            .push(Line { label: if i == 0 { "±μN (Coulomb bound)".into() } else { String::new() }, ..bound(1.0) });
+        let bound_label = if i == 0 { BOUND_LABEL.to_string() } else { String::new() };
+        panels[1].lines.push(Line { label: bound_label, ..bound(1.0) });
         panels[1].lines.push(bound(-1.0));
         panels[2].lines.push(Line::solid(label.clone(), color, series(&|r| r.impulse_n_s)));
         if let Some(turn) = track.turn_down {
