@@ -112,7 +112,7 @@ proptest! {
     /// thousand per history) places its zone by Newton's method to 1e-15 rad, and the two runs'
     /// round-off accumulates over them (measured up to 1.2e-9).
     #[test]
-    #[ignore = "fails on some histories: the repair of a rising m'v² next to zones at the limit is not yet mirror-symmetric (differences up to 4e-5 measured)"]
+    #[ignore = "fails on some histories: a rising m'v² next to shallow valleys between zones at the limit is not yet mirror-symmetric (differences up to 4e-6 measured)"]
     fn a_mirrored_history_mirrors_every_output((mu, wrap_deg, m_per_m, _nodes, samples) in hoist_history()) {
         mirror_law(mu, wrap_deg, m_per_m, &samples)?;
     }
@@ -126,7 +126,7 @@ proptest! {
     /// Adding samples on the straight lines between samples, and asking for rows every
     /// `step` seconds, describe the same history: the final state agrees to 1e-9 relative.
     #[test]
-    #[ignore = "fails on some histories: the repair of a rising m'v² depends on how the profile is cut into pieces (differences up to 8e-8 measured)"]
+    #[ignore = "fails on some histories: the repair of a rising m'v² depends on how the profile is cut into pieces (differences up to 4e-8 measured)"]
     fn resampling_and_reporting_change_nothing((mu, wrap_deg, m_per_m, _nodes, samples) in hoist_history(), split in 0.05f64..0.95, step in 0.003f64..0.5) {
         resampling_law(mu, wrap_deg, m_per_m, &samples, split, step)?;
     }
@@ -169,6 +169,24 @@ proptest! {
         let fast = final_state(Params { solver: Solver::Fast, ..p }, &samples, start);
         prop_assert_eq!(fast.0, sim.profile.field());
     }
+}
+
+/// m'v² rises from 0.9 N to 6 N within 1 ms while stuck rope that held friction at the limit
+/// lies between a stretch stuck at one tension and the rope that entered during the interval.
+/// There the compatible zone meets the stuck rope nearly tangentially, its Jacobian is nearly
+/// singular and Newton's iterate stalls at the violated stretch without solving the rope's
+/// compatibility; a zone taken from one side instead left this history and its mirror 3.7e-5
+/// apart in tension (0.003° in arcs). The stalled solve is recognised by its residual and the
+/// zone found by bracketing, so both directions agree to the law's 1e-8 and 1e-6°.
+#[test]
+fn a_stalled_zone_solve_still_keeps_the_rope_length_in_both_directions() {
+    let sample = |t_s, t1_n, t2_n, speed_m_s| HistorySample { t_s, t1_n, t2_n, speed_m_s };
+    let samples = [
+        sample(0.001, 1283.6757663571964, 1121.3896042986719, -1.0396034506789384),
+        sample(0.9439977210132444, 891.3937003465484, 1023.5194546175761, -0.4471692390061711),
+        sample(0.9449977210132444, 1469.457522167078, 1275.2217850783425, -1.154769974897295),
+    ];
+    mirror_law(0.3398728010469599, 150.0, 4.499470520263859, &samples).expect("the mirrored history mirrors the state");
 }
 
 /// The final state (field, gross slip) of a history run from a uniform rope at `start`.
@@ -215,11 +233,13 @@ fn mirror_law(mu: f64, wrap_deg: f64, m_per_m: f64, samples: &[HistorySample]) -
         && let (Some(ja), Some(jb)) = (sa.jdp_rad, sb.jdp_rad)
     {
         // The mirror's JDP, mapped back, ends the stick gap that starts at the original's.
+        // Both are placed to the arcs' 1e-6°: a shorter gap is no gap.
+        let place = 1e-6f64.to_radians();
         let back = alpha - jb;
-        prop_assert!(back >= ja - 1e-9, "mirrored JDP {} before the original's {}", back, ja);
+        prop_assert!(back >= ja - place, "mirrored JDP {} before the original's {}", back, ja);
         let law = ContactLaw::new(mu, c);
         let gap = back - ja;
-        for k in (1..20).filter(|_| gap > 1e-9) {
+        for k in (1..20).filter(|_| gap > place) {
             let th = ja + (back - ja) * k as f64 / 20.0;
             let piece = a.piece_at(th, &law);
             prop_assert!(law.utilization(piece, th) < 1e-3 + 1e-9, "friction inside the stick gap at {}", th);

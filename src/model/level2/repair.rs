@@ -27,6 +27,11 @@ use crate::wrap::Piece;
 /// at the limit stays below).
 const BEYOND: f64 = 1.0 + 1e-12;
 
+/// Residual of the compatible zone's equations, relative to the tension (and to its integral
+/// over the zone), below which Newton's last iterate solves them: their round-off is of order
+/// 1e-16 of the tension; a stalled iterate is off by far more.
+const RESIDUAL_REL: f64 = 1e-11;
+
 /// Newton iterations of one zone (it converges in a handful from the violated stretch).
 const MAX_NEWTON: usize = 60;
 
@@ -109,7 +114,7 @@ impl Zone {
         let (left_ok, right_ok) = (left_stuck || left_inside, right_stuck || right_inside);
         if left_ok
             && right_ok
-            && let Some(zone) = self.compatible(profile)
+            && let Some(zone) = self.compatible(profile).or_else(|| self.compatible_bracketed(profile, stats))
         {
             return zone;
         }
@@ -158,21 +163,31 @@ impl Zone {
                 return None;
             }
             if done {
-                return Some((a, b));
+                // A step clamped at the stretch can stall without solving the equations:
+                // accept only a solution of both (to 1e-11 of the tension and of its integral).
+                let scale = profile.tension_n(a).abs().max(profile.tension_n(b).abs());
+                let solved = f1.abs() <= RESIDUAL_REL * scale && f2.abs() <= RESIDUAL_REL * scale * (b - a);
+                return solved.then_some((a, b));
             }
         }
         None
     }
 
     /// The zone starting at p (`from_left`) or ending at r, at the limit until it meets the
-    /// stuck rope (or the end of the wrap). Beyond the stretch the limit line lies on the far
-    /// side of the stuck rope (`gap > 0` going right from p for positive friction, and so on),
-    /// so the zone ends at the first breakpoint past which the gap has changed sign.
+    /// stuck rope (or the end of the wrap).
     fn one_sided(&self, profile: &Profile, from_left: bool, stats: &mut RootStats) -> (f64, f64) {
+        self.pinned(profile, from_left, if from_left { self.p } else { self.r }, stats)
+    }
+
+    /// The zone that starts at `pin` (`from_left`, pin ≤ p) or ends there (pin ≥ r), with
+    /// `T_z = T_o` at the pin, at the limit until it meets the stuck rope beyond the stretch
+    /// (or the end of the wrap). Beyond the stretch the limit line lies on the far side of the
+    /// stuck rope (`gap > 0` going right from p for positive friction, and so on), so the zone
+    /// ends at the first breakpoint past which the gap has changed sign.
+    fn pinned(&self, profile: &Profile, from_left: bool, pin: f64, stats: &mut RootStats) -> (f64, f64) {
         let Zone { p, r, kappa, mu, c } = *self;
         let alpha = profile.wrap_angle_rad();
         let km = kappa * mu;
-        let pin = if from_left { p } else { r };
         let n_pin = profile.tension_n(pin) - c;
         // T_z − T_o, signed so that it is positive inside the zone.
         let sign = if from_left { -kappa } else { kappa };
@@ -184,23 +199,90 @@ impl Zone {
                 let hi = profile.piece(k).theta1_rad.min(alpha);
                 if hi > lo && gap(hi) <= 0.0 {
                     let b = if gap(lo) > 0.0 { bracketed(gap, lo, hi, 1e-15, stats).unwrap_or(hi) } else { lo };
-                    return (p, b);
+                    return (pin, b);
                 }
                 lo = hi.max(lo);
             }
-            (p, alpha)
+            (pin, alpha)
         } else {
             let mut hi = p;
             for k in (0..=profile_index(profile, p)).rev() {
                 let lo = profile.piece(k).theta0_rad.max(0.0);
                 if hi > lo && gap(lo) <= 0.0 {
                     let a = if gap(hi) > 0.0 { bracketed(gap, lo, hi, 1e-15, stats).unwrap_or(lo) } else { hi };
-                    return (a, r);
+                    return (a, pin);
                 }
                 hi = lo.min(hi);
             }
-            (0.0, r)
+            (0.0, pin)
         }
+    }
+
+    /// The compatible zone as a root in one unknown, where Newton's method on (a, b) does not
+    /// converge (the zone meets the stuck rope nearly tangentially, so that its Jacobian is
+    /// nearly singular). The zone is pinned on its high-tension side (a for positive friction,
+    /// b for reverse), `T_z = T_o` there, and runs at the limit until it meets the stuck rope
+    /// ([`Self::pinned`]); the pin is the root of the rope's compatibility
+    /// `F(pin) = ∫_a^b (T_z − T_o) dθ`, which is ≥ 0 with the pin at the stretch and falls as
+    /// the pin moves into the stuck rope. Its breakpoints bracket it (Brent's method to
+    /// 1e-15 rad); `None` when it would reach an end.
+    fn compatible_bracketed(&self, profile: &Profile, stats: &mut RootStats) -> Option<(f64, f64)> {
+        let Zone { p, r, kappa, mu, c } = *self;
+        let from_left = kappa < 0.0;
+        let km = kappa * mu;
+        let inner = std::cell::RefCell::new(RootStats::default());
+        let area = |pin: f64| {
+            let (a, b) = self.pinned(profile, from_left, pin, &mut inner.borrow_mut());
+            let n = profile.tension_n(pin) - c;
+            let zone = if from_left {
+                c * (b - a) + n * ((km * (b - a)).exp() - 1.0) / km
+            } else {
+                c * (b - a) + n * (1.0 - (km * (a - b)).exp()) / km
+            };
+            zone - integral(profile, a, b)
+        };
+        // Step from the stretch into the stuck rope, breakpoint by breakpoint, to a sign change.
+        let start = if from_left { p } else { r };
+        let mut near = (start, area(start));
+        if near.1 <= 0.0 {
+            return Some(self.pinned(profile, from_left, start, stats));
+        }
+        let mut k = profile_index(profile, start);
+        let far = loop {
+            let piece = profile.piece(k);
+            let x = if from_left { piece.theta0_rad } else { piece.theta1_rad };
+            let x = if (from_left && x >= near.0) || (!from_left && x <= near.0) {
+                // The stretch starts on a breakpoint: go on to the next piece.
+                match (from_left, k) {
+                    (true, 0) => return None,
+                    (true, _) => {
+                        k -= 1;
+                        continue;
+                    }
+                    (false, _) if k + 1 >= profile.len() => return None,
+                    (false, _) => {
+                        k += 1;
+                        continue;
+                    }
+                }
+            } else {
+                x
+            };
+            let f = area(x);
+            if f <= 0.0 {
+                break (x, f);
+            }
+            near = (x, f);
+        };
+        let pin = if far.1 == 0.0 {
+            far.0
+        } else {
+            bracketed(area, far.0.min(near.0), far.0.max(near.0), 1e-15, stats).ok()?
+        };
+        let extra = inner.into_inner();
+        stats.calls += extra.calls;
+        stats.iterations += extra.iterations;
+        Some(self.pinned(profile, from_left, pin, stats))
     }
 }
 
@@ -299,6 +381,7 @@ mod tests {
     /// c L + (T_hi − T_lo)/μ = T_hi (p − a) + c_o L_o + (T_hi − T_lo)/μ + T_lo (b − r) with
     /// L_o = r − p, so it grows into the high side by x = p − a =
     /// (c L − c_o L_o − T_lo (L − L_o)) / (T_hi − T_lo) and into the low side by L − L_o − x.
+    /// Newton's method and the bracketed solve both find it, in both directions.
     #[test]
     fn a_zone_between_stuck_rope_grows_as_the_rope_keeps_its_length() {
         let (mu, alpha): (f64, f64) = (0.25, 3.0);
@@ -335,8 +418,18 @@ mod tests {
             ],
         };
         let mut profile = Profile::from_field(&mirrored, mu);
+        let bracketed_zone = Zone { p: alpha - r, r: alpha - p, kappa: 1.0, mu, c }
+            .compatible_bracketed(&profile, &mut RootStats::default())
+            .expect("a compatible zone");
         repair(&mut profile, c, mu, &mut RootStats::default());
         let zone = profile.piece(1);
         assert!((zone.theta0_rad - (alpha - b)).abs() < 1e-12 && (zone.theta1_rad - (alpha - a)).abs() < 1e-12);
+        // The bracketed solve (pinned on the high-tension side, here b) finds the same zone.
+        assert!((bracketed_zone.0 - (alpha - b)).abs() < 1e-12 && (bracketed_zone.1 - (alpha - a)).abs() < 1e-12);
+        let profile = Profile::from_field(&field, mu);
+        let (a1, b1) = Zone { p, r, kappa: -1.0, mu, c }
+            .compatible_bracketed(&profile, &mut RootStats::default())
+            .expect("a compatible zone");
+        assert!((a1 - a).abs() < 1e-12 && (b1 - b).abs() < 1e-12, "[{a1}, {b1}] vs [{a}, {b}]");
     }
 }
