@@ -35,57 +35,88 @@ const RESIDUAL_REL: f64 = 1e-11;
 /// Newton iterations of one zone (it converges in a handful from the violated stretch).
 const MAX_NEWTON: usize = 60;
 
-/// Repairs the stretches of `profile` beyond the limit at m'v² = `c` that lie between stuck
-/// rope; returns how many it repaired.
+/// Repairs the stretches of `profile` beyond the limit at m'v² = `c`; returns how many it
+/// repaired. One stretch at a time, the profile searched afresh after each: first those at
+/// the ends of the wrap (a slip zone at an end is held by the end's tension alone), then the
+/// longest. The order does not depend on the direction of the sweep, so the mirror image of a
+/// profile is repaired into the mirror image of its repair.
 pub fn repair(profile: &mut Profile, c: f64, mu: f64, stats: &mut RootStats) -> u64 {
-    let m = profile.len();
-    if m < 2 {
+    if profile.len() < 2 {
         return 0;
     }
     let law = ContactLaw::new(mu, c);
-    let mut last = profile.len();
+    let alpha = profile.wrap_angle_rad();
     let mut repaired = 0;
+    // Each repair lays one zone at the new limit; a profile of m pieces has at most m stretches,
+    // and a zone can cut one stretch in two, so 2m + 2 repairs bound any sequence.
+    let cap = 2 * profile.len() as u64 + 2;
+    let mut previous = None;
+    while repaired < cap {
+        let stretches = stretches(profile, &law, stats);
+        let at_end = |s: &Stretch| s.p <= 0.0 || s.r >= alpha;
+        let Some(next) = stretches.into_iter().max_by(|x, y| {
+            (at_end(x), x.r - x.p).partial_cmp(&(at_end(y), y.r - y.p)).unwrap_or(std::cmp::Ordering::Equal)
+        }) else {
+            break;
+        };
+        let Stretch { i, j, p, r, kappa } = next;
+        if previous == Some((p, r)) {
+            // The same stretch again: its zone did not take it below the limit (round-off of a
+            // zone at the limit itself); nothing more to slip.
+            break;
+        }
+        previous = Some((p, r));
+        let zone = Zone { p, r, kappa, mu, c };
+        let piece = zone.solve(profile, i, j, stats);
+        splice(profile, piece.theta0_rad, piece.theta1_rad, piece);
+        repaired += 1;
+    }
+    repaired
+}
+
+/// A stretch beyond the limit: pieces `i..=j`, `[p, r]`, friction of sign −κ.
+struct Stretch {
+    i: usize,
+    j: usize,
+    p: f64,
+    r: f64,
+    kappa: f64,
+}
+
+/// The stretches of `profile` beyond the limit of `law`, left to right (slivers beyond it by
+/// the round-off of their own ends left out: nothing to slip).
+fn stretches(profile: &Profile, law: &ContactLaw, stats: &mut RootStats) -> Vec<Stretch> {
+    let (c, last) = (law.centrifugal_n, profile.len());
+    let mut found = Vec::new();
     let mut i = 0;
     while i < last {
         if profile.limit_n(i) >= c {
             i += 1;
             continue;
         }
-        let Some((p, sign)) = violated_start(&profile.piece(i), &law, stats) else {
+        let Some((p, sign)) = violated_start(&profile.piece(i), law, stats) else {
             i += 1;
             continue;
         };
         // Extend over the following pieces beyond the limit with the same sign of friction.
         let mut j = i;
-        let mut r = violated_end(&profile.piece(j), &law, stats).unwrap_or(profile.piece(j).theta1_rad);
+        let mut r = violated_end(&profile.piece(j), law, stats).unwrap_or(profile.piece(j).theta1_rad);
         while j + 1 < last && r >= profile.piece(j).theta1_rad {
             let next = profile.piece(j + 1);
-            match violated_start(&next, &law, stats) {
+            match violated_start(&next, law, stats) {
                 Some((start, s)) if s == sign && start <= next.theta0_rad => {
                     j += 1;
-                    r = violated_end(&next, &law, stats).unwrap_or(next.theta1_rad);
+                    r = violated_end(&next, law, stats).unwrap_or(next.theta1_rad);
                 }
                 _ => break,
             }
         }
-        if r - p < MIN_PIECE_RAD {
-            // A sliver beyond the limit by round-off of its own ends: nothing to slip.
-            i = j + 1;
-            continue;
+        if r - p >= MIN_PIECE_RAD {
+            found.push(Stretch { i, j, p, r, kappa: if sign { -1.0 } else { 1.0 } });
         }
-        let kappa = if sign { -1.0 } else { 1.0 };
-        let zone = Zone { p, r, kappa, mu, c };
-        let (a, b) = zone.solve(profile, i, j, stats);
-        let piece = Piece::exponential(a, b, c, profile.tension_n(a) - c, kappa * mu);
-        let before = profile.len();
-        splice(profile, a, b, piece);
-        last = (last + profile.len()).saturating_sub(before);
-        repaired += 1;
-        // Go on from the piece holding b: the rest of a stretch the zone cut may still be
-        // beyond the limit (the zone itself is not: it is at the new m'v²).
-        i = profile_index(profile, b);
+        i = j + 1;
     }
-    repaired
+    found
 }
 
 /// One stretch beyond the limit, `[p, r]`, with friction of sign −κ, at m'v² = `c`.
@@ -104,7 +135,7 @@ impl Zone {
     /// starts at that side, `T_z = T_o` there, and runs at the limit until it meets the stuck
     /// rope on the other side — as a slip zone grows from an end. When neither side is
     /// stuck, or the compatible zone cannot be found, it starts from the high-tension side.
-    fn solve(&self, profile: &Profile, i: usize, j: usize, stats: &mut RootStats) -> (f64, f64) {
+    fn solve(&self, profile: &Profile, i: usize, j: usize, stats: &mut RootStats) -> Piece {
         let stuck = |k: Option<usize>| k.is_some_and(|k| !is_line(&profile.piece(k), self.mu));
         let left_stuck = self.p > 0.0 && stuck(i.checked_sub(1).filter(|_| profile.piece(i).theta0_rad >= self.p));
         let right_stuck = self.r < profile.wrap_angle_rad()
@@ -112,11 +143,13 @@ impl Zone {
         let left_inside = self.p > profile.piece(i).theta0_rad;
         let right_inside = self.r < profile.piece(j).theta1_rad;
         let (left_ok, right_ok) = (left_stuck || left_inside, right_stuck || right_inside);
-        if left_ok
-            && right_ok
-            && let Some(zone) = self.compatible(profile).or_else(|| self.compatible_bracketed(profile, stats))
-        {
-            return zone;
+        if left_ok && right_ok {
+            if let Some(zone) = self.compatible(profile) {
+                return self.piece(profile, zone, false);
+            }
+            if let Some(zone) = self.compatible_bracketed(profile, stats) {
+                return self.piece(profile, zone, self.kappa > 0.0);
+            }
         }
         let alpha = profile.wrap_angle_rad();
         let from_left = match (left_ok, right_ok) {
@@ -128,7 +161,21 @@ impl Zone {
             // Neither or both: the high-tension side (left for positive friction).
             _ => self.kappa < 0.0,
         };
-        self.one_sided(profile, from_left, stats)
+        let zone = self.one_sided(profile, from_left, stats);
+        self.piece(profile, zone, !from_left)
+    }
+
+    /// The zone over `[a, b]` at the limit, through the stuck rope's tension at its pinned end
+    /// (b if `pin_right`, else a): a zone that runs from its pin to an end of the wrap meets
+    /// the old profile only there.
+    fn piece(&self, profile: &Profile, (a, b): (f64, f64), pin_right: bool) -> Piece {
+        let km = self.kappa * self.mu;
+        let n0 = if pin_right {
+            (profile.tension_n(b) - self.c) * (km * (a - b)).exp()
+        } else {
+            profile.tension_n(a) - self.c
+        };
+        Piece::exponential(a, b, self.c, n0, km)
     }
 
     /// The compatible zone by Newton's method on (a, b):
