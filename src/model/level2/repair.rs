@@ -47,8 +47,9 @@ pub fn repair(profile: &mut Profile, c: f64, mu: f64, stats: &mut RootStats) -> 
     let law = ContactLaw::new(mu, c);
     let alpha = profile.wrap_angle_rad();
     let mut repaired = 0;
-    // Each repair lays one zone at the new limit; a profile of m pieces has at most m stretches,
-    // and a zone can cut one stretch in two, so 2m + 2 repairs bound any sequence.
+    // A guard only: a profile of m pieces holds at most m stretches and each repair takes one
+    // below the limit (a zone may leave the rest of a stretch it cut), so 2m + 2 repairs are
+    // more than any profile needs.
     let cap = 2 * profile.len() as u64 + 2;
     let mut previous = None;
     while repaired < cap {
