@@ -275,62 +275,45 @@ impl Zone {
     /// the pin moves into the stuck rope. Its breakpoints bracket it (Brent's method to
     /// 1e-15 rad); `None` when it would reach an end.
     fn compatible_bracketed(&self, profile: &Profile, stats: &mut RootStats) -> Option<(f64, f64)> {
-        let Zone { p, r, kappa, mu, c } = *self;
-        let from_left = kappa < 0.0;
-        let km = kappa * mu;
+        let from_left = self.kappa < 0.0;
         let inner = std::cell::RefCell::new(RootStats::default());
         let area = |pin: f64| {
             let (a, b) = self.pinned(profile, from_left, pin, &mut inner.borrow_mut());
-            let n = profile.tension_n(pin) - c;
-            let zone = if from_left {
-                c * (b - a) + n * ((km * (b - a)).exp() - 1.0) / km
+            self.piece(profile, (a, b), !from_left).integral_n_rad(a, b) - integral(profile, a, b)
+        };
+        // The next breakpoint past x, going into the stuck rope (none past the end of the wrap).
+        let beyond = |x: f64| {
+            let k = profile_index(profile, x);
+            if from_left {
+                let t0 = profile.piece(k).theta0_rad;
+                if t0 < x { Some(t0) } else { k.checked_sub(1).map(|k| profile.piece(k).theta0_rad) }
             } else {
-                c * (b - a) + n * (1.0 - (km * (a - b)).exp()) / km
-            };
-            zone - integral(profile, a, b)
+                let t1 = profile.piece(k).theta1_rad;
+                if t1 > x { Some(t1) } else { (k + 1 < profile.len()).then(|| profile.piece(k + 1).theta1_rad) }
+            }
         };
         // Step from the stretch into the stuck rope, breakpoint by breakpoint, to a sign change.
-        let start = if from_left { p } else { r };
+        let start = if from_left { self.p } else { self.r };
         let mut near = (start, area(start));
-        if near.1 <= 0.0 {
-            return Some(self.pinned(profile, from_left, start, stats));
-        }
-        let mut k = profile_index(profile, start);
-        let far = loop {
-            let piece = profile.piece(k);
-            let x = if from_left { piece.theta0_rad } else { piece.theta1_rad };
-            let x = if (from_left && x >= near.0) || (!from_left && x <= near.0) {
-                // The stretch starts on a breakpoint: go on to the next piece.
-                match (from_left, k) {
-                    (true, 0) => return None,
-                    (true, _) => {
-                        k -= 1;
-                        continue;
-                    }
-                    (false, _) if k + 1 >= profile.len() => return None,
-                    (false, _) => {
-                        k += 1;
-                        continue;
-                    }
-                }
-            } else {
-                x
-            };
-            let f = area(x);
-            if f <= 0.0 {
-                break (x, f);
-            }
-            near = (x, f);
-        };
-        let pin = if far.1 == 0.0 {
-            far.0
+        let pin = if near.1 <= 0.0 {
+            Some(start)
         } else {
-            bracketed(area, far.0.min(near.0), far.0.max(near.0), 1e-15, stats).ok()?
+            let far = loop {
+                let Some(x) = beyond(near.0) else { break None };
+                let f = area(x);
+                if f <= 0.0 {
+                    break Some((x, f));
+                }
+                near = (x, f);
+            };
+            far.and_then(|(x, f)| {
+                if f == 0.0 { Some(x) } else { bracketed(area, x.min(near.0), x.max(near.0), 1e-15, stats).ok() }
+            })
         };
         let extra = inner.into_inner();
         stats.calls += extra.calls;
         stats.iterations += extra.iterations;
-        Some(self.pinned(profile, from_left, pin, stats))
+        pin.map(|pin| self.pinned(profile, from_left, pin, stats))
     }
 }
 
