@@ -115,40 +115,58 @@ pub enum FitError {
 }
 
 /// One orientation of the picture: entry side and the sign of k.
-#[derive(Clone, Copy)]
+#[derive(Clone)]
 struct Shape<'a> {
     theta_rad: &'a [f64],
     y_n: &'a [f64],
+    /// `e^{k(θᵢ − α)}` (entry at side 1) or `e^{−kθᵢ}` (entry at side 2): the shape at sample
+    /// `i` is this times `e^{kβ}` where the sample lies in the active arc, so a trial β costs
+    /// one exponential rather than one per sample.
+    scaled: Vec<f64>,
     alpha_rad: f64,
     k: f64,
     entry: Side,
 }
 
-impl Shape<'_> {
-    /// φ at θ for an active arc of length β (0 on the idle arc).
-    fn phi(&self, theta: f64, beta: f64) -> f64 {
-        let phi = match self.entry {
-            Side::One => theta - (self.alpha_rad - beta),
-            Side::Two => beta - theta,
-        };
-        phi.max(0.0)
+impl<'a> Shape<'a> {
+    fn new(theta_rad: &'a [f64], y_n: &'a [f64], alpha_rad: f64, k: f64, entry: Side) -> Self {
+        let scaled = theta_rad
+            .iter()
+            .map(|&t| match entry {
+                Side::One => (k * (t - alpha_rad)).exp(),
+                Side::Two => (-k * t).exp(),
+            })
+            .collect();
+        Self { theta_rad, y_n, scaled, alpha_rad, k, entry }
+    }
+
+    /// Whether θ lies in the active arc of length β (φ > 0; φ = 0 on the idle arc).
+    fn active(&self, theta: f64, beta: f64) -> bool {
+        match self.entry {
+            Side::One => theta - (self.alpha_rad - beta) > 0.0,
+            Side::Two => beta - theta > 0.0,
+        }
+    }
+
+    /// The shape `sᵢ = e^{kφᵢ}` at every sample for an active arc of length β.
+    fn shapes(&self, beta: f64) -> impl Iterator<Item = f64> + '_ {
+        let growth = (self.k * beta).exp();
+        self.theta_rad.iter().zip(&self.scaled).map(move |(&t, &e)| if self.active(t, beta) { e * growth } else { 1.0 })
     }
 
     /// Best A for this β and the squared residual.
     fn solve(&self, beta: f64) -> (f64, f64) {
         let (mut sy, mut ss) = (0.0, 0.0);
-        for (&t, &y) in self.theta_rad.iter().zip(self.y_n) {
-            let s = (self.k * self.phi(t, beta)).exp();
+        for (s, &y) in self.shapes(beta).zip(self.y_n) {
             sy += s * y;
             ss += s * s;
         }
         let a = sy / ss;
         let r = self
-            .theta_rad
-            .iter()
+            .shapes(beta)
             .zip(self.y_n)
-            .map(|(&t, &y)| {
-                let d = y - a * (self.k * self.phi(t, beta)).exp();
+            .map(|(s, &y)| {
+                let d = y - a * s;
                 d * d
             })
             .sum();
@@ -187,19 +205,23 @@ pub fn creep_fit(d: &Distribution, centrifugal_n: f64, travel: Option<Direction>
     let mut best: Option<(Shape, usize, f64)> = None;
     for &entry in entries {
         for k in [-d.mu, d.mu] {
-            let shape = Shape { theta_rad: &theta_rad, y_n: &y_n, alpha_rad, k, entry };
-            for i in 0..=steps {
-                let r = shape.solve(alpha_rad * i as f64 / steps as f64).1;
-                if best.as_ref().is_none_or(|b| r < b.2) {
-                    best = Some((shape, i, r));
-                }
+            let shape = Shape::new(&theta_rad, &y_n, alpha_rad, k, entry);
+            let scan = (0..=steps).map(|i| (i, shape.solve(alpha_rad * i as f64 / steps as f64).1));
+            let Some((i, r)) = scan.fold(None, |b: Option<(usize, f64)>, (i, r)| match b {
+                Some((_, rb)) if rb <= r => b,
+                _ => Some((i, r)),
+            }) else {
+                continue;
+            };
+            if best.as_ref().is_none_or(|b| r < b.2) {
+                best = Some((shape, i, r));
             }
         }
     }
     let Some((shape, i, _)) = best else { return Err(FitError::TooFewSamples) };
     let grid = |j: usize| alpha_rad * j as f64 / steps as f64;
     let (lo, hi) = (grid(i.saturating_sub(1)), grid((i + 1).min(steps)));
-    let result = Executor::new(shape, BrentOpt::new(lo, hi).set_tolerance(f64::EPSILON.sqrt(), 1e-12))
+    let result = Executor::new(shape.clone(), BrentOpt::new(lo, hi).set_tolerance(f64::EPSILON.sqrt(), 1e-12))
         .configure(|s| s.max_iters(MAX_ITERS))
         .timer(false)
         .run()
