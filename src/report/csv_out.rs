@@ -1,5 +1,6 @@
 //! CSV reports: summary.csv (one row per scene), `<scene>/distribution.csv` and `<scene>/history.csv`.
 
+use super::number::{display, display_opt};
 use super::summary::Summary;
 use crate::design::HISTORY_COLUMNS;
 use crate::model::history::HistoryRow;
@@ -37,14 +38,14 @@ pub fn write_distribution<W: Write>(out: W, blocks: &[&Distribution]) -> csv::Re
     for d in blocks {
         for s in &d.samples {
             w.write_record([
-                d.t_s.to_string(),
-                s.theta_deg.to_string(),
-                s.tension_n.to_string(),
-                s.normal_n_per_rad.to_string(),
-                s.friction_n_per_rad.to_string(),
-                s.utilization.to_string(),
+                display(d.t_s),
+                display(s.theta_deg),
+                display(s.tension_n),
+                display(s.normal_n_per_rad),
+                display(s.friction_n_per_rad),
+                display(s.utilization),
                 s.state.as_str().to_string(),
-                s.slip_velocity_m_s.map_or_else(String::new, |v| v.to_string()),
+                display_opt(s.slip_velocity_m_s),
                 s.sliding().to_string(),
             ])?;
         }
@@ -64,26 +65,25 @@ pub fn write_history<W: Write>(
 ) -> csv::Result<()> {
     let mut w = csv::Writer::from_writer(out);
     w.write_record(HISTORY_COLUMNS.map(|(name, _)| name))?;
-    let opt = |v: Option<f64>| v.map_or_else(String::new, |v| v.to_string());
     for (i, r) in rows.iter().enumerate() {
         let anchors = anchors_n.get(i);
         let mids = midpoints_n.get(i);
         w.write_record([
-            r.t_s.to_string(),
-            r.t1_n.to_string(),
-            r.t2_n.to_string(),
-            r.speed_m_s.to_string(),
-            r.accel_m_s2.to_string(),
-            opt(r.jdp_deg),
-            r.positive_arc_deg.to_string(),
-            r.reverse_arc_deg.to_string(),
-            r.max_utilization.to_string(),
-            opt(r.safety_factor),
+            display(r.t_s),
+            display(r.t1_n),
+            display(r.t2_n),
+            display(r.speed_m_s),
+            display(r.accel_m_s2),
+            display_opt(r.jdp_deg),
+            display(r.positive_arc_deg),
+            display(r.reverse_arc_deg),
+            display(r.max_utilization),
+            display_opt(r.safety_factor),
             r.gross_slip.to_string(),
-            opt(anchors.map(|a| a[0])),
-            opt(anchors.map(|a| a[1])),
-            opt(mids.map(|a| a[0])),
-            opt(mids.map(|a| a[1])),
+            display_opt(anchors.map(|a| a[0])),
+            display_opt(anchors.map(|a| a[1])),
+            display_opt(mids.map(|a| a[0])),
+            display_opt(mids.map(|a| a[1])),
         ])?;
     }
     w.flush()?;
@@ -110,16 +110,16 @@ pub fn write_tracks<W: Write>(out: W, tracks: &[crate::model::track::Track]) -> 
         for r in &track.rows {
             w.write_record([
                 track.label.clone(),
-                r.t_s.to_string(),
-                r.theta_deg.to_string(),
-                r.tension_n.to_string(),
-                r.normal_n_per_rad.to_string(),
-                r.friction_n_per_rad.to_string(),
-                r.utilization.to_string(),
+                display(r.t_s),
+                display(r.theta_deg),
+                display(r.tension_n),
+                display(r.normal_n_per_rad),
+                display(r.friction_n_per_rad),
+                display(r.utilization),
                 r.state.as_str().to_string(),
-                r.contact_force_n.to_string(),
-                r.friction_force_n.to_string(),
-                r.impulse_n_s.to_string(),
+                display(r.contact_force_n),
+                display(r.friction_force_n),
+                display(r.impulse_n_s),
             ])?;
         }
     }

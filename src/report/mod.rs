@@ -14,6 +14,7 @@ pub mod csv_out;
 pub mod history_figure;
 pub mod html;
 pub mod matrix;
+pub mod number;
 pub mod plot;
 pub mod plot_colorbar;
 pub mod plot_distribution;
