@@ -30,7 +30,7 @@ fn bench(c: &mut Criterion) {
     let mut group = c.benchmark_group("level2");
     group.sample_size(10);
     // The stepping itself: history rows once a second (100 rows), as a duty cycle reports.
-    let sparse = Output { snapshots_s: &[], step_s: Some(1.0), sample_rows: false };
+    let sparse = Output { snapshots_s: &[], step_s: Some(1.0), sample_rows: false, utilization_map: true };
     for (name, output) in
         [("history_10k_samples_fast", sparse), ("history_10k_samples_fast_row_every_sample", Output::default())]
     {

@@ -183,8 +183,12 @@ fn history(
     solver: Solver,
 ) -> Estimate {
     let samples = &h.samples;
-    let output =
-        crate::model::history::Output { snapshots_s: &h.snapshots_s, step_s: h.output_step_s, sample_rows: true };
+    let output = crate::model::history::Output {
+        snapshots_s: &h.snapshots_s,
+        step_s: h.output_step_s,
+        sample_rows: true,
+        utilization_map: true,
+    };
     let times = output.times(samples);
     let mut drivers = vec![format!("{} samples (t_s or csv)", samples.len())];
     if let Some(step) = h.output_step_s {

@@ -380,6 +380,7 @@ fn run_command(args: RunArgs) -> anyhow::Result<bool> {
         nodes: args.model.nodes,
         solver: args.solver.into(),
         cost_limit_s: args.model.cost_limit_s,
+        utilization_map: !args.no_plots,
     };
     let out_dir = args.out.clone().unwrap_or_else(|| default_out_dir(&args.sheet));
     refuse_foreign(&out_dir)?;

@@ -317,3 +317,29 @@ fn duty_cycle_arcs_and_jdp_do_not_depend_on_the_output_step() {
         assert!(compared > 1000, "{name}: {compared} common rows");
     }
 }
+
+/// A run without plots leaves out the θ–t map of friction utilization and nothing else: the
+/// history rows, snapshots and final state are those of a run that keeps it, for a lift and a
+/// lowering trip (and a load history), and the kept map has one row (of the map's fixed
+/// columns) per history row.
+#[test]
+fn a_run_without_the_utilization_map_changes_nothing_else() {
+    let d = design();
+    let scenes: Vec<_> = ["duty-MID", "duty-MID-lower", "mid-load-and-lift"]
+        .iter()
+        .map(|n| d.scenes.iter().find(|s| s.name == *n).expect("scene in the bundled sheet"))
+        .collect();
+    let with = run::run(&d, &scenes, Options { nodes: 90, ..Options::default() }).expect("runs").scenes;
+    let without = run::run(&d, &scenes, Options { nodes: 90, utilization_map: false, ..Options::default() })
+        .expect("runs")
+        .scenes;
+    for (a, b) in with.iter().zip(&without) {
+        let (ha, hb) = (a.history.as_ref().expect("history"), b.history.as_ref().expect("history"));
+        assert_eq!(ha.rows, hb.rows, "{}", a.name);
+        assert_eq!(a.snapshots, b.snapshots, "{}", a.name);
+        assert_eq!(a.wrap, b.wrap, "{}", a.name);
+        assert_eq!(ha.map.len(), ha.rows.len(), "{}", a.name);
+        assert!(ha.map.iter().all(|row| !row.is_empty() && row.len() == ha.map[0].len()), "{}", a.name);
+        assert!(hb.map.is_empty(), "{}", a.name);
+    }
+}

@@ -195,3 +195,32 @@ fn a_slack_rope_in_an_emergency_stop_names_side_time_tension_and_the_deceleratio
         }
     }
 }
+
+/// The emergency margins' trial stops continue from the scene's own run of its suspended ropes
+/// (kept at the brake) as they do from a run of their own: the same state before the brake,
+/// the same worst sample of every trial deceleration, in both directions, with the sides of the
+/// scene's run on one thread or on two.
+#[test]
+fn trial_stops_from_the_scene_s_own_run_are_those_of_a_fresh_run() {
+    use wrapcalc::dynamics::DynSample;
+    use wrapcalc::model::level4::StopTrials;
+    let lowest = |s: &DynSample| s.t1_n.min(s.t2_n);
+    let ratio = |s: &DynSample| s.t1_n.max(s.t2_n) / s.t1_n.min(s.t2_n);
+    for mirror in [false, true] {
+        let (design, cycle) = cycle_of(30.0, 1.5, mirror);
+        let hoist = design.hoist.clone().expect("a hoist");
+        let fresh = StopTrials::new(&design, &hoist, &cycle).expect("trials");
+        for parallel in [false, true] {
+            let run = level4::scene_ropes(&design, &hoist, &cycle, parallel).expect("the ropes run");
+            let reused = StopTrials::from_run(&design, &hoist, &cycle, run).expect("trials");
+            for residual in [&lowest as &dyn Fn(&DynSample) -> f64, &ratio] {
+                let before = fresh.worst_before(residual);
+                assert_eq!(before, reused.worst_before(residual), "mirror {mirror}");
+                for d in [0.8, 1.5, 3.0] {
+                    let (a, b) = (fresh.worst(d, residual, before), reused.worst(d, residual, before));
+                    assert!(a.is_finite() && a == b, "mirror {mirror}, {d} m/s²: {a} against {b}");
+                }
+            }
+        }
+    }
+}

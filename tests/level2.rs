@@ -352,7 +352,7 @@ fn adding_samples_on_the_straight_lines_and_reporting_more_often_change_nothing(
     let p = params(Solver::Fast);
     let (a, _) = final_field(p, &base);
     let (b, _) = final_field(p, &fine);
-    let often = Output { snapshots_s: &[2.5, 5.5], step_s: Some(0.007), sample_rows: true };
+    let often = Output { snapshots_s: &[2.5, 5.5], step_s: Some(0.007), sample_rows: true, utilization_map: true };
     let run = run_history(p, &base, often, Profile::uniform(alpha(), T0, MU), 180).expect("run");
     let c = run.last().distribution.samples.clone();
     let law = ContactLaw::new(MU, 40.0);

@@ -88,7 +88,7 @@ proptest! {
         let p = Params { mu, wrap_angle_rad: alpha, radius_m: 2.0, mass_per_m_kg: m_per_m, ea_n: 1e8, solver: Solver::Fast };
         let snapshots: Vec<f64> = samples.iter().map(|s| s.t_s).collect();
         let initial = Profile::uniform(alpha, samples[0].t1_n, mu);
-        let run = run_history(p, &samples, Output { snapshots_s: &snapshots, step_s: None, sample_rows: true }, initial, nodes).expect("a valid history runs");
+        let run = run_history(p, &samples, Output { snapshots_s: &snapshots, step_s: None, sample_rows: true, utilization_map: true }, initial, nodes).expect("a valid history runs");
         prop_assert_eq!(run.rows.len(), samples.len());
         for snap in &run.snapshots {
             for x in &snap.distribution.samples {
@@ -274,7 +274,7 @@ fn resampling_law(
     let start = samples[0].t1_n;
     let (a, _) = final_state(p, samples, start);
     let (b, _) = final_state(p, &fine, start);
-    let output = Output { snapshots_s: &[], step_s: Some(step), sample_rows: true };
+    let output = Output { snapshots_s: &[], step_s: Some(step), sample_rows: true, utilization_map: true };
     let run = run_history(p, samples, output, Profile::uniform(alpha, start, mu), 90).expect("runs");
     let law = ContactLaw::new(mu, 0.0);
     for i in 0..=400 {

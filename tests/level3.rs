@@ -184,7 +184,7 @@ fn rolling_keeps_coulomb_and_reports_solver_tallies() {
         HistorySample { t_s: 2.0, t1_n: 2.2e5, t2_n: 1.9e5, speed_m_s: 1.0 },
         HistorySample { t_s: 6.0, t1_n: 2.0e5, t2_n: 2.1e5, speed_m_s: 1.0 },
     ];
-    let out = Output { snapshots_s: &[], step_s: Some(0.5), sample_rows: true };
+    let out = Output { snapshots_s: &[], step_s: Some(0.5), sample_rows: true, utilization_map: true };
     let (run, stats) = level3::run_history(p, &samples, out, State::uniform(alpha, 180, 2.05e5)).expect("runs");
     assert!(run.stats.qp_solved >= run.stats.increments);
     assert_eq!(stats.clarabel.solved, run.stats.qp_solved, "every clarabel verdict is tallied");
@@ -208,7 +208,7 @@ fn fast_and_clarabel_agree() {
         HistorySample { t_s: 3.0, t1_n: 2.2e5, t2_n: 2.1e5, speed_m_s: 1.0 },
         HistorySample { t_s: 5.0, t1_n: 2.0e5, t2_n: 2.3e5, speed_m_s: 1.0 },
     ];
-    let out = Output { snapshots_s: &[1.0], step_s: Some(0.25), sample_rows: true };
+    let out = Output { snapshots_s: &[1.0], step_s: Some(0.25), sample_rows: true, utilization_map: true };
     let run = |solver: Solver| {
         let mut p = params(0.25, alpha, EA_N / (lambda_m * lambda_m));
         p.wrap.solver = solver;

@@ -308,7 +308,7 @@ fn check_walk(samples: usize, nodes: usize) {
         ea_n: 2.634e8,
         solver: Solver::Fast,
     };
-    let output = Output { snapshots_s: &[], step_s: Some(1.0), sample_rows: false };
+    let output = Output { snapshots_s: &[], step_s: Some(1.0), sample_rows: false, utilization_map: true };
     let run = run_history(p, &history, output, Profile::uniform(alpha, 2e5, 0.25), nodes).expect("runs");
     assert!(run.stats.increments as usize >= samples - 1, "{} increments", run.stats.increments);
     // Rows: one per second of the history plus its ends.

@@ -320,7 +320,14 @@ pub fn run_checks(case: Case) -> Result<Outcome, RunError> {
 pub fn run_closed_form(case: Case, level: Level, solver: Solver, nodes: usize) -> Result<Outcome, RunError> {
     let design = design_of(case).expect("a closed-form case has a design");
     let scenes: Vec<&Scene> = design.scenes.iter().collect();
-    let options = Options { request: Request::Full { forced_level: Some(level) }, nodes, solver, ..Options::default() };
+    // The bench plots no θ–t map: its runs leave it out, as a run without plots does.
+    let options = Options {
+        request: Request::Full { forced_level: Some(level) },
+        nodes,
+        solver,
+        utilization_map: false,
+        ..Options::default()
+    };
     let result = run::run(&design, &scenes, options)?;
     let scene = &result.scenes[0];
     let error = scene.wrap.as_ref().and_then(|w| tension_error(case, &w.distribution));
@@ -349,7 +356,7 @@ pub fn duty_design(sheet: &Path, time_step_s: f64) -> Result<Design, super::Benc
 /// One level-4 run of the duty cycle.
 pub fn run_duty(design: &Design, nodes: usize) -> Result<Outcome, RunError> {
     let scenes: Vec<&Scene> = design.scenes.iter().collect();
-    let result: RunResult = run::run(design, &scenes, Options { nodes, ..Options::default() })?;
+    let result: RunResult = run::run(design, &scenes, Options { nodes, utilization_map: false, ..Options::default() })?;
     let Some(scene) = result.scenes.into_iter().next() else { return Ok(Outcome::default()) };
     let steps = scene.history.as_ref().map(|h| h.stats.increments);
     let rows = scene.history.map(|h| h.rows).unwrap_or_default();

@@ -44,7 +44,7 @@ pub fn run_walk(samples: &[HistorySample], nodes: usize) -> Result<Outcome, Leve
         ea_n: EA_N,
         solver: Solver::Fast,
     };
-    let output = Output { snapshots_s: &[], step_s: Some(1.0), sample_rows: false };
+    let output = Output { snapshots_s: &[], step_s: Some(1.0), sample_rows: false, utilization_map: true };
     let initial = Profile::uniform(alpha_rad(), samples[0].t1_n, MU);
     let run = level2::run_history(params, samples, output, initial, nodes)?;
     Ok(Outcome { error: None, steps: Some(run.stats.increments), duty: None })

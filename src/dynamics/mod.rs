@@ -59,6 +59,8 @@ mod braked;
 mod profile;
 mod rope;
 mod simulate;
+mod split;
+mod sweep;
 
 pub use braked::{PulleyBody, braked_stop};
 pub use profile::{AT_REST_M_S, Kinematics, MotionProfile, Stage};

@@ -224,15 +224,18 @@ fn write_scene(
             };
             let title = format!("{} — history, level {}", scene.name, scene.plan.level);
             plot_history::plot_history(&scene_dir.join("history.png"), &title, &history.rows, plot)?;
-            let title = format!("{} — friction utilization over the wrap (θ–t)", scene.name);
-            plot_history::plot_wrap_map(
-                &scene_dir.join("wrap_map.png"),
-                &title,
-                &history.rows,
-                wrap.distribution.wrap_angle_deg,
-                &history.map,
-                history.pulley_radius_m,
-            )?;
+            // The map is kept only by a run that plots (`run::Options::utilization_map`).
+            if !history.map.is_empty() {
+                let title = format!("{} — friction utilization over the wrap (θ–t)", scene.name);
+                plot_history::plot_wrap_map(
+                    &scene_dir.join("wrap_map.png"),
+                    &title,
+                    &history.rows,
+                    wrap.distribution.wrap_angle_deg,
+                    &history.map,
+                    history.pulley_radius_m,
+                )?;
+            }
         }
     }
     Ok(())

@@ -6,12 +6,19 @@ use crate::design::{Design, Direction, Output, Scene, SceneKind};
 use crate::fit;
 use crate::margins;
 use crate::model::level0::EndState;
-use crate::model::level4::StopTrials;
+use crate::model::level4::{RopeRun, StopTrials};
 use crate::planner::Level;
 
 /// The answers derived from a scene's result that it asks for: margins from its state (a time
 /// scene's worst instant), the creep-theory fit of its reported distribution.
-pub(super) fn derive_answers(design: &Design, scene: &Scene, result: &mut SceneResult) -> Result<(), RunError> {
+/// A duty cycle's emergency margins continue from its own suspended ropes' run (`ropes`) when
+/// it is given.
+pub(super) fn derive_answers(
+    design: &Design,
+    scene: &Scene,
+    result: &mut SceneResult,
+    ropes: Option<RopeRun>,
+) -> Result<(), RunError> {
     if scene.outputs.contains(Output::Margins) {
         let (at_t_s, state) = match result.worst {
             Some((t, s)) => (Some(t), s),
@@ -31,7 +38,10 @@ pub(super) fn derive_answers(design: &Design, scene: &Scene, result: &mut SceneR
         // An emergency stop with the ropes' dynamics (level 4): each trial runs the ropes.
         if let (SceneKind::DutyCycle(cycle), Some(hoist), Level::Dynamic4) =
             (&scene.kind, &design.hoist, result.plan.level)
-            && let Some(trials) = StopTrials::new(design, hoist, cycle)
+            && let Some(trials) = match ropes {
+                Some(run) => StopTrials::from_run(design, hoist, cycle, run),
+                None => StopTrials::new(design, hoist, cycle),
+            }
         {
             let (slip, sf) = margins::emergency(design, &trials, &mut m.root_finding);
             m.emergency_braking_to_slip_m_s2 = Some(slip);

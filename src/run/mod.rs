@@ -54,6 +54,9 @@ pub struct Options {
     /// A scene whose estimated run time ([`crate::cost`]) exceeds this many seconds is refused
     /// before the run starts.
     pub cost_limit_s: u64,
+    /// Whether time scenes keep the θ–t map of friction utilization (one row of the output
+    /// grid per history row), which only the map's figure shows: a run without plots skips it.
+    pub utilization_map: bool,
 }
 
 impl Default for Options {
@@ -63,6 +66,7 @@ impl Default for Options {
             nodes: DEFAULT_NODES,
             solver: Solver::Fast,
             cost_limit_s: cost::DEFAULT_LIMIT_S,
+            utilization_map: true,
         }
     }
 }
@@ -299,13 +303,16 @@ pub fn run_with_progress(
 ) -> Result<RunResult, RunError> {
     let estimates = estimate(design, scenes, options)?;
     let start = Instant::now();
+    // With fewer scenes than threads, a scene steps the two sides of its suspended ropes on two
+    // threads; with more, the scenes keep the cores busy and the paired steps are cheaper.
+    let parallel_sides = scenes.len() < rayon::current_num_threads();
     // Scenes are independent: run in parallel, reported in the sheet's order.
     let scenes = scenes
         .par_iter()
         .zip(estimates)
         .map(|(s, e)| {
             let seconds = e.seconds;
-            let result = run_scene(design, s, options).map(|r| SceneResult { cost: Some(e), ..r });
+            let result = run_scene(design, s, options, parallel_sides).map(|r| SceneResult { cost: Some(e), ..r });
             progress(seconds);
             result
         })
@@ -338,15 +345,16 @@ pub fn run_all_with_progress(
     Ok(result)
 }
 
-fn run_scene(design: &Design, scene: &Scene, options: Options) -> Result<SceneResult, RunError> {
+/// Runs one scene (`parallel_sides`: its suspended ropes may take two threads).
+fn run_scene(design: &Design, scene: &Scene, options: Options, parallel_sides: bool) -> Result<SceneResult, RunError> {
     let start = Instant::now();
     let plan = planner::plan_with_lining(scene, options.request, design.lining.is_some())?;
-    let mut result = match &scene.kind {
-        SceneKind::Loads(loads) => run_loads(design, scene, loads, plan, options)?,
-        SceneKind::History(history) => run_history(design, scene, history, plan, options)?,
-        SceneKind::DutyCycle(cycle) => run_duty_cycle(design, scene, cycle, plan, options)?,
+    let (mut result, ropes) = match &scene.kind {
+        SceneKind::Loads(loads) => (run_loads(design, scene, loads, plan, options)?, None),
+        SceneKind::History(history) => (run_history(design, scene, history, plan, options)?, None),
+        SceneKind::DutyCycle(cycle) => run_duty_cycle(design, scene, cycle, plan, options, parallel_sides)?,
     };
-    derive_answers(design, scene, &mut result)?;
+    derive_answers(design, scene, &mut result, ropes)?;
     result.runtime_ms = start.elapsed().as_secs_f64() * 1e3;
     ensure_finite(&result)?;
     Ok(result)

@@ -11,7 +11,7 @@ use crate::dynamics::Kinematics;
 use crate::model::history;
 use crate::model::level0::{self, EndState};
 use crate::model::level1;
-use crate::model::level4::{self, Level4Error};
+use crate::model::level4::{self, Level4Error, RopeRun};
 use crate::model::stop;
 use crate::planner::{Level, Plan};
 
@@ -22,8 +22,12 @@ pub(super) fn run_history(
     plan: Plan,
     options: Options,
 ) -> Result<SceneResult, RunError> {
-    let output =
-        history::Output { snapshots_s: &history.snapshots_s, step_s: history.output_step_s, sample_rows: true };
+    let output = history::Output {
+        snapshots_s: &history.snapshots_s,
+        step_s: history.output_step_s,
+        sample_rows: true,
+        utilization_map: options.utilization_map,
+    };
     let travel = match history.samples.iter().map(|s| s.speed_m_s).find(|v| *v != 0.0) {
         Some(v) if v < 0.0 => Direction::Lower,
         Some(_) => Direction::Lift,
@@ -44,13 +48,16 @@ pub(super) fn run_history(
 /// wrap starts in the state the previous trip (the other way) left it in. The trip ends at the
 /// onset of gross slip, if any (the rest is not valid); its dynamic safety factor is the code's,
 /// on rigid ropes, with the level-4 value beside it ([`trip::code_and_rope_dynamics`]).
+/// Returns the suspended ropes' run with the result (the emergency margins continue from it);
+/// with `parallel_sides` its two sides run on two threads.
 pub(super) fn run_duty_cycle(
     design: &Design,
     scene: &Scene,
     cycle: &DutyCycleScene,
     plan: Plan,
     options: Options,
-) -> Result<SceneResult, RunError> {
+    parallel_sides: bool,
+) -> Result<(SceneResult, Option<RopeRun>), RunError> {
     let err = |source| RunError::Level4 { scene: scene.name.clone(), source };
     let Some(hoist) = &design.hoist else {
         return Err(err(Level4Error::NoHoist));
@@ -64,16 +71,22 @@ pub(super) fn run_duty_cycle(
     let (trip, dynamics) = if plan.level == Level::Closed0 {
         (rigid, None)
     } else {
-        let dynamics = level4::suspended_ropes(design, hoist, cycle).map_err(err)?;
+        let ropes = level4::scene_ropes(design, hoist, cycle, parallel_sides).map_err(err)?;
+        let dynamics = &ropes.samples;
         let kin = dynamics.iter().map(|s| Kinematics { x_m: s.x_m, speed_m_s: s.speed_m_s, accel_m_s2: s.accel_m_s2 });
-        (Trip::valid_part(design, level4::end_history(&dynamics), kin.collect()), Some((dynamics, rigid)))
+        (Trip::valid_part(design, level4::end_history(dynamics), kin.collect()), Some((ropes, rigid)))
     };
     refuse_slack(design, hoist, cycle, &trip.samples, plan.level).map_err(err)?;
     let accel = trip.accel();
     // Snapshots after the end of a trip that slipped grossly are not valid.
     let end_s = trip.samples.last().map_or(0.0, |s| s.t_s);
     let snapshots_s: Vec<f64> = cycle.snapshots_s.iter().copied().filter(|t| *t <= end_s).collect();
-    let output = history::Output { snapshots_s: &snapshots_s, step_s: Some(cycle.output_step_s), sample_rows: false };
+    let output = history::Output {
+        snapshots_s: &snapshots_s,
+        step_s: Some(cycle.output_step_s),
+        sample_rows: false,
+        utilization_map: options.utilization_map,
+    };
     let input = Samples {
         samples: &trip.samples,
         accel_m_s2: Some(&accel),
@@ -83,7 +96,8 @@ pub(super) fn run_duty_cycle(
         output,
     };
     let mut result = run_samples(design, scene, input, plan, options)?;
-    if let Some((dynamics, rigid)) = &dynamics {
+    if let Some((ropes, rigid)) = &dynamics {
+        let dynamics = &ropes.samples;
         let code = trip::code_classical(design, rigid);
         result.rope_dynamics_safety_factor = trip::code_and_rope_dynamics(design, &mut result.classical, &code);
         if let Some(history) = &mut result.history {
@@ -99,7 +113,7 @@ pub(super) fn run_duty_cycle(
     if let Some(stop) = &result.stop {
         trip::push_stop_checks(design, &mut result.classical, stop, &trip, &scene.name);
     }
-    Ok(result)
+    Ok((result, dynamics.map(|(ropes, _)| ropes)))
 }
 
 /// A duty cycle's end history must keep both ropes on the pulley: a slack rope is an error that

@@ -89,7 +89,7 @@ pub trait WrapModel {
 }
 
 /// Runs `model` through `samples`, reporting at the times of `output`: a row of history.csv and
-/// of the utilization map at each, a distribution (on `output_nodes` pitches) at each snapshot
+/// (when `output` asks for it) of the utilization map at each, a distribution (on `output_nodes` pitches) at each snapshot
 /// and at the last sample. The end state of a row is the history's interpolated sample with the
 /// speed's slope as acceleration, its safety factor measured against `e^{μα}`.
 pub fn run<M: WrapModel>(
@@ -109,7 +109,9 @@ pub fn run<M: WrapModel>(
         let snapshot = output.is_snapshot(t, samples);
         let summary = model.summary(snapshot)?;
         run.push_row(t, &end, &summary, limit, model.gross_slip());
-        run.map.push(model.utilization_row());
+        if output.utilization_map {
+            run.map.push(model.utilization_row());
+        }
         if snapshot {
             let distribution = model.distribution(t, &summary, output_nodes);
             run.snapshots.push(Snapshot { summary, distribution });

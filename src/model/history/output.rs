@@ -112,6 +112,8 @@ pub struct Output<'a> {
     pub step_s: Option<f64>,
     /// Whether every sample of the history is a row.
     pub sample_rows: bool,
+    /// Whether each row also keeps the friction utilization on the output grid (the θ–t map).
+    pub utilization_map: bool,
 }
 
 impl Output<'_> {
@@ -138,6 +140,6 @@ impl Output<'_> {
 impl Default for Output<'_> {
     /// A row at every sample, no snapshots.
     fn default() -> Self {
-        Self { snapshots_s: &[], step_s: None, sample_rows: true }
+        Self { snapshots_s: &[], step_s: None, sample_rows: true, utilization_map: true }
     }
 }

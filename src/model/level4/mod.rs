@@ -187,14 +187,36 @@ pub fn imposed_stop_profile(stages: &[Stage], at_s: f64, decel_m_s2: f64) -> Res
 /// [`WRAP_SAMPLE_S`]), tensions at the friction pulley (the guide sheave's inertia included). A
 /// stop by the `[brake]` continues with the pulley as a body ([`stop::braked_ropes`]).
 pub fn suspended_ropes(design: &Design, hoist: &Hoist, scene: &DutyCycleScene) -> Result<Vec<DynSample>, Level4Error> {
+    Ok(scene_ropes(design, hoist, scene, false)?.samples)
+}
+
+/// A scene's suspended ropes as [`suspended_ropes`] runs them, with the state at the brake of
+/// an imposed emergency stop, from which [`StopTrials`] try other decelerations.
+#[derive(Debug, Clone)]
+pub struct RopeRun {
+    /// The samples, one every [`WRAP_SAMPLE_S`].
+    pub samples: Vec<DynSample>,
+    at_brake: Option<Checkpoint>,
+}
+
+/// [`suspended_ropes`], keeping the state at the brake of an imposed emergency stop. With
+/// `parallel_sides` the two sides run on two threads (the same numbers).
+pub fn scene_ropes(
+    design: &Design,
+    hoist: &Hoist,
+    scene: &DutyCycleScene,
+    parallel_sides: bool,
+) -> Result<RopeRun, Level4Error> {
     if let Some(at_s) = scene.brake_stop_s {
         let brake = design.machine.brake.ok_or(Level4Error::NoBrake)?;
         let params = hoist_params(design, hoist, scene);
         let stages = trip_stages(hoist, scene.direction, scene.return_after_s);
         let mut trips = stop::braked_ropes(design, &params, &stages, &[at_s], scene.time_step_s, &brake)?;
-        return Ok(trips.pop().unwrap_or_default());
+        return Ok(RopeRun { samples: trips.pop().unwrap_or_default(), at_brake: None });
     }
-    Ok(resumable_ropes(design, hoist, scene, None, None)?.0)
+    let keep_at_s = scene.emergency.map(|stop| stop.at_s);
+    let (samples, at_brake) = resumable_ropes(design, hoist, scene, None, keep_at_s, parallel_sides)?;
+    Ok(RopeRun { samples, at_brake })
 }
 
 /// [`suspended_ropes`] from a checkpoint and/or keeping one ([`dynamics::simulate_resumable`]).
@@ -204,11 +226,17 @@ fn resumable_ropes(
     scene: &DutyCycleScene,
     from: Option<&Checkpoint>,
     keep_at_s: Option<f64>,
+    parallel_sides: bool,
 ) -> Result<(Vec<DynSample>, Option<Checkpoint>), Level4Error> {
     let params = hoist_params(design, hoist, scene);
     let profile = motion_profile(hoist, scene)?;
     let record_every = ((WRAP_SAMPLE_S / scene.time_step_s).round() as usize).max(1);
-    let options = SimOptions { record_every, energy: false, ..SimOptions::new(scene.time_step_s, ELEMENTS_PER_SIDE) };
+    let options = SimOptions {
+        record_every,
+        energy: false,
+        parallel_sides,
+        ..SimOptions::new(scene.time_step_s, ELEMENTS_PER_SIDE)
+    };
     let (mut samples, cp) = dynamics::simulate_resumable(&params, &profile, &options, from, keep_at_s)?;
     stop::with_guide(design, &mut samples);
     Ok((samples, cp))
@@ -317,11 +345,14 @@ pub struct StopTrials<'a> {
 impl<'a> StopTrials<'a> {
     /// `None` for a scene without an emergency stop, or whose ropes cannot run to it.
     pub fn new(design: &'a Design, hoist: &'a Hoist, scene: &'a DutyCycleScene) -> Option<Self> {
+        Self::from_run(design, hoist, scene, scene_ropes(design, hoist, scene, false).ok()?)
+    }
+
+    /// The trials of a scene from its own run ([`scene_ropes`] of the same scene).
+    pub fn from_run(design: &'a Design, hoist: &'a Hoist, scene: &'a DutyCycleScene, run: RopeRun) -> Option<Self> {
         let stop = scene.emergency?;
-        match resumable_ropes(design, hoist, scene, None, Some(stop.at_s)) {
-            Ok((before, Some(checkpoint))) => Some(Self { design, hoist, scene, stop, before, checkpoint }),
-            _ => None,
-        }
+        let checkpoint = run.at_brake?;
+        Some(Self { design, hoist, scene, stop, before: run.samples, checkpoint })
     }
 
     /// The scene's own emergency deceleration (m/s²).
@@ -340,7 +371,7 @@ impl<'a> StopTrials<'a> {
     pub fn worst(&self, decel_m_s2: f64, residual: &dyn Fn(&DynSample) -> f64, before: f64) -> f64 {
         let emergency = Some(EmergencyStop { decel_m_s2, ..self.stop });
         let trial = DutyCycleScene { emergency, ..self.scene.clone() };
-        match resumable_ropes(self.design, self.hoist, &trial, Some(&self.checkpoint), None) {
+        match resumable_ropes(self.design, self.hoist, &trial, Some(&self.checkpoint), None, false) {
             Ok((samples, _)) => samples.iter().map(residual).fold(before, f64::min),
             Err(_) => f64::NAN,
         }
