@@ -1,6 +1,6 @@
 //! CSV reports: summary.csv (one row per scene), `<scene>/distribution.csv` and `<scene>/history.csv`.
 
-use super::number::{display, display_opt};
+use super::number;
 use super::summary::Summary;
 use crate::design::HISTORY_COLUMNS;
 use crate::model::history::HistoryRow;
@@ -35,19 +35,12 @@ pub const DISTRIBUTION_HEADER: [&str; 9] = [
 pub fn write_distribution<W: Write>(out: W, blocks: &[&Distribution]) -> csv::Result<()> {
     let mut w = csv::Writer::from_writer(out);
     w.write_record(DISTRIBUTION_HEADER)?;
+    let mut row = Row::default();
     for d in blocks {
         for s in &d.samples {
-            w.write_record([
-                display(d.t_s),
-                display(s.theta_deg),
-                display(s.tension_n),
-                display(s.normal_n_per_rad),
-                display(s.friction_n_per_rad),
-                display(s.utilization),
-                s.state.as_str().to_string(),
-                display_opt(s.slip_velocity_m_s),
-                s.sliding().to_string(),
-            ])?;
+            row.num(d.t_s).num(s.theta_deg).num(s.tension_n).num(s.normal_n_per_rad).num(s.friction_n_per_rad);
+            row.num(s.utilization).text(s.state.as_str()).opt(s.slip_velocity_m_s).flag(s.sliding());
+            row.write(&mut w)?;
         }
     }
     w.flush()?;
@@ -65,26 +58,14 @@ pub fn write_history<W: Write>(
 ) -> csv::Result<()> {
     let mut w = csv::Writer::from_writer(out);
     w.write_record(HISTORY_COLUMNS.map(|(name, _)| name))?;
+    let mut row = Row::default();
     for (i, r) in rows.iter().enumerate() {
         let anchors = anchors_n.get(i);
         let mids = midpoints_n.get(i);
-        w.write_record([
-            display(r.t_s),
-            display(r.t1_n),
-            display(r.t2_n),
-            display(r.speed_m_s),
-            display(r.accel_m_s2),
-            display_opt(r.jdp_deg),
-            display(r.positive_arc_deg),
-            display(r.reverse_arc_deg),
-            display(r.max_utilization),
-            display_opt(r.safety_factor),
-            r.gross_slip.to_string(),
-            display_opt(anchors.map(|a| a[0])),
-            display_opt(anchors.map(|a| a[1])),
-            display_opt(mids.map(|a| a[0])),
-            display_opt(mids.map(|a| a[1])),
-        ])?;
+        row.num(r.t_s).num(r.t1_n).num(r.t2_n).num(r.speed_m_s).num(r.accel_m_s2).opt(r.jdp_deg);
+        row.num(r.positive_arc_deg).num(r.reverse_arc_deg).num(r.max_utilization).opt(r.safety_factor);
+        row.flag(r.gross_slip).opt(anchors.map(|a| a[0])).opt(anchors.map(|a| a[1]));
+        row.opt(mids.map(|a| a[0])).opt(mids.map(|a| a[1])).write(&mut w)?;
     }
     w.flush()?;
     Ok(())
@@ -106,23 +87,58 @@ pub fn write_tracks<W: Write>(out: W, tracks: &[crate::model::track::Track]) -> 
         "friction_force_n",
         "impulse_n_s",
     ])?;
+    let mut row = Row::default();
     for track in tracks {
         for r in &track.rows {
-            w.write_record([
-                track.label.clone(),
-                display(r.t_s),
-                display(r.theta_deg),
-                display(r.tension_n),
-                display(r.normal_n_per_rad),
-                display(r.friction_n_per_rad),
-                display(r.utilization),
-                r.state.as_str().to_string(),
-                display(r.contact_force_n),
-                display(r.friction_force_n),
-                display(r.impulse_n_s),
-            ])?;
+            row.text(&track.label).num(r.t_s).num(r.theta_deg).num(r.tension_n).num(r.normal_n_per_rad);
+            row.num(r.friction_n_per_rad).num(r.utilization).text(r.state.as_str()).num(r.contact_force_n);
+            row.num(r.friction_force_n).num(r.impulse_n_s).write(&mut w)?;
         }
     }
     w.flush()?;
     Ok(())
+}
+
+/// A row of a CSV report built field by field into one reused record: numbers are written as
+/// [`number::display`] writes them, without an allocation per field.
+#[derive(Default)]
+struct Row {
+    record: csv::ByteRecord,
+    scratch: String,
+}
+
+impl Row {
+    /// A number.
+    fn num(&mut self, x: f64) -> &mut Self {
+        self.scratch.clear();
+        number::write(x, &mut self.scratch);
+        self.record.push_field(self.scratch.as_bytes());
+        self
+    }
+
+    /// A number, or an empty field.
+    fn opt(&mut self, x: Option<f64>) -> &mut Self {
+        match x {
+            Some(x) => self.num(x),
+            None => self.text(""),
+        }
+    }
+
+    /// `true` or `false`.
+    fn flag(&mut self, b: bool) -> &mut Self {
+        self.text(if b { "true" } else { "false" })
+    }
+
+    /// A text field (quoted by the writer where it needs it).
+    fn text(&mut self, s: &str) -> &mut Self {
+        self.record.push_field(s.as_bytes());
+        self
+    }
+
+    /// Writes the row and starts the next.
+    fn write<W: Write>(&mut self, w: &mut csv::Writer<W>) -> csv::Result<()> {
+        w.write_byte_record(&self.record)?;
+        self.record.clear();
+        Ok(())
+    }
 }

@@ -6,8 +6,16 @@
 
 /// `x` as `format!("{x}")` writes it: `NaN`, `inf`, `-inf`, `-0`, `0.001`, `1000`, `1.5`.
 pub fn display(x: f64) -> String {
+    let mut out = String::with_capacity(24);
+    write(x, &mut out);
+    out
+}
+
+/// [`display`], appended to `out`.
+pub fn write(x: f64, out: &mut String) {
     if !x.is_finite() {
-        return x.to_string();
+        out.push_str(&x.to_string());
+        return;
     }
     let mut buffer = ryu::Buffer::new();
     let text = buffer.format_finite(x);
@@ -29,13 +37,12 @@ pub fn display(x: f64) -> String {
     let trailing = joined[leading..].iter().rev().take_while(|&&b| b == b'0').count();
     let digits = std::str::from_utf8(&joined[leading..joined.len() - trailing]).unwrap_or("");
     let point = whole.len() as i32 - leading as i32 + exponent;
-    let mut out = String::with_capacity(digits.len() + 24);
     if negative {
         out.push('-');
     }
     if digits.is_empty() {
         out.push('0');
-        return out;
+        return;
     }
     let n = digits.len() as i32;
     // Two shortest candidates can lie equally near the value: `ryu` then takes the even last
@@ -62,7 +69,6 @@ pub fn display(x: f64) -> String {
         out.push('.');
         out.push_str(b);
     }
-    out
 }
 
 /// Whether `|x|` is exactly `(D + ½)·10^q`, `D` the integer of `digits`: the midpoint between
@@ -86,11 +92,6 @@ fn midpoint_above(x: f64, digits: &str, q: i32) -> bool {
     let odd = 2 * u128::from(d) + 1;
     let five = 5u128.pow(q.unsigned_abs());
     if q <= 0 { u128::from(m) * five == odd } else { u128::from(m) == odd * five }
-}
-
-/// An optional number: empty when absent.
-pub fn display_opt(x: Option<f64>) -> String {
-    x.map_or_else(String::new, display)
 }
 
 #[cfg(test)]

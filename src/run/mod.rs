@@ -35,6 +35,7 @@ use crate::planner::{self, Level, Plan, PlanError, Request};
 use crate::roots::RootError;
 use crate::wrap::Distribution;
 use rayon::prelude::*;
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
 
 /// Default number of wrap nodes on the output grid (1° pitch on a 180° wrap).
@@ -306,17 +307,27 @@ pub fn run_with_progress(
     // With fewer scenes than threads, a scene steps the two sides of its suspended ropes on two
     // threads; with more, the scenes keep the cores busy and the paired steps are cheaper.
     let parallel_sides = scenes.len() < rayon::current_num_threads();
-    // Scenes are independent: run in parallel, reported in the sheet's order.
-    let scenes = scenes
-        .par_iter()
-        .zip(estimates)
-        .map(|(s, e)| {
+    // Scenes are independent: run in parallel, the costliest first (so that a long scene does
+    // not start last and run alone), reported in the sheet's order. After a failure no further
+    // scene starts; the error reported is the first in the sheet's order.
+    let mut queue: Vec<(usize, Estimate)> = estimates.into_iter().enumerate().collect();
+    queue.sort_by(|a, b| b.1.seconds.total_cmp(&a.1.seconds));
+    let failed = AtomicBool::new(false);
+    let mut done: Vec<(usize, Result<SceneResult, RunError>)> = queue
+        .into_iter()
+        .par_bridge()
+        .filter(|_| !failed.load(Ordering::Relaxed))
+        .map(|(i, e)| {
             let seconds = e.seconds;
-            let result = run_scene(design, s, options, parallel_sides).map(|r| SceneResult { cost: Some(e), ..r });
+            let result =
+                run_scene(design, scenes[i], options, parallel_sides).map(|r| SceneResult { cost: Some(e), ..r });
+            failed.fetch_or(result.is_err(), Ordering::Relaxed);
             progress(seconds);
-            result
+            (i, result)
         })
-        .collect::<Result<Vec<_>, _>>()?;
+        .collect();
+    done.sort_by_key(|(i, _)| *i);
+    let scenes = done.into_iter().map(|(_, r)| r).collect::<Result<Vec<_>, _>>()?;
     Ok(RunResult { scenes, design: None, runtime_ms: start.elapsed().as_secs_f64() * 1e3 })
 }
 
