@@ -305,8 +305,9 @@ pub fn run_with_progress(
     let estimates = estimate(design, scenes, options)?;
     let start = Instant::now();
     // With fewer scenes than threads, a scene steps the two sides of its suspended ropes on two
-    // threads; with more, the scenes keep the cores busy and the paired steps are cheaper.
-    let parallel_sides = scenes.len() < rayon::current_num_threads();
+    // threads; with more, the scenes keep the cores busy and the paired steps are cheaper. A
+    // run that is itself one of many in parallel (a sweep's points) keeps the paired steps.
+    let parallel_sides = rayon::current_thread_index().is_none() && scenes.len() < rayon::current_num_threads();
     // Scenes are independent: run in parallel, the costliest first (so that a long scene does
     // not start last and run alone), reported in the sheet's order. After a failure no further
     // scene starts; the error reported is the first in the sheet's order.

@@ -18,6 +18,7 @@ use crate::dynamics::{
 use crate::model::braking::{self, BrakeError};
 use crate::planner::Level;
 use crate::roots::{self, Holding, RootStats};
+use std::cell::RefCell;
 
 /// Name of the dynamic safety factor with the suspended ropes' dynamics (level 4).
 pub const ROPE_DYNAMICS_CHECK: &str = "dynamic safety factor with rope dynamics (level 4)";
@@ -340,6 +341,10 @@ pub struct StopTrials<'a> {
     stop: EmergencyStop,
     before: Vec<DynSample>,
     checkpoint: Checkpoint,
+    /// The runs made so far, by the bits of their deceleration (`None`: it could not be made):
+    /// the margins' searches ask for some decelerations more than once (the ends of their
+    /// ranges, shared by both searches), and each run is made once.
+    runs: RefCell<Vec<(u64, Option<Vec<DynSample>>)>>,
 }
 
 impl<'a> StopTrials<'a> {
@@ -352,7 +357,7 @@ impl<'a> StopTrials<'a> {
     pub fn from_run(design: &'a Design, hoist: &'a Hoist, scene: &'a DutyCycleScene, run: RopeRun) -> Option<Self> {
         let stop = scene.emergency?;
         let checkpoint = run.at_brake?;
-        Some(Self { design, hoist, scene, stop, before: run.samples, checkpoint })
+        Some(Self { design, hoist, scene, stop, before: run.samples, checkpoint, runs: RefCell::new(Vec::new()) })
     }
 
     /// The scene's own emergency deceleration (m/s²).
@@ -369,11 +374,21 @@ impl<'a> StopTrials<'a> {
     /// The lowest `residual` over a run braking at `decel_m_s2` (from the brake on), at most
     /// `before`; NaN when that run cannot be made (e.g. a hanging length reaching 0).
     pub fn worst(&self, decel_m_s2: f64, residual: &dyn Fn(&DynSample) -> f64, before: f64) -> f64 {
-        let emergency = Some(EmergencyStop { decel_m_s2, ..self.stop });
-        let trial = DutyCycleScene { emergency, ..self.scene.clone() };
-        match resumable_ropes(self.design, self.hoist, &trial, Some(&self.checkpoint), None, false) {
-            Ok((samples, _)) => samples.iter().map(residual).fold(before, f64::min),
-            Err(_) => f64::NAN,
+        let key = decel_m_s2.to_bits();
+        let mut runs = self.runs.borrow_mut();
+        let index = match runs.iter().position(|(k, _)| *k == key) {
+            Some(i) => i,
+            None => {
+                let emergency = Some(EmergencyStop { decel_m_s2, ..self.stop });
+                let trial = DutyCycleScene { emergency, ..self.scene.clone() };
+                let run = resumable_ropes(self.design, self.hoist, &trial, Some(&self.checkpoint), None, false);
+                runs.push((key, run.ok().map(|(samples, _)| samples)));
+                runs.len() - 1
+            }
+        };
+        match &runs[index].1 {
+            Some(samples) => samples.iter().map(residual).fold(before, f64::min),
+            None => f64::NAN,
         }
     }
 }
