@@ -39,17 +39,62 @@ pub struct WrapSummary {
     pub roots: RootStats,
 }
 
-/// Sub-intervals of a piece on which `u ≥ threshold` (flag true) or below (false).
-/// `(ua, ub)`: the utilization at the piece's ends.
+/// The utilization `u = min(|q|/c, 1)` at a point, `c = μn` its capacity (`u = 1` where
+/// `c ≤ 0`), kept as the fraction: comparing it with a threshold or a running maximum takes a
+/// multiplication, and the division is made only within 1e-12 of the value compared with,
+/// where it decides exactly as [`ContactLaw::utilization_of`] would.
+#[derive(Debug, Clone, Copy)]
+struct Fraction {
+    friction: f64,
+    capacity: f64,
+}
+
+/// Relative band around a compared value inside which [`Fraction`] divides.
+const BAND: f64 = 1e-12;
+
+impl Fraction {
+    fn at(law: &ContactLaw, piece: &Piece, theta_rad: f64) -> Self {
+        let (tension_n, friction) = piece.tension_friction(theta_rad);
+        Self { friction: friction.abs(), capacity: law.mu * law.normal_n_per_rad(tension_n) }
+    }
+
+    /// [`ContactLaw::utilization_of`].
+    fn value(self) -> f64 {
+        if self.capacity <= 0.0 { 1.0 } else { (self.friction / self.capacity).min(1.0) }
+    }
+
+    /// `u ≥ threshold` (0 < threshold ≤ 1).
+    fn at_least(self, threshold: f64) -> bool {
+        if self.capacity <= 0.0 || self.capacity.is_nan() {
+            return true;
+        }
+        let bound = threshold * self.capacity;
+        if self.friction > bound * (1.0 + BAND) {
+            true
+        } else if self.friction < bound * (1.0 - BAND) {
+            false
+        } else {
+            self.value() >= threshold
+        }
+    }
+
+    /// `max(m, u)` for `m ≥ 0`.
+    fn max_with(self, m: f64) -> f64 {
+        if self.capacity > 0.0 && self.friction < m * self.capacity * (1.0 - BAND) { m } else { m.max(self.value()) }
+    }
+}
+
+/// Sub-intervals of a piece on which `u ≥ threshold` (flag true) or below (false), given the
+/// utilization at the piece's ends.
 fn split(
     piece: &Piece,
     law: &ContactLaw,
-    (ua, ub): (f64, f64),
+    (ua, ub): (Fraction, Fraction),
     threshold: f64,
     stats: &mut RootStats,
 ) -> Result<SmallSplit, RootError> {
     let (a, b) = (piece.theta0_rad, piece.theta1_rad);
-    let (above_a, above_b) = (ua >= threshold, ub >= threshold);
+    let (above_a, above_b) = (ua.at_least(threshold), ub.at_least(threshold));
     if above_a == above_b {
         return Ok(SmallSplit::One((a, b, above_a)));
     }
@@ -136,8 +181,8 @@ pub fn summarize_pieces(
             }
             continue;
         }
-        let ends = (law.utilization(&piece, piece.theta0_rad), law.utilization(&piece, piece.theta1_rad));
-        max_utilization = max_utilization.max(ends.0).max(ends.1);
+        let ends = (Fraction::at(law, &piece, piece.theta0_rad), Fraction::at(law, &piece, piece.theta1_rad));
+        max_utilization = ends.1.max_with(ends.0.max_with(max_utilization));
         for &(s, e, above) in split(&piece, law, ends, ARC_THRESHOLD, &mut roots)?.parts() {
             arcs.add(s, e, above, positive);
         }
