@@ -6,28 +6,13 @@
 //! the counterweight. Per side: ρ = 6·10.81 = 64.86 kg/m, EA = 6·2.634e8 = 1.5804e9 N, tail
 //! 3·23 = 69 kg/m. Expected values are worked out in the comments, never copied from output.
 
+mod common;
+
+use common::reference_hoist as reference;
 use wrapcalc::dynamics::{
     DynSample, DynamicsError, HoistParams, MotionProfile, Side, SimOptions, Stage, continuous_rope_frequency_hz,
     discrete_fundamental_hz, simulate, simulate_with, spring_mass_frequency_hz, static_tensions_n,
 };
-
-fn reference() -> HoistParams {
-    HoistParams {
-        ropes: 6,
-        rope_mass_per_m_kg: 10.81,
-        rope_ea_n: 2.634e8,
-        damping_ratio: 0.01,
-        tail_ropes: 3,
-        tail_mass_per_m_kg: 23.0,
-        side1_mass_kg: 95_000.0,
-        side2_mass_kg: 95_000.0,
-        side1_length0_m: 440.0,
-        side2_length0_m: 15.0,
-        tail1_length0_m: 5.0,
-        tail2_length0_m: 430.0,
-        g_m_s2: 9.81,
-    }
-}
 
 /// The reference hoist with the origin moved to travel `x` (same geometry as `reference()` at x).
 fn reference_at(x: f64) -> HoistParams {

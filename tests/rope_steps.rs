@@ -3,27 +3,12 @@
 //! energy balance (predictor, Thomas elimination by its recurrence, corrector), over whole
 //! lifting and lowering trips of the reference hoist of `tests/dynamics.rs`.
 
+mod common;
+
+use common::reference_hoist as reference;
 use wrapcalc::dynamics::{
     DynSample, DynamicsError, HoistParams, MotionProfile, Side, SimOptions, Stage, simulate_resumable,
 };
-
-fn reference() -> HoistParams {
-    HoistParams {
-        ropes: 6,
-        rope_mass_per_m_kg: 10.81,
-        rope_ea_n: 2.634e8,
-        damping_ratio: 0.01,
-        tail_ropes: 3,
-        tail_mass_per_m_kg: 23.0,
-        side1_mass_kg: 95_000.0,
-        side2_mass_kg: 95_000.0,
-        side1_length0_m: 440.0,
-        side2_length0_m: 15.0,
-        tail1_length0_m: 5.0,
-        tail2_length0_m: 430.0,
-        g_m_s2: 9.81,
-    }
-}
 
 /// The paper's lift (425.18 m), or the same profile mirrored (`sign` −1): lowering side 1 from
 /// where the lift ends.

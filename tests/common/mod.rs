@@ -84,3 +84,25 @@ pub fn proptest_config(cases: u32) -> proptest::test_runner::Config {
     let cases = std::env::var("PROPTEST_CASES").ok().and_then(|s| s.parse().ok()).unwrap_or(cases);
     Config { cases, rng_seed: RngSeed::Fixed(seed), ..Config::default() }
 }
+
+/// The reference hoist of the level-4 tests (`tests/dynamics.rs`): 6 hoisting ropes of
+/// m' = 10.81 kg/m and EA = 2.634e8 N, 3 tail ropes of 23 kg/m, 95 t on each side; at x = 0
+/// side 1 hangs 440 m, side 2 15 m, the tails 5 m and 430 m.
+pub fn reference_hoist() -> wrapcalc::dynamics::HoistParams {
+    use wrapcalc::dynamics::HoistParams;
+    HoistParams {
+        ropes: 6,
+        rope_mass_per_m_kg: 10.81,
+        rope_ea_n: 2.634e8,
+        damping_ratio: 0.01,
+        tail_ropes: 3,
+        tail_mass_per_m_kg: 23.0,
+        side1_mass_kg: 95_000.0,
+        side2_mass_kg: 95_000.0,
+        side1_length0_m: 440.0,
+        side2_length0_m: 15.0,
+        tail1_length0_m: 5.0,
+        tail2_length0_m: 430.0,
+        g_m_s2: 9.81,
+    }
+}
