@@ -3,7 +3,7 @@
 //!
 //! | level | measure |
 //! |---|---|
-//! | 4, suspended ropes | rope elements × integration steps: 2 sides × 24 elements × ⌈T / `time_step_s`⌉ (and the emergency margins' trials of the braking stretch) |
+//! | 4, suspended ropes | rope elements × integration steps: 2 sides × 12 elements × ⌈T / `time_step_s`⌉ (and the emergency margins' trials of the braking stretch) |
 //! | 3, elastic lining | segments × increments: `--nodes` × Σ max(travel / pitch, load change / 1 %) over the sample and report intervals, plus a segment pass per report row |
 //! | 2, rigid lining | breakpoint updates: [`level2_work`] from the samples, the load reversals and the report rows |
 //! | 1, creep theory | `--nodes` |

@@ -36,14 +36,14 @@ fn estimate_of(design: &Design, name: &str, options: Options) -> cost::Estimate 
     cost::estimate(design, scene, &plan, options.nodes, options.solver)
 }
 
-/// At Δt = 5e-5 s the 64.03 s cycle needs 1.28e6 steps of 48 rope elements: about 1.5 s at
-/// 25 ns an element-step, plus the wrap. A limit of 1 s refuses it at once, and the tally of
+/// At Δt = 2.5e-5 s the 64.03 s cycle needs 2.56e6 steps of 24 rope elements (2 sides × 12):
+/// about 1.5 s at 25 ns an element-step, plus the wrap. A limit of 1 s refuses it at once, and the tally of
 /// increments does not move; with the default limit the same scene runs and the tally grows
 /// by at least its time steps.
 #[test]
 fn a_scene_over_the_limit_is_refused_before_its_first_increment() {
     let _turn = TALLY.lock().unwrap_or_else(|e| e.into_inner());
-    let design = duty_mid(5e-5);
+    let design = duty_mid(2.5e-5);
     let scenes: Vec<_> = design.scenes.iter().collect();
     let before = tally::increments();
     let refused = run::run(&design, &scenes, Options { cost_limit_s: 1, ..Options::default() });
@@ -51,7 +51,7 @@ fn a_scene_over_the_limit_is_refused_before_its_first_increment() {
     match refused {
         Err(RunError::Costly { ref estimate, limit_s: 1, .. }) => {
             assert!(estimate.seconds > 1.0, "{estimate:?}");
-            assert!(estimate.drivers.iter().any(|d| d.starts_with("time_step_s = 0.00005")), "{estimate:?}");
+            assert!(estimate.drivers.iter().any(|d| d.starts_with("time_step_s = 0.000025")), "{estimate:?}");
         }
         other => panic!("expected a refusal, got {other:?}"),
     }
@@ -67,7 +67,7 @@ fn a_scene_over_the_limit_is_refused_before_its_first_increment() {
     assert!(tally::increments() - before >= (64.03f64 / 2.5e-4) as u64, "the run's steps are counted");
 }
 
-/// Level 4's measure is rope elements × the steps the dynamics take: 2 × 24 × the steps the
+/// Level 4's measure is rope elements × the steps the dynamics take: 2 × 12 × the steps the
 /// tally counts when the ropes of duty-MID run, exactly; the lowering runs the same steps.
 #[test]
 fn level4_estimate_is_rope_elements_times_the_steps_taken() {
@@ -80,7 +80,7 @@ fn level4_estimate_is_rope_elements_times_the_steps_taken() {
     let steps = tally::increments() - before;
     let e = estimate_of(&design, "duty-MID", Options::default());
     let ropes = e.parts.iter().find(|p| p.unit == "rope element-steps").expect("a rope part");
-    assert_eq!(ropes.work, 48.0 * steps as f64, "{e:?}");
+    assert_eq!(ropes.work, 24.0 * steps as f64, "{e:?}");
     assert_eq!(e.level, wrapcalc::planner::Level::Dynamic4);
 }
 

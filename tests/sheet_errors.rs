@@ -207,8 +207,8 @@ fn cases() -> Vec<Case> {
         },
         Case {
             label: "duty-cycle: a time step that would take hours",
-            input: duty_cycle("time_step_s = 1e-9\n"),
-            expect: &["scene \"d\": refused before running", "h on one core", "time_step_s = 0.000000001 s", "--cost-limit-s"],
+            input: duty_cycle("time_step_s = 2e-10\n"),
+            expect: &["scene \"d\": refused before running", "h on one core", "time_step_s = 0.0000000002 s", "--cost-limit-s"],
         },
         Case {
             label: "lining: no stiffness",

@@ -178,12 +178,23 @@ impl MotionProfile {
         }
         // the last segment starting at or before t (zero-length ones are skipped by `>`)
         let k = self.segments.partition_point(|s| s.t0_s <= t_s).saturating_sub(1);
+        self.in_segment(k, t_s)
+    }
+
+    /// The kinematics at `t_s` (0 ≤ t ≤ duration) in segment `k`, the last starting at or
+    /// before it.
+    fn in_segment(&self, k: usize, t_s: f64) -> Kinematics {
         let seg = &self.segments[k];
         if t_s >= seg.t0_s + seg.duration_s {
             // t at the very end of the last segment
             return Kinematics { accel_m_s2: self.end.accel_m_s2, ..self.end };
         }
         seg.at(t_s - seg.t0_s)
+    }
+
+    /// A reader of the profile at times taken in increasing order (the steps of a run).
+    pub fn cursor(&self) -> Cursor<'_> {
+        Cursor { profile: self, segment: 0 }
     }
 
     /// The state at the end of the last stage.
@@ -237,5 +248,60 @@ impl MotionProfile {
             out.push(s.t0_s + s.duration_s);
         }
         out
+    }
+}
+
+/// [`MotionProfile::at`] for times in increasing order: it keeps the segment of the last call
+/// and looks ahead from there instead of searching, with the same values for any time.
+#[derive(Debug, Clone, Copy)]
+pub struct Cursor<'a> {
+    profile: &'a MotionProfile,
+    segment: usize,
+}
+
+impl Cursor<'_> {
+    /// The kinematics at `t_s`, as [`MotionProfile::at`] gives them.
+    pub fn at(&mut self, t_s: f64) -> Kinematics {
+        let p = self.profile;
+        let segs = &p.segments;
+        if t_s.is_nan() || t_s < 0.0 || t_s > p.duration_s || segs.is_empty() || segs[self.segment].t0_s > t_s {
+            return p.at(t_s);
+        }
+        // The last segment starting at or before t, as the search of `at` finds it.
+        while self.segment + 1 < segs.len() && segs[self.segment + 1].t0_s <= t_s {
+            self.segment += 1;
+        }
+        p.in_segment(self.segment, t_s)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{MotionProfile, Stage};
+
+    /// The cursor reads what `at` reads, bit for bit, on a profile with a zero-length stage, a
+    /// step stage and a stop, lifting and lowering (accelerations mirrored), at the 1 ms steps
+    /// of a run, at the stage boundaries, before the start, past the end and going back in
+    /// time (where it searches again).
+    #[test]
+    fn the_cursor_reads_the_profile_as_at_does() {
+        for sign in [1.0, -1.0] {
+            let stages = [
+                Stage::ramp(1.5, sign * 0.6),
+                Stage::ramp(0.0, sign * 0.6),
+                Stage::ramp(2.25, 0.0),
+                Stage::step(1.0, sign * -0.4),
+                Stage::step_until_stop(sign * -1.2),
+            ];
+            let profile = MotionProfile::new(&stages).expect("valid");
+            let end = profile.duration_s();
+            let steps = (end / 1e-3).ceil() as usize;
+            let mut times: Vec<f64> = (0..=steps).map(|i| (i as f64 * 1e-3).min(end)).collect();
+            times.extend([-1.0, 1.5, 1.5, 3.75, 0.2, 3.75, 4.75, end, end + 0.5, 0.0]);
+            let mut cursor = profile.cursor();
+            for t in times {
+                assert_eq!(cursor.at(t), profile.at(t), "sign {sign}, t = {t}");
+            }
+        }
     }
 }

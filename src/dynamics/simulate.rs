@@ -192,13 +192,14 @@ pub fn simulate_resumable(
     };
     let mut kept =
         (keep_step == Some(first_step - 1)).then(|| checkpoint(first_step - 1, t_prev, &sides, work_j, dissipated_j));
+    let mut motion = profile.cursor();
     for step in first_step..=steps {
         let t = if step == steps { total_s } else { (step as f64 * dt).min(total_s) };
         let h = t - t_prev;
         if h <= 0.0 {
             continue;
         }
-        let kin = profile.at(t);
+        let kin = motion.at(t);
         let (w, d) = step_sides(p, &mut sides, t, kin.x_m, kin.accel_m_s2, h, opt.energy)?;
         work_j += w;
         dissipated_j += d;

@@ -59,9 +59,10 @@ pub(super) fn run(
     }
     let t0 = plan.t_prev_s;
     let mut out = Vec::with_capacity(a.records.len() + 1);
-    out.push(sample_of(p, t0, profile.at(t0), &initial, plan.work_j, plan.dissipated_j));
+    let mut motion = profile.cursor();
+    out.push(sample_of(p, t0, motion.at(t0), &initial, plan.work_j, plan.dissipated_j));
     for ((t, sa), (_, sb)) in a.records.into_iter().zip(b.records) {
-        out.push(sample_from(p, t, profile.at(t), [sa, sb], plan.work_j, plan.dissipated_j));
+        out.push(sample_from(p, t, motion.at(t), [sa, sb], plan.work_j, plan.dissipated_j));
     }
     let kept = match (plan.keep_step, a.kept, b.kept) {
         (Some(k), _, _) if k + 1 == plan.first_step => Some(checkpoint(opt, &plan, k, t0, initial)),
@@ -83,13 +84,14 @@ fn run_side(p: &HoistParams, profile: &MotionProfile, opt: &SimOptions, mut side
     let mut run = SideRun { records: Vec::new(), kept: None, failure: None };
     run.records.reserve((plan.steps + 1 - plan.first_step) / every + 1);
     let mut t_prev = plan.t_prev_s;
+    let mut motion = profile.cursor();
     for step in plan.first_step..=plan.steps {
         let t = if step == plan.steps { total_s } else { (step as f64 * dt).min(total_s) };
         let h = t - t_prev;
         if h <= 0.0 {
             continue;
         }
-        let kin = profile.at(t);
+        let kin = motion.at(t);
         let c: Coeffs = match coeffs(p, side.side, n, t, kin.x_m, kin.accel_m_s2) {
             Ok(c) => c,
             Err(e) => {
