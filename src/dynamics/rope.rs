@@ -31,10 +31,11 @@ impl Coeffs {
     /// Coefficients for hanging length `length_m`, end mass `end_mass_kg`, net downward field
     /// `g − a_s` (`field_m_s2`) and damping coefficient `beta_s`.
     pub fn new(p: &HoistParams, n: usize, length_m: f64, end_mass_kg: f64, field_m_s2: f64, beta_s: f64) -> Self {
+        // h and k_e = EA·n/L as two independent divisions (not k_e = EA/h after h).
         let h = length_m / n as f64;
         let rho = p.rho_kg_m();
         Self {
-            ke: p.ea_total_n() / h,
+            ke: p.ea_total_n() * n as f64 / length_m,
             me: rho * h / 6.0,
             end_mass_kg,
             beta_s,

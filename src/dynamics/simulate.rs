@@ -3,7 +3,7 @@
 use serde::Serialize;
 
 use super::rope::{Coeffs, SideState};
-use super::{DynamicsError, HoistParams, MotionProfile, Side, spring_mass_omega};
+use super::{DynamicsError, HoistParams, MotionProfile, Side, damping_coefficient_s};
 
 /// Upper limit of time steps of one run (guards against a time step far too small).
 const MAX_STEPS: usize = 200_000_000;
@@ -128,8 +128,7 @@ pub(super) fn coeffs(
     let (length_m, end_mass_kg) = p.side_at(side, x_m, Some(t_s))?;
     // a_s: downward rigid acceleration of the side's rope (a_1 = −ẍ, a_2 = +ẍ)
     let a_s = side.down_sign() * accel_m_s2;
-    let beta_s = 2.0 * p.damping_ratio / spring_mass_omega(p, length_m, end_mass_kg);
-    Ok(Coeffs::new(p, n, length_m, end_mass_kg, p.g_m_s2 - a_s, beta_s))
+    Ok(Coeffs::new(p, n, length_m, end_mass_kg, p.g_m_s2 - a_s, damping_coefficient_s(p, length_m, end_mass_kg)))
 }
 
 /// Simulates the rope dynamics of both sides over the profile (model and scheme: see the module

@@ -87,7 +87,8 @@ impl<'a> Lanes<'a> {
         let (d, last, off) =
             (4.0 * c.me + 2.0 * gamma * c.ke, 2.0 * c.me + c.end_mass_kg + gamma * c.ke, c.me - gamma * c.ke);
         let lambda = 0.5 * (d + (d * d - 4.0 * off * off).sqrt());
-        let rho = off * off / (lambda * lambda);
+        let settled_inv = 1.0 / lambda;
+        let rho = (off * settled_inv) * (off * settled_inv);
         let mut lanes = Self {
             q: &mut s.q[..n],
             v: &mut s.v[..n],
@@ -102,7 +103,7 @@ impl<'a> Lanes<'a> {
             lambda,
             rho,
             power: rho,
-            settled_inv: 1.0 / lambda,
+            settled_inv,
             y: [0.0; 3],
         };
         lanes.y[1] = lanes.predict(0, dt, h2);
