@@ -357,13 +357,14 @@ pub fn run_all_with_progress(
     Ok(result)
 }
 
-/// Runs one scene (`parallel_sides`: its suspended ropes may take two threads).
+/// Runs one scene (`parallel_sides`: a second core is free for it, for the two sides of its
+/// suspended ropes and its rows' summaries).
 fn run_scene(design: &Design, scene: &Scene, options: Options, parallel_sides: bool) -> Result<SceneResult, RunError> {
     let start = Instant::now();
     let plan = planner::plan_with_lining(scene, options.request, design.lining.is_some())?;
     let (mut result, ropes) = match &scene.kind {
         SceneKind::Loads(loads) => (run_loads(design, scene, loads, plan, options)?, None),
-        SceneKind::History(history) => (run_history(design, scene, history, plan, options)?, None),
+        SceneKind::History(history) => (run_history(design, scene, history, plan, options, parallel_sides)?, None),
         SceneKind::DutyCycle(cycle) => run_duty_cycle(design, scene, cycle, plan, options, parallel_sides)?,
     };
     derive_answers(design, scene, &mut result, ropes)?;

@@ -15,12 +15,14 @@ use crate::model::level4::{self, Level4Error, RopeRun};
 use crate::model::stop;
 use crate::planner::{Level, Plan};
 
+/// A history scene; with `spare_core` its rows' summaries may run on another thread.
 pub(super) fn run_history(
     design: &Design,
     scene: &Scene,
     history: &HistoryScene,
     plan: Plan,
     options: Options,
+    spare_core: bool,
 ) -> Result<SceneResult, RunError> {
     let output = history::Output {
         snapshots_s: &history.snapshots_s,
@@ -40,6 +42,7 @@ pub(super) fn run_history(
         travel,
         side1_length_m: None,
         output,
+        spare_core,
     };
     run_samples(design, scene, input, plan, options)
 }
@@ -49,7 +52,8 @@ pub(super) fn run_history(
 /// onset of gross slip, if any (the rest is not valid); its dynamic safety factor is the code's,
 /// on rigid ropes, with the level-4 value beside it ([`trip::code_and_rope_dynamics`]).
 /// Returns the suspended ropes' run with the result (the emergency margins continue from it);
-/// with `parallel_sides` its two sides run on two threads.
+/// with `parallel_sides` its two sides run on two threads, and its rows' summaries may run on
+/// another thread.
 pub(super) fn run_duty_cycle(
     design: &Design,
     scene: &Scene,
@@ -94,6 +98,7 @@ pub(super) fn run_duty_cycle(
         travel: cycle.direction,
         side1_length_m: Some(params.side1_length0_m),
         output,
+        spare_core: parallel_sides,
     };
     let mut result = run_samples(design, scene, input, plan, options)?;
     if let Some((ropes, rigid)) = &dynamics {
@@ -147,6 +152,8 @@ struct Samples<'a> {
     side1_length_m: Option<f64>,
     /// When the wrap reports (rows and snapshots).
     output: history::Output<'a>,
+    /// Whether a second core is free for the rows' summaries.
+    spare_core: bool,
 }
 
 /// A scene given as end tensions and speed over time (history and duty-cycle scenes): level 0
@@ -158,7 +165,8 @@ fn run_samples(
     plan: Plan,
     options: Options,
 ) -> Result<SceneResult, RunError> {
-    let Samples { samples, accel_m_s2, direction_before: direction, travel, side1_length_m, output } = input;
+    let Samples { samples, accel_m_s2, direction_before: direction, travel, side1_length_m, output, spare_core } =
+        input;
     let states: Vec<(f64, EndState)> = samples
         .iter()
         .enumerate()
@@ -195,7 +203,7 @@ fn run_samples(
     let model = wrap_model(design, scene, &result.plan, samples, initial, options)?;
     // The tracks follow the same model from the same start.
     let for_tracks = scene.tracks.as_ref().map(|_| model.clone());
-    let (run, level3) = run_model(model, scene, samples, output, options)?;
+    let (run, level3) = run_model(model, scene, samples, output, options, spare_core)?;
     crate::tally::add_increments(run.stats.increments);
     result.level3 = level3;
     let mut snapshots: Vec<history::Snapshot> = run.snapshots;

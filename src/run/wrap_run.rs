@@ -118,25 +118,27 @@ pub(super) fn wrap_history(
     options: Options,
 ) -> Result<(HistoryRun, Option<level3::Level3Stats>), RunError> {
     let model = wrap_model(design, scene, plan, samples, initial, options)?;
-    run_model(model, scene, samples, output, options)
+    run_model(model, scene, samples, output, options, false)
 }
 
-/// Runs `model` through `samples` with the one history runner ([`history::run`]).
+/// Runs `model` through `samples` with the one history runner ([`history::run_with`]; with
+/// `parallel_rows` the rows' summaries run on other threads of the pool).
 pub(super) fn run_model(
     model: Model,
     scene: &Scene,
     samples: &[HistorySample],
     output: Output,
     options: Options,
+    parallel_rows: bool,
 ) -> Result<(HistoryRun, Option<level3::Level3Stats>), RunError> {
     match model {
         Model::Elastic(sim, mut stats) => {
-            let (run, run_stats) = history::run(*sim, samples, output, options.nodes)
+            let (run, run_stats) = history::run_with(*sim, samples, output, options.nodes, parallel_rows)
                 .map_err(|source| RunError::Level3 { scene: scene.name.clone(), source })?;
             stats.add(&run_stats);
             Ok((run, Some(stats)))
         }
-        Model::Rigid(sim) => history::run(*sim, samples, output, options.nodes)
+        Model::Rigid(sim) => history::run_with(*sim, samples, output, options.nodes, parallel_rows)
             .map(|(run, _)| (run, None))
             .map_err(|source| RunError::Level2 { scene: scene.name.clone(), source }),
     }

@@ -17,6 +17,7 @@ use crate::model::level0::{EndState, euler_limit};
 use crate::roots::{RootError, RootStats};
 use crate::wrap::Distribution;
 use sample::{interpolate, speed_slope};
+use std::sync::OnceLock;
 
 /// What the hoist gives every wrap model: the friction coefficient, the wrap and the rope.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -64,6 +65,11 @@ pub trait WrapModel {
     /// Arcs, JDP and peak utilization of the current state (and its stick/creep zones when
     /// `zones`).
     fn summary(&self, zones: bool) -> Result<WrapSummary, RootError>;
+    /// [`Self::summary`] without zones as a job that owns what it needs of the current state,
+    /// for another thread to make while the model steps on; `None` where the model offers none.
+    fn summary_job(&self) -> Option<SummaryJob> {
+        None
+    }
     /// The current state's distribution at `t_s` (on `output_nodes` pitches where the model has
     /// no grid of its own).
     fn distribution(&self, t_s: f64, summary: &WrapSummary, output_nodes: usize) -> Distribution;
@@ -88,38 +94,102 @@ pub trait WrapModel {
     }
 }
 
+/// A row's summary to be made on another thread ([`WrapModel::summary_job`]).
+pub type SummaryJob = Box<dyn FnOnce() -> Result<WrapSummary, RootError> + Send>;
+
 /// Runs `model` through `samples`, reporting at the times of `output`: a row of history.csv and
 /// (when `output` asks for it) of the utilization map at each, a distribution (on `output_nodes` pitches) at each snapshot
 /// and at the last sample. The end state of a row is the history's interpolated sample with the
 /// speed's slope as acceleration, its safety factor measured against `e^{μα}`.
 pub fn run<M: WrapModel>(
+    model: M,
+    samples: &[HistorySample],
+    output: Output,
+    output_nodes: usize,
+) -> Result<(HistoryRun, M::Counters), M::Error> {
+    run_with(model, samples, output, output_nodes, false)
+}
+
+/// [`run`]; with `parallel_rows` the rows' summaries (but a snapshot's) are made by other
+/// threads of the pool while the model steps on, where the model offers them as jobs
+/// ([`WrapModel::summary_job`]): the same rows in the same order, and the same first error.
+pub fn run_with<M: WrapModel>(
     mut model: M,
     samples: &[HistorySample],
     output: Output,
     output_nodes: usize,
+    parallel_rows: bool,
 ) -> Result<(HistoryRun, M::Counters), M::Error> {
     let times = output.times(samples);
     model.settle()?;
     let wrap = model.wrap();
     let limit = euler_limit(wrap.mu, wrap.wrap_angle_rad);
     let mut run = HistoryRun::with_capacity(times.len());
-    for &t in &times {
-        model.advance_to(t)?;
-        let end = EndState::of_sample(&interpolate(samples, t), speed_slope(samples, t), wrap.mass_per_m_kg);
-        let snapshot = output.is_snapshot(t, samples);
-        let summary = model.summary(snapshot)?;
-        run.push_row(t, &end, &summary, limit, model.gross_slip());
-        if output.utilization_map {
-            run.map.push(model.utilization_row());
-        }
-        if snapshot {
-            let distribution = model.distribution(t, &summary, output_nodes);
-            run.snapshots.push(Snapshot { summary, distribution });
-        }
+    let slots: Vec<Slot> = times.iter().map(|_| OnceLock::new()).collect();
+    let mut rows = Rows { times: &times, slots: &slots, ends: Vec::with_capacity(times.len()), run: &mut run };
+    let stepped = if parallel_rows {
+        rayon::in_place_scope(|scope| step_rows(&mut model, samples, &output, output_nodes, &mut rows, Some(scope)))
+    } else {
+        step_rows(&mut model, samples, &output, output_nodes, &mut rows, None)
+    };
+    // A summary that failed before the row where stepping failed is the first error.
+    let ends = std::mem::take(&mut rows.ends);
+    for ((t, end, gross_slip), slot) in ends.into_iter().zip(slots) {
+        let summary = slot.into_inner().expect("every row's summary was made")?;
+        run.push_row(t, &end, &summary, limit, gross_slip);
     }
+    stepped?;
     run.stats = model.solver_report();
     let roots = model.roots();
     run.roots.calls += roots.calls;
     run.roots.iterations += roots.iterations;
     Ok((run, model.counters()))
+}
+
+/// A row's summary, made in place or by a job.
+type Slot = OnceLock<Result<WrapSummary, RootError>>;
+
+/// What the rows of a run collect as the model steps: each row's time, end state and gross-slip
+/// flag, its summary's slot, and the map rows and snapshots (in the run).
+struct Rows<'a, 's> {
+    times: &'a [f64],
+    slots: &'s [Slot],
+    ends: Vec<(f64, EndState, bool)>,
+    run: &'a mut HistoryRun,
+}
+
+/// Steps `model` through the rows' times; a row's summary is made in place, or (with a
+/// `scope`, but at a snapshot) by a job spawned on it.
+fn step_rows<'s, M: WrapModel>(
+    model: &mut M,
+    samples: &[HistorySample],
+    output: &Output,
+    output_nodes: usize,
+    rows: &mut Rows<'_, 's>,
+    scope: Option<&rayon::Scope<'s>>,
+) -> Result<(), M::Error> {
+    let mass_per_m_kg = model.wrap().mass_per_m_kg;
+    for (&t, slot) in rows.times.iter().zip(rows.slots) {
+        model.advance_to(t)?;
+        let end = EndState::of_sample(&interpolate(samples, t), speed_slope(samples, t), mass_per_m_kg);
+        let snapshot = output.is_snapshot(t, samples);
+        if output.utilization_map {
+            rows.run.map.push(model.utilization_row());
+        }
+        match scope.filter(|_| !snapshot).and_then(|s| Some((s, model.summary_job()?))) {
+            Some((scope, job)) => scope.spawn(move |_| {
+                let _ = slot.set(job());
+            }),
+            None => {
+                let summary = model.summary(snapshot)?;
+                if snapshot {
+                    let distribution = model.distribution(t, &summary, output_nodes);
+                    rows.run.snapshots.push(Snapshot { summary: summary.clone(), distribution });
+                }
+                let _ = slot.set(Ok(summary));
+            }
+        }
+        rows.ends.push((t, end, model.gross_slip()));
+    }
+    Ok(())
 }

@@ -69,6 +69,11 @@ impl WrapModel for Simulation<'_> {
         derived::summarize_pieces(self.profile.pieces(), &self.law(), zones)
     }
 
+    fn summary_job(&self) -> Option<history::SummaryJob> {
+        let (pieces, law): (Vec<_>, _) = (self.profile.pieces().collect(), self.law());
+        Some(Box::new(move || derived::summarize_pieces(pieces, &law, false)))
+    }
+
     fn distribution(&self, t_s: f64, summary: &WrapSummary, output_nodes: usize) -> Distribution {
         let field = self.profile.field();
         derived::distribution(t_s, &field, &self.law(), summary, output_nodes, self.gross_slip, |theta, _| {
