@@ -7,7 +7,7 @@
 
 use super::rope::Coeffs;
 use super::simulate::{Checkpoint, DynSample, Side2, SideSample, SimOptions, coeffs, sample_from, sample_of};
-use super::sweep::step_alone;
+use super::sweep::{Pivots, step_alone};
 use super::{DynamicsError, HoistParams, MotionProfile};
 
 /// The steps of a run and where it starts: shared by both sides.
@@ -77,40 +77,63 @@ fn checkpoint(opt: &SimOptions, plan: &Plan, step: usize, t_s: f64, sides: Vec<S
     Checkpoint { step, t_s, dt_s: opt.dt_s, elements: opt.elements, sides, work_j, dissipated_j }
 }
 
-/// One side through the steps of `plan` ([`super::simulate::step_sides`] for one side).
+/// Steps whose coefficients a side's run forms together, ahead of stepping them.
+const AHEAD: usize = 16;
+
+/// A step formed ahead: its number, time (s) and length (s), and its coefficients and pivots
+/// (or why they cannot be formed).
+struct Ahead {
+    step: usize,
+    t_s: f64,
+    h_s: f64,
+    coeffs: Result<(Coeffs, Pivots), DynamicsError>,
+}
+
+/// One side through the steps of `plan` ([`super::simulate::step_sides`] for one side). The
+/// coefficients of each step depend on the time only, so they are formed [`AHEAD`] steps at a
+/// time, their roots and divisions overlapping rather than each waiting for the step before.
 fn run_side(p: &HoistParams, profile: &MotionProfile, opt: &SimOptions, mut side: Side2, plan: Plan) -> SideRun {
     let (dt, total_s, every) = (opt.dt_s, profile.duration_s(), opt.record_every.max(1));
     let n = side.state.q.len();
     let mut run = SideRun { records: Vec::new(), kept: None, failure: None };
     run.records.reserve((plan.steps + 1 - plan.first_step) / every + 1);
-    let mut t_prev = plan.t_prev_s;
     let mut motion = profile.cursor();
-    for step in plan.first_step..=plan.steps {
-        let t = if step == plan.steps { total_s } else { (step as f64 * dt).min(total_s) };
-        let h = t - t_prev;
-        if h <= 0.0 {
-            continue;
+    let mut ahead: Vec<Ahead> = Vec::with_capacity(AHEAD);
+    let (mut next, mut t_formed) = (plan.first_step, plan.t_prev_s);
+    while next <= plan.steps {
+        ahead.clear();
+        for step in next..=(next + AHEAD - 1).min(plan.steps) {
+            let t = if step == plan.steps { total_s } else { (step as f64 * dt).min(total_s) };
+            let h = t - t_formed;
+            if h <= 0.0 {
+                continue;
+            }
+            let kin = motion.at(t);
+            let coeffs = coeffs(p, side.side, n, t, kin.x_m, kin.accel_m_s2).map(|c| (c, Pivots::of(&c, h)));
+            ahead.push(Ahead { step, t_s: t, h_s: h, coeffs });
+            t_formed = t;
         }
-        let kin = motion.at(t);
-        let c: Coeffs = match coeffs(p, side.side, n, t, kin.x_m, kin.accel_m_s2) {
-            Ok(c) => c,
-            Err(e) => {
-                run.failure = Some((step, false, e));
+        next += AHEAD;
+        for a in ahead.drain(..) {
+            let (c, pivots) = match a.coeffs {
+                Ok(c) => c,
+                Err(e) => {
+                    run.failure = Some((a.step, false, e));
+                    return run;
+                }
+            };
+            step_alone(&mut side.state, &c, &pivots, a.h_s);
+            side.coeffs = c;
+            if !side.state.is_finite() {
+                run.failure = Some((a.step, true, DynamicsError::Diverged { t_s: a.t_s }));
                 return run;
             }
-        };
-        step_alone(&mut side.state, &c, h);
-        side.coeffs = c;
-        if !side.state.is_finite() {
-            run.failure = Some((step, true, DynamicsError::Diverged { t_s: t }));
-            return run;
-        }
-        t_prev = t;
-        if step % every == 0 || step == plan.steps {
-            run.records.push((t, SideSample::of(&side)));
-        }
-        if plan.keep_step == Some(step) {
-            run.kept = Some((t, side.clone()));
+            if a.step % every == 0 || a.step == plan.steps {
+                run.records.push((a.t_s, SideSample::of(&side)));
+            }
+            if plan.keep_step == Some(a.step) {
+                run.kept = Some((a.t_s, side.clone()));
+            }
         }
     }
     run

@@ -24,20 +24,53 @@
 use super::rope::{Coeffs, SideState};
 
 /// One step of one side without the energy balance, as the paired steps take it
-/// ([`super::rope::step_pair`]), so a side stepped alone gives the same numbers bit for bit.
-pub(crate) fn step_alone(side: &mut SideState, c: &Coeffs, dt: f64) {
+/// ([`super::rope::step_pair`]), so a side stepped alone gives the same numbers bit for bit;
+/// `pivots` are [`Pivots::of`] the step's coefficients and `dt`.
+pub(crate) fn step_alone(side: &mut SideState, c: &Coeffs, pivots: &Pivots, dt: f64) {
     if side.q.len() < 2 {
         side.step(c, c, dt, false);
     } else {
-        sweep([(side, c)], dt);
+        sweep_with([(side, c, *pivots)], dt);
     }
 }
 
 /// The step of `K` sides of `n ≥ 2` nodes each (the same `n`), to their end coefficients.
 pub(crate) fn sweep<const K: usize>(sides: [(&mut SideState, &Coeffs); K], dt: f64) {
+    sweep_with(sides.map(|(s, c)| (s, c, Pivots::of(c, dt))), dt);
+}
+
+/// What the elimination of a step needs of a side's effective matrix beyond its coefficients:
+/// the last diagonal, the off-diagonal `o`, `λ₊`, `ρ` and `1/λ₊`. They depend on the
+/// coefficients and the step only, not on the state, so a run can form those of several steps
+/// ahead together, where their roots and divisions overlap.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Pivots {
+    last: f64,
+    off: f64,
+    lambda: f64,
+    rho: f64,
+    settled_inv: f64,
+}
+
+impl Pivots {
+    /// The pivots of a step of `dt` to the coefficients `c`.
+    pub(crate) fn of(c: &Coeffs, dt: f64) -> Self {
+        let h2 = 0.25 * dt * dt;
+        let gamma = 0.5 * dt * c.beta_s + h2;
+        let (d, last, off) =
+            (4.0 * c.me + 2.0 * gamma * c.ke, 2.0 * c.me + c.end_mass_kg + gamma * c.ke, c.me - gamma * c.ke);
+        let lambda = 0.5 * (d + (d * d - 4.0 * off * off).sqrt());
+        let settled_inv = 1.0 / lambda;
+        let rho = (off * settled_inv) * (off * settled_inv);
+        Self { last, off, lambda, rho, settled_inv }
+    }
+}
+
+/// [`sweep`] with the sides' pivots given.
+fn sweep_with<const K: usize>(sides: [(&mut SideState, &Coeffs, Pivots); K], dt: f64) {
     let h2 = 0.25 * dt * dt;
     let n = sides[0].0.q.len();
-    let mut lanes = sides.map(|(s, c)| Lanes::new(s, c, dt, h2));
+    let mut lanes = sides.map(|(s, c, pivots)| Lanes::new(s, c, pivots, dt, h2));
     // The values each chain carries from row to row stay in registers: the last eliminated
     // right-hand side (forward) and the last new acceleration (backward).
     let mut carried = [0.0; K];
@@ -81,14 +114,9 @@ struct Lanes<'a> {
 }
 
 impl<'a> Lanes<'a> {
-    fn new(s: &'a mut SideState, c: &'a Coeffs, dt: f64, h2: f64) -> Self {
+    fn new(s: &'a mut SideState, c: &'a Coeffs, pivots: Pivots, dt: f64, h2: f64) -> Self {
         let n = s.q.len();
-        let gamma = 0.5 * dt * c.beta_s + h2;
-        let (d, last, off) =
-            (4.0 * c.me + 2.0 * gamma * c.ke, 2.0 * c.me + c.end_mass_kg + gamma * c.ke, c.me - gamma * c.ke);
-        let lambda = 0.5 * (d + (d * d - 4.0 * off * off).sqrt());
-        let settled_inv = 1.0 / lambda;
-        let rho = (off * settled_inv) * (off * settled_inv);
+        let Pivots { last, off, lambda, rho, settled_inv } = pivots;
         let mut lanes = Self {
             q: &mut s.q[..n],
             v: &mut s.v[..n],
