@@ -167,17 +167,25 @@ fn write_scene(
     let Some(wrap) = &scene.wrap else { return Ok(()) };
     let scene_dir = dir.join(&scene.name);
     fs::create_dir_all(&scene_dir).map_err(io(&scene_dir))?;
-    let dist_path = scene_dir.join("distribution.csv");
-    let f = File::create(&dist_path).map_err(io(&dist_path))?;
-    let blocks: Vec<_> = scene.snapshots.iter().chain(std::iter::once(&wrap.distribution)).collect();
-    csv_out::write_distribution(BufWriter::new(f), &blocks)
-        .map_err(|source| ReportError::Csv { path: dist_path.display().to_string(), source })?;
-    if let Some(history) = &scene.history {
-        let path = scene_dir.join("history.csv");
-        let f = File::create(&path).map_err(io(&path))?;
-        csv_out::write_history(BufWriter::new(f), &history.rows, &history.anchors_n, &history.midpoints_n)
-            .map_err(|source| ReportError::Csv { path: path.display().to_string(), source })?;
-    }
+    // The two largest files side by side (a failure of the first is reported first).
+    let (distribution, history) = rayon::join(
+        || {
+            let dist_path = scene_dir.join("distribution.csv");
+            let f = File::create(&dist_path).map_err(io(&dist_path))?;
+            let blocks: Vec<_> = scene.snapshots.iter().chain(std::iter::once(&wrap.distribution)).collect();
+            csv_out::write_distribution(BufWriter::new(f), &blocks)
+                .map_err(|source| ReportError::Csv { path: dist_path.display().to_string(), source })
+        },
+        || {
+            let Some(history) = &scene.history else { return Ok(()) };
+            let path = scene_dir.join("history.csv");
+            let f = File::create(&path).map_err(io(&path))?;
+            csv_out::write_history(BufWriter::new(f), &history.rows, &history.anchors_n, &history.midpoints_n)
+                .map_err(|source| ReportError::Csv { path: path.display().to_string(), source })
+        },
+    );
+    distribution?;
+    history?;
     if let Some(tracks) = &scene.tracks {
         let path = scene_dir.join("track.csv");
         let f = File::create(&path).map_err(io(&path))?;
