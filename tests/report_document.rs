@@ -95,6 +95,17 @@ fn report_prints_to_pdf_with_verdicts_and_the_governing_case() {
     }
 }
 
+/// The captions of a duty cycle's figures on the rigid lining say what sets their accuracy: the
+/// arcs and JDP do not depend on the node count (the wrap has no grid), the ropes' time step
+/// does; no caption claims an error that depends on N.
+#[test]
+fn duty_cycle_captions_say_the_node_count_is_the_output_grid() {
+    let html = std::fs::read_to_string(reference_report().join("report.html")).expect("report.html");
+    let caption = "The arcs and JDP of a duty cycle do not depend on the node count (N = 180 is only the output grid)";
+    assert!(html.contains(caption), "the duty cycles' captions");
+    assert!(!html.contains("depend on the node count:"), "a caption claims an N-dependent error");
+}
+
 /// A fresh LibreOffice profile that recalculates every formula of an xlsx on load
 /// (`OOXMLRecalcMode` = 0): otherwise it would show the file's cached results.
 fn recalculating_profile(dir: &Path) -> String {
