@@ -70,8 +70,8 @@ impl WrapModel for Simulation<'_> {
     }
 
     fn summary_job(&self) -> Option<history::SummaryJob> {
-        let (pieces, law): (Vec<_>, _) = (self.profile.pieces().collect(), self.law());
-        Some(Box::new(move || derived::summarize_pieces(pieces, &law, false)))
+        let (frozen, law) = (self.profile.frozen(), self.law());
+        Some(Box::new(move || derived::summarize_pieces(frozen.pieces(), &law, false)))
     }
 
     fn distribution(&self, t_s: f64, summary: &WrapSummary, output_nodes: usize) -> Distribution {

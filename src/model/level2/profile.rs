@@ -76,19 +76,19 @@ impl Profile {
     /// Piece `i` in θ (the wrap's frame), its ends snapped to exactly 0 and α at the ends.
     pub fn piece(&self, i: usize) -> Piece {
         debug_assert_eq!(self.pieces.len(), self.limits_n.len());
-        let mut p = self.pieces[i].shifted(self.phi_rad);
-        if i == 0 {
-            p.theta0_rad = 0.0;
-        }
-        if i + 1 == self.pieces.len() {
-            p.theta1_rad = self.wrap_angle_rad;
-        }
-        p
+        in_frame(&self.pieces[i], i, self.pieces.len(), self.phi_rad, self.wrap_angle_rad)
     }
 
     /// All pieces in θ order, in the wrap's frame.
     pub fn pieces(&self) -> impl ExactSizeIterator<Item = Piece> + '_ {
         (0..self.pieces.len()).map(|i| self.piece(i))
+    }
+
+    /// A copy of the pieces as they are held (one copy of memory, no arithmetic), which gives
+    /// [`Self::pieces`] again, to the last bit, wherever it is taken.
+    pub fn frozen(&self) -> Frozen {
+        let (front, back) = self.pieces.as_slices();
+        Frozen { pieces: [front, back].concat(), phi_rad: self.phi_rad, wrap_angle_rad: self.wrap_angle_rad }
     }
 
     /// The state as a tension field over [0, α].
@@ -302,6 +302,35 @@ impl Profile {
             *p = p.shifted(phi);
         }
         self.phi_rad = 0.0;
+    }
+}
+
+/// Piece `i` of `len` held in material coordinates, in the wrap's frame at the turn `phi_rad`:
+/// the ends of the first and the last snapped to exactly 0 and α.
+fn in_frame(held: &Piece, i: usize, len: usize, phi_rad: f64, wrap_angle_rad: f64) -> Piece {
+    let mut p = held.shifted(phi_rad);
+    if i == 0 {
+        p.theta0_rad = 0.0;
+    }
+    if i + 1 == len {
+        p.theta1_rad = wrap_angle_rad;
+    }
+    p
+}
+
+/// The pieces of a [`Profile`] at one instant, as [`Profile::frozen`] copies them.
+#[derive(Debug, Clone)]
+pub struct Frozen {
+    pieces: Vec<Piece>,
+    phi_rad: f64,
+    wrap_angle_rad: f64,
+}
+
+impl Frozen {
+    /// [`Profile::pieces`] of the profile copied.
+    pub fn pieces(&self) -> impl ExactSizeIterator<Item = Piece> + '_ {
+        let len = self.pieces.len();
+        self.pieces.iter().enumerate().map(move |(i, p)| in_frame(p, i, len, self.phi_rad, self.wrap_angle_rad))
     }
 }
 
