@@ -157,6 +157,23 @@ pub fn simulate_resumable(
     from: Option<&Checkpoint>,
     keep_at_s: Option<f64>,
 ) -> Result<(Vec<DynSample>, Option<Checkpoint>), DynamicsError> {
+    simulate_streamed(p, profile, opt, from, keep_at_s, &mut |_| {})
+}
+
+/// Samples handed on together by [`simulate_streamed`].
+pub const STREAM_CHUNK: usize = 64;
+
+/// [`simulate_resumable`], handing the samples to `sink` as they are made, [`STREAM_CHUNK`] at a
+/// time and the rest at the end, in order (with `opt.parallel_sides`, all at the end): another
+/// thread can work through them while the run goes on. The samples returned are the same.
+pub fn simulate_streamed(
+    p: &HoistParams,
+    profile: &MotionProfile,
+    opt: &SimOptions,
+    from: Option<&Checkpoint>,
+    keep_at_s: Option<f64>,
+    sink: &mut dyn FnMut(&[DynSample]),
+) -> Result<(Vec<DynSample>, Option<Checkpoint>), DynamicsError> {
     let steps = step_count(p, profile, opt)?;
     let (dt, n, total_s) = (opt.dt_s, opt.elements, profile.duration_s());
     let every = opt.record_every.max(1);
@@ -176,8 +193,10 @@ pub fn simulate_resumable(
         let plan = super::split::Plan { first_step, t_prev_s: t_prev, steps, keep_step, work_j, dissipated_j };
         let run = super::split::run(p, profile, opt, sides, plan)?;
         crate::tally::add_increments((steps + 1 - first_step) as u64);
+        sink(&run.0);
         return Ok(run);
     }
+    let mut sent = 0;
     let mut out = Vec::with_capacity((steps + 1 - first_step) / every + 2);
     out.push(sample(t_prev, profile.at(t_prev), &sides, work_j, dissipated_j));
     let checkpoint = |step: usize, t_s: f64, sides: &[Side2], work_j: f64, dissipated_j: f64| Checkpoint {
@@ -205,13 +224,41 @@ pub fn simulate_resumable(
         t_prev = t;
         if step % every == 0 || step == steps {
             out.push(sample(t, kin, &sides, work_j, dissipated_j));
+            if out.len() - sent >= STREAM_CHUNK {
+                sink(&out[sent..]);
+                sent = out.len();
+            }
         }
         if keep_step == Some(step) {
             kept = Some(checkpoint(step, t, &sides, work_j, dissipated_j));
         }
     }
+    if out.len() > sent {
+        sink(&out[sent..]);
+    }
     crate::tally::add_increments((steps + 1 - first_step) as u64);
     Ok((out, kept))
+}
+
+/// The instants of the samples a run from the start of a profile of `duration_s` records
+/// ([`simulate_streamed`], without a checkpoint): the start, every `record_every`-th step and
+/// the last, the steps as the run takes them.
+pub fn recorded_times(duration_s: f64, opt: &SimOptions) -> Vec<f64> {
+    let (dt, every) = (opt.dt_s, opt.record_every.max(1));
+    let steps = (duration_s / dt).ceil() as usize;
+    let mut out = vec![0.0];
+    let mut t_prev = 0.0;
+    for step in 1..=steps {
+        let t = if step == steps { duration_s } else { (step as f64 * dt).min(duration_s) };
+        if t - t_prev <= 0.0 {
+            continue;
+        }
+        t_prev = t;
+        if step % every == 0 || step == steps {
+            out.push(t);
+        }
+    }
+    out
 }
 
 /// Checks the parameters, the time step, the mesh, the initial offsets and the rope lengths at

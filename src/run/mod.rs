@@ -8,6 +8,7 @@
 mod derive;
 mod design_checks;
 mod loads;
+mod pipelined;
 mod time;
 pub mod track;
 mod trip;

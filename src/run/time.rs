@@ -2,15 +2,15 @@
 //! tensions come from the suspended ropes of level 4), level 0 over every sample, then the wrap
 //! through them at level 2 or 3.
 
+use super::pipelined;
 use super::trip::{self, Trip};
-use super::wrap_run::{Initial, run_model, wrap_model};
+use super::wrap_run::{Initial, rolling_initial, run_model, wrap_model};
 use super::{HistoryOutput, Options, RunError, SceneResult, WrapResult, empty};
 use crate::check;
 use crate::design::{Design, Direction, DutyCycleScene, HistorySample, HistoryScene, Hoist, Scene};
 use crate::dynamics::Kinematics;
 use crate::model::history;
 use crate::model::level0::{self, EndState};
-use crate::model::level1;
 use crate::model::level4::{self, Level4Error, RopeRun};
 use crate::model::stop;
 use crate::planner::{Level, Plan};
@@ -43,6 +43,7 @@ pub(super) fn run_history(
         side1_length_m: None,
         output,
         spare_core,
+        made_beside: None,
     };
     run_samples(design, scene, input, plan, options)
 }
@@ -72,25 +73,22 @@ pub(super) fn run_duty_cycle(
     let kin = level4::rigid_kinematics(design, hoist, cycle, &params).map_err(err)?;
     let rigid_samples = stop::rigid_samples(design, &params, &kin).map_err(|e| err(e.into()))?;
     let rigid = Trip::valid_part(design, rigid_samples, kin.into_iter().map(|(_, k)| k).collect());
-    let (trip, dynamics) = if plan.level == Level::Closed0 {
-        (rigid, None)
+    let (trip, dynamics, unconfirmed) = if plan.level == Level::Closed0 {
+        (rigid, None, None)
     } else {
-        let ropes = level4::scene_ropes(design, hoist, cycle, parallel_sides).map_err(err)?;
+        let (ropes, unconfirmed) = ropes(design, scene, cycle, options, parallel_sides).map_err(err)?;
         let dynamics = &ropes.samples;
         let kin = dynamics.iter().map(|s| Kinematics { x_m: s.x_m, speed_m_s: s.speed_m_s, accel_m_s2: s.accel_m_s2 });
-        (Trip::valid_part(design, level4::end_history(dynamics), kin.collect()), Some((ropes, rigid)))
+        (Trip::valid_part(design, level4::end_history(dynamics), kin.collect()), Some((ropes, rigid)), unconfirmed)
     };
     refuse_slack(design, hoist, cycle, &trip.samples, plan.level).map_err(err)?;
     let accel = trip.accel();
     // Snapshots after the end of a trip that slipped grossly are not valid.
     let end_s = trip.samples.last().map_or(0.0, |s| s.t_s);
-    let snapshots_s: Vec<f64> = cycle.snapshots_s.iter().copied().filter(|t| *t <= end_s).collect();
-    let output = history::Output {
-        snapshots_s: &snapshots_s,
-        step_s: Some(cycle.output_step_s),
-        sample_rows: false,
-        utilization_map: options.utilization_map,
-    };
+    let snapshots_s = valid_snapshots(cycle, end_s);
+    let output = cycle_output(cycle, &snapshots_s, options);
+    let ropes_len = dynamics.as_ref().map_or(0, |(r, _)| r.samples.len());
+    let made_beside = unconfirmed.and_then(|u| u.confirmed(&trip.samples, ropes_len, design.rope.mass_per_m_kg));
     let input = Samples {
         samples: &trip.samples,
         accel_m_s2: Some(&accel),
@@ -99,6 +97,7 @@ pub(super) fn run_duty_cycle(
         side1_length_m: Some(params.side1_length0_m),
         output,
         spare_core: parallel_sides,
+        made_beside,
     };
     let mut result = run_samples(design, scene, input, plan, options)?;
     if let Some((ropes, rigid)) = &dynamics {
@@ -119,6 +118,44 @@ pub(super) fn run_duty_cycle(
         trip::push_stop_checks(design, &mut result.classical, stop, &trip, &scene.name);
     }
     Ok((result, dynamics.map(|(ropes, _)| ropes)))
+}
+
+/// The suspended ropes of a level-4 duty cycle, with the wrap's run beside them where it can be
+/// made ([`pipelined`]; it is kept when the whole trip confirms it); without, with
+/// `parallel_sides`, the ropes' two sides run on two threads.
+fn ropes(
+    design: &Design,
+    scene: &Scene,
+    cycle: &DutyCycleScene,
+    options: Options,
+    parallel_sides: bool,
+) -> Result<(RopeRun, Option<pipelined::Unconfirmed>), Level4Error> {
+    let hoist = design.hoist.as_ref().ok_or(Level4Error::NoHoist)?;
+    if !pipelined::applies(design, scene, cycle, parallel_sides) {
+        return Ok((level4::scene_ropes(design, hoist, cycle, parallel_sides)?, None));
+    }
+    let end_s = level4::motion_profile(hoist, cycle)?.duration_s();
+    let snapshots_s = valid_snapshots(cycle, end_s);
+    let output = cycle_output(cycle, &snapshots_s, options);
+    let (ropes, unconfirmed) =
+        pipelined::run(design, hoist, cycle, cycle.direction.reversed(), options, output)?.split();
+    Ok((ropes, Some(unconfirmed)))
+}
+
+/// The snapshots of a duty cycle up to `end_s` (after the end of a trip that slipped grossly
+/// they are not valid).
+fn valid_snapshots(cycle: &DutyCycleScene, end_s: f64) -> Vec<f64> {
+    cycle.snapshots_s.iter().copied().filter(|t| *t <= end_s).collect()
+}
+
+/// When a duty cycle's wrap reports: every `output_step_s` and at `snapshots_s`.
+fn cycle_output<'a>(cycle: &DutyCycleScene, snapshots_s: &'a [f64], options: Options) -> history::Output<'a> {
+    history::Output {
+        snapshots_s,
+        step_s: Some(cycle.output_step_s),
+        sample_rows: false,
+        utilization_map: options.utilization_map,
+    }
 }
 
 /// A duty cycle's end history must keep both ropes on the pulley: a slack rope is an error that
@@ -154,6 +191,8 @@ struct Samples<'a> {
     output: history::Output<'a>,
     /// Whether a second core is free for the rows' summaries.
     spare_core: bool,
+    /// The wrap's run through these samples, made beside the ropes ([`pipelined`]), if any.
+    made_beside: Option<history::HistoryRun>,
 }
 
 /// A scene given as end tensions and speed over time (history and duty-cycle scenes): level 0
@@ -165,8 +204,16 @@ fn run_samples(
     plan: Plan,
     options: Options,
 ) -> Result<SceneResult, RunError> {
-    let Samples { samples, accel_m_s2, direction_before: direction, travel, side1_length_m, output, spare_core } =
-        input;
+    let Samples {
+        samples,
+        accel_m_s2,
+        direction_before: direction,
+        travel,
+        side1_length_m,
+        output,
+        spare_core,
+        made_beside,
+    } = input;
     let states: Vec<(f64, EndState)> = samples
         .iter()
         .enumerate()
@@ -192,18 +239,19 @@ fn run_samples(
         return Ok(result);
     }
     let first = states[0].1;
-    let alpha = design.pulley.wrap_angle_rad;
     // Uniform rope when the history starts balanced, else the steady rolling state of its first loads.
-    let rolling = (first.t1_n != first.t2_n)
-        .then(|| level1::steady_rolling(design.pulley.mu, alpha, &first, direction, design.rope.ea_n));
-    let initial = match &rolling {
-        None => Initial::Uniform(first.t1_n),
-        Some(r) => Initial::Rolling { level1: r, first, direction },
+    let rolling = rolling_initial(design, &first, direction);
+    let initial = Initial::of(&rolling, first, direction);
+    let (run, level3, for_tracks) = match made_beside {
+        Some(run) => (run, None, None),
+        None => {
+            let model = wrap_model(design, scene, &result.plan, samples, initial, options)?;
+            // The tracks follow the same model from the same start.
+            let for_tracks = scene.tracks.as_ref().map(|_| model.clone());
+            let (run, level3) = run_model(model, scene, samples, output, options, spare_core)?;
+            (run, level3, for_tracks)
+        }
     };
-    let model = wrap_model(design, scene, &result.plan, samples, initial, options)?;
-    // The tracks follow the same model from the same start.
-    let for_tracks = scene.tracks.as_ref().map(|_| model.clone());
-    let (run, level3) = run_model(model, scene, samples, output, options, spare_core)?;
     crate::tally::add_increments(run.stats.increments);
     result.level3 = level3;
     let mut snapshots: Vec<history::Snapshot> = run.snapshots;

@@ -51,6 +51,30 @@ pub(super) enum Initial<'a> {
     Rolling { level1: &'a level1::SteadyRolling, first: EndState, direction: Direction },
 }
 
+impl<'a> Initial<'a> {
+    /// The start of a history whose first loads are `first`: uniform at T1 when they are
+    /// balanced, else the rolling state `rolling` ([`rolling_initial`]) after the rope ran in
+    /// `direction`.
+    pub fn of(rolling: &'a Option<level1::SteadyRolling>, first: EndState, direction: Direction) -> Self {
+        match rolling {
+            None => Initial::Uniform(first.t1_n),
+            Some(r) => Initial::Rolling { level1: r, first, direction },
+        }
+    }
+}
+
+/// Creep theory's steady rolling under a history's first loads after the rope ran in
+/// `direction`, when they are not balanced (a balanced history starts uniform).
+pub(super) fn rolling_initial(
+    design: &Design,
+    first: &EndState,
+    direction: Direction,
+) -> Option<level1::SteadyRolling> {
+    (first.t1_n != first.t2_n).then(|| {
+        level1::steady_rolling(design.pulley.mu, design.pulley.wrap_angle_rad, first, direction, design.rope.ea_n)
+    })
+}
+
 /// The wrap model of a scene at the start of its history (not yet settled).
 #[derive(Clone)]
 pub(super) enum Model<'a> {

@@ -5,6 +5,7 @@
 
 pub mod output;
 pub mod report;
+mod rows;
 pub mod sample;
 
 pub use output::{HistoryRow, HistoryRun, MAP_COLUMNS, Output, Snapshot};
@@ -13,11 +14,8 @@ pub use sample::HistorySample;
 
 use crate::contact::NodeState;
 use crate::derived::WrapSummary;
-use crate::model::level0::{EndState, euler_limit};
 use crate::roots::{RootError, RootStats};
 use crate::wrap::Distribution;
-use sample::{interpolate, speed_slope};
-use std::sync::OnceLock;
 
 /// What the hoist gives every wrap model: the friction coefficient, the wrap and the rope.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -122,23 +120,7 @@ pub fn run_with<M: WrapModel>(
 ) -> Result<(HistoryRun, M::Counters), M::Error> {
     let times = output.times(samples);
     model.settle()?;
-    let wrap = model.wrap();
-    let limit = euler_limit(wrap.mu, wrap.wrap_angle_rad);
-    let mut run = HistoryRun::with_capacity(times.len());
-    let slots: Vec<Slot> = times.iter().map(|_| OnceLock::new()).collect();
-    let mut rows = Rows { times: &times, slots: &slots, ends: Vec::with_capacity(times.len()), run: &mut run };
-    let stepped = if parallel_rows {
-        rayon::in_place_scope(|scope| step_rows(&mut model, samples, &output, output_nodes, &mut rows, Some(scope)))
-    } else {
-        step_rows(&mut model, samples, &output, output_nodes, &mut rows, None)
-    };
-    // A summary that failed before the row where stepping failed is the first error.
-    let ends = std::mem::take(&mut rows.ends);
-    for ((t, end, gross_slip), slot) in ends.into_iter().zip(slots) {
-        let summary = slot.into_inner().expect("every row's summary was made")?;
-        run.push_row(t, &end, &summary, limit, gross_slip);
-    }
-    stepped?;
+    let mut run = rows::run_rows(&mut model, &mut rows::Whole(samples), &times, output, output_nodes, parallel_rows)?;
     run.stats = model.solver_report();
     let roots = model.roots();
     run.roots.calls += roots.calls;
@@ -146,50 +128,36 @@ pub fn run_with<M: WrapModel>(
     Ok((run, model.counters()))
 }
 
-/// A row's summary, made in place or by a job.
-type Slot = OnceLock<Result<WrapSummary, RootError>>;
-
-/// What the rows of a run collect as the model steps: each row's time, end state and gross-slip
-/// flag, its summary's slot, and the map rows and snapshots (in the run).
-struct Rows<'a, 's> {
-    times: &'a [f64],
-    slots: &'s [Slot],
-    ends: Vec<(f64, EndState, bool)>,
-    run: &'a mut HistoryRun,
+/// A wrap model whose history grows as the run goes ([`crate::model::level2::Simulation::growing`]).
+pub trait Growing {
+    /// The history so far.
+    fn samples(&self) -> &[HistorySample];
+    /// Appends samples after the last.
+    fn extend_samples(&mut self, more: &[HistorySample]);
 }
 
-/// Steps `model` through the rows' times; a row's summary is made in place, or (with a
-/// `scope`, but at a snapshot) by a job spawned on it.
-fn step_rows<'s, M: WrapModel>(
-    model: &mut M,
-    samples: &[HistorySample],
-    output: &Output,
+/// [`run_with`] through a history that is still being made: `next` gives its next samples in
+/// order (`None` once it is complete), and the model is handed them as the rows need them, so
+/// that it never steps to a time the history has not passed. The history runs from `t0_s` to
+/// `t_end_s`; without `output.sample_rows` the rows, and all else, are those of [`run_with`]
+/// on the whole history, to the last bit.
+pub fn run_growing<M: WrapModel + Growing>(
+    mut model: M,
+    next: &mut dyn FnMut() -> Option<Vec<HistorySample>>,
+    (t0_s, t_end_s): (f64, f64),
+    output: Output,
     output_nodes: usize,
-    rows: &mut Rows<'_, 's>,
-    scope: Option<&rayon::Scope<'s>>,
-) -> Result<(), M::Error> {
-    let mass_per_m_kg = model.wrap().mass_per_m_kg;
-    for (&t, slot) in rows.times.iter().zip(rows.slots) {
-        model.advance_to(t)?;
-        let end = EndState::of_sample(&interpolate(samples, t), speed_slope(samples, t), mass_per_m_kg);
-        let snapshot = output.is_snapshot(t, samples);
-        if output.utilization_map {
-            rows.run.map.push(model.utilization_row());
-        }
-        match scope.filter(|_| !snapshot).and_then(|s| Some((s, model.summary_job()?))) {
-            Some((scope, job)) => scope.spawn(move |_| {
-                let _ = slot.set(job());
-            }),
-            None => {
-                let summary = model.summary(snapshot)?;
-                if snapshot {
-                    let distribution = model.distribution(t, &summary, output_nodes);
-                    rows.run.snapshots.push(Snapshot { summary: summary.clone(), distribution });
-                }
-                let _ = slot.set(Ok(summary));
-            }
-        }
-        rows.ends.push((t, end, model.gross_slip()));
-    }
-    Ok(())
+    parallel_rows: bool,
+) -> Result<(HistoryRun, M::Counters), M::Error> {
+    let times = output.times_between(t0_s, t_end_s, std::iter::empty());
+    let mut source = rows::Fed { next, done: false };
+    // The first interval's end, for the settling.
+    rows::RowSamples::at(&mut source, &mut model, t0_s);
+    model.settle()?;
+    let mut run = rows::run_rows(&mut model, &mut source, &times, output, output_nodes, parallel_rows)?;
+    run.stats = model.solver_report();
+    let roots = model.roots();
+    run.roots.calls += roots.calls;
+    run.roots.iterations += roots.iterations;
+    Ok((run, model.counters()))
 }

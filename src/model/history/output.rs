@@ -121,9 +121,15 @@ impl Output<'_> {
     /// every `step_s` from the start, and (when `sample_rows`) every sample; sorted, no repeats.
     pub fn times(&self, samples: &[HistorySample]) -> Vec<f64> {
         let (t0, t_end) = (samples.first().map_or(0.0, |s| s.t_s), samples.last().map_or(0.0, |s| s.t_s));
+        self.times_between(t0, t_end, samples.iter().map(|s| s.t_s))
+    }
+
+    /// [`Self::times`] of a history from `t0` to `t_end` (s) whose sample times are `sample_times`
+    /// (taken only with `sample_rows`).
+    pub fn times_between(&self, t0: f64, t_end: f64, sample_times: impl Iterator<Item = f64>) -> Vec<f64> {
         let steps = self.step_s.filter(|s| *s > 0.0).map_or(0, |s| ((t_end - t0) / s).floor() as usize);
         let regular = (1..=steps).map(|k| t0 + k as f64 * self.step_s.unwrap_or(0.0)).filter(|t| *t < t_end);
-        let at_samples = samples.iter().map(|s| s.t_s).filter(|_| self.sample_rows);
+        let at_samples = sample_times.filter(|_| self.sample_rows);
         let mut times: Vec<f64> =
             at_samples.chain(self.snapshots_s.iter().copied()).chain(regular).chain([t0, t_end]).collect();
         times.sort_by(f64::total_cmp);

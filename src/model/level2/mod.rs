@@ -133,6 +133,16 @@ impl Simulation<'_> {
     }
 }
 
+impl history::Growing for Simulation<'_> {
+    fn samples(&self) -> &[HistorySample] {
+        Simulation::samples(self)
+    }
+
+    fn extend_samples(&mut self, more: &[HistorySample]) {
+        Simulation::extend_samples(self, more);
+    }
+}
+
 /// Runs a history from `initial` on the rigid lining through [`history::run`], reporting at
 /// every sample and snapshot time (and every output step); distributions on `output_nodes`
 /// pitches (plus every breakpoint).

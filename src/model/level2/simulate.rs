@@ -28,6 +28,7 @@ use crate::model::numerics::Numerics;
 use crate::roots::RootStats;
 use crate::wrap::{EntryRamp, Piece};
 use serde::Serialize;
+use std::borrow::Cow;
 
 /// Which solver performs each increment.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -88,7 +89,7 @@ struct LastStep {
 pub struct Simulation<'a> {
     /// What the model knows of the hoist.
     pub params: Params,
-    samples: &'a [HistorySample],
+    samples: Cow<'a, [HistorySample]>,
     /// Time the state has reached (s).
     pub t_s: f64,
     /// Tension over the wrap at [`Self::t_s`], per rope.
@@ -112,6 +113,20 @@ impl<'a> Simulation<'a> {
     /// Starts at the first sample with the given state (its ends are set by [`Self::settle`]),
     /// with the default [`Numerics`].
     pub fn new(params: Params, samples: &'a [HistorySample], profile: Profile) -> Self {
+        let step_n = lattice::centrifugal_step_n(samples, params.mass_per_m_kg, &Numerics::default());
+        Self::started(params, Cow::Borrowed(samples), profile, step_n)
+    }
+
+    /// [`Self::new`] on a history that is still being made: it starts with `first` (at least
+    /// its first sample) and grows by [`Self::extend_samples`] ahead of the times the run is
+    /// stepped to. The m'v² lattice, which [`Self::new`] spaces from the whole history, is given
+    /// (`centrifugal_step_n`, N), so the run is that of [`Self::new`] on the whole history
+    /// exactly when the spacing is [`lattice::centrifugal_step_n`] of it.
+    pub fn growing(params: Params, first: Vec<HistorySample>, profile: Profile, centrifugal_step_n: f64) -> Self {
+        Self::started(params, Cow::Owned(first), profile, centrifugal_step_n)
+    }
+
+    fn started(params: Params, samples: Cow<'a, [HistorySample]>, profile: Profile, centrifugal_step_n: f64) -> Self {
         let t_s = samples.first().map_or(0.0, |s| s.t_s);
         let centrifugal_n = samples.first().map_or(0.0, |s| params.mass_per_m_kg * s.speed_m_s * s.speed_m_s);
         Self {
@@ -121,7 +136,7 @@ impl<'a> Simulation<'a> {
             profile,
             gross_slip: false,
             centrifugal_n,
-            centrifugal_step_n: lattice::centrifugal_step_n(samples, params.mass_per_m_kg, &Numerics::default()),
+            centrifugal_step_n,
             numerics: Numerics::default(),
             stats: Level2Stats::default(),
             roots: RootStats::default(),
@@ -130,20 +145,25 @@ impl<'a> Simulation<'a> {
         }
     }
 
+    /// Appends samples after the last (a history made as the run goes, [`Self::growing`]).
+    pub fn extend_samples(&mut self, more: &[HistorySample]) {
+        self.samples.to_mut().extend_from_slice(more);
+    }
+
     /// The same run with other step sizes.
     pub fn with_numerics(self, numerics: Numerics) -> Self {
-        let centrifugal_step_n = lattice::centrifugal_step_n(self.samples, self.params.mass_per_m_kg, &numerics);
+        let centrifugal_step_n = lattice::centrifugal_step_n(&self.samples, self.params.mass_per_m_kg, &numerics);
         Self { numerics, centrifugal_step_n, ..self }
     }
 
-    /// The history the run steps through.
-    pub fn samples(&self) -> &'a [HistorySample] {
-        self.samples
+    /// The history the run steps through (so far).
+    pub fn samples(&self) -> &[HistorySample] {
+        &self.samples
     }
 
     /// Applies the first sample's ends without motion.
     pub fn settle(&mut self) -> Result<(), SimError> {
-        let k = segment(self.samples, self.t_s);
+        let k = segment(&self.samples, self.t_s);
         let input = self.linear(k).0;
         self.centrifugal_n = self.params.mass_per_m_kg * (input.omega_per_s * self.params.radius_m).powi(2);
         self.centrifugal_step(self.centrifugal_n, &input, self.t_s - self.samples[k].t_s)
@@ -173,7 +193,7 @@ impl<'a> Simulation<'a> {
     /// Steps to `t_end` (≥ the current time).
     pub fn advance_to(&mut self, t_end: f64) -> Result<(), SimError> {
         while self.t_s < t_end {
-            let k = segment(self.samples, self.t_s);
+            let k = segment(&self.samples, self.t_s);
             let (input, t0, seg_end) = self.linear(k);
             let stop = seg_end.min(t_end);
             let from = self.t_s - t0;

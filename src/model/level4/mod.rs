@@ -224,6 +224,30 @@ pub fn scene_ropes(
     Ok(RopeRun { samples, at_brake })
 }
 
+/// [`scene_ropes`] on one thread, handing the samples (the guide sheave's inertia included) to
+/// `sink` in order as they are made ([`dynamics::simulate_streamed`]); a stop by the `[brake]`
+/// hands them all at the end.
+pub fn scene_ropes_streamed(
+    design: &Design,
+    hoist: &Hoist,
+    scene: &DutyCycleScene,
+    sink: &mut dyn FnMut(&[DynSample]),
+) -> Result<RopeRun, Level4Error> {
+    if scene.brake_stop_s.is_some() {
+        let run = scene_ropes(design, hoist, scene, false)?;
+        sink(&run.samples);
+        return Ok(run);
+    }
+    let mut guided = |raw: &[DynSample]| {
+        let mut chunk = raw.to_vec();
+        stop::with_guide(design, &mut chunk);
+        sink(&chunk);
+    };
+    let keep_at_s = scene.emergency.map(|stop| stop.at_s);
+    let (samples, at_brake) = resumable_ropes_into(design, hoist, scene, None, keep_at_s, false, &mut guided)?;
+    Ok(RopeRun { samples, at_brake })
+}
+
 /// [`suspended_ropes`] from a checkpoint and/or keeping one ([`dynamics::simulate_resumable`]).
 fn resumable_ropes(
     design: &Design,
@@ -232,6 +256,19 @@ fn resumable_ropes(
     from: Option<&Checkpoint>,
     keep_at_s: Option<f64>,
     parallel_sides: bool,
+) -> Result<(Vec<DynSample>, Option<Checkpoint>), Level4Error> {
+    resumable_ropes_into(design, hoist, scene, from, keep_at_s, parallel_sides, &mut |_| {})
+}
+
+/// [`resumable_ropes`], handing the raw samples to `sink` as they are made.
+fn resumable_ropes_into(
+    design: &Design,
+    hoist: &Hoist,
+    scene: &DutyCycleScene,
+    from: Option<&Checkpoint>,
+    keep_at_s: Option<f64>,
+    parallel_sides: bool,
+    sink: &mut dyn FnMut(&[DynSample]),
 ) -> Result<(Vec<DynSample>, Option<Checkpoint>), Level4Error> {
     let params = hoist_params(design, hoist, scene);
     let profile = motion_profile(hoist, scene)?;
@@ -242,7 +279,7 @@ fn resumable_ropes(
         parallel_sides,
         ..SimOptions::new(scene.time_step_s, ELEMENTS_PER_SIDE)
     };
-    let (mut samples, cp) = dynamics::simulate_resumable(&params, &profile, &options, from, keep_at_s)?;
+    let (mut samples, cp) = dynamics::simulate_streamed(&params, &profile, &options, from, keep_at_s, sink)?;
     stop::with_guide(design, &mut samples);
     Ok((samples, cp))
 }

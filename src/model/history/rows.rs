@@ -1,0 +1,127 @@
+//! The rows of a history run: the model stepped from row to row, each row's end state and
+//! summary (made in place, or by a job on another thread), the map rows and the snapshots.
+
+use super::sample::{interpolate, speed_slope};
+use super::{HistoryRun, HistorySample, Output, Snapshot, WrapModel};
+use crate::derived::WrapSummary;
+use crate::model::level0::{EndState, euler_limit};
+use crate::roots::RootError;
+use std::sync::OnceLock;
+
+/// Where the rows take the history from.
+pub(super) trait RowSamples<M> {
+    /// The history interpolated at `t_s`, the speed's slope there, and whether `t_s` is the last
+    /// sample's time; a growing history is first made to reach past `t_s` (or to its end).
+    fn at(&mut self, model: &mut M, t_s: f64) -> (HistorySample, f64, bool);
+}
+
+/// A whole history, given.
+pub(super) struct Whole<'s>(pub &'s [HistorySample]);
+
+impl<M> RowSamples<M> for Whole<'_> {
+    fn at(&mut self, _: &mut M, t_s: f64) -> (HistorySample, f64, bool) {
+        inputs(self.0, t_s)
+    }
+}
+
+/// A history the model holds and grows from `next` ([`super::Growing`]).
+pub(super) struct Fed<'f> {
+    pub next: &'f mut dyn FnMut() -> Option<Vec<HistorySample>>,
+    pub done: bool,
+}
+
+impl<M: super::Growing> RowSamples<M> for Fed<'_> {
+    fn at(&mut self, model: &mut M, t_s: f64) -> (HistorySample, f64, bool) {
+        while !self.done && !model.samples().last().is_some_and(|s| s.t_s > t_s) {
+            match (self.next)() {
+                Some(more) => model.extend_samples(&more),
+                None => self.done = true,
+            }
+        }
+        inputs(model.samples(), t_s)
+    }
+}
+
+fn inputs(samples: &[HistorySample], t_s: f64) -> (HistorySample, f64, bool) {
+    let last = samples.last().is_some_and(|s| s.t_s == t_s);
+    (interpolate(samples, t_s), speed_slope(samples, t_s), last)
+}
+
+/// Steps the settled `model` through `times`, a row at each; with `parallel_rows` the rows'
+/// summaries (but a snapshot's) are jobs on other threads of the pool. A summary that failed
+/// before the row where stepping failed is the first error.
+pub(super) fn run_rows<M: WrapModel, S: RowSamples<M>>(
+    model: &mut M,
+    source: &mut S,
+    times: &[f64],
+    output: Output,
+    output_nodes: usize,
+    parallel_rows: bool,
+) -> Result<HistoryRun, M::Error> {
+    let wrap = model.wrap();
+    let limit = euler_limit(wrap.mu, wrap.wrap_angle_rad);
+    let mut run = HistoryRun::with_capacity(times.len());
+    let slots: Vec<Slot> = times.iter().map(|_| OnceLock::new()).collect();
+    let mut rows = Rows { times, slots: &slots, ends: Vec::with_capacity(times.len()), run: &mut run };
+    let stepped = if parallel_rows {
+        rayon::in_place_scope(|scope| step_rows(model, source, &output, output_nodes, &mut rows, Some(scope)))
+    } else {
+        step_rows(model, source, &output, output_nodes, &mut rows, None)
+    };
+    let ends = std::mem::take(&mut rows.ends);
+    for ((t, end, gross_slip), slot) in ends.into_iter().zip(slots) {
+        let summary = slot.into_inner().expect("every row's summary was made")?;
+        run.push_row(t, &end, &summary, limit, gross_slip);
+    }
+    stepped?;
+    Ok(run)
+}
+
+/// A row's summary, made in place or by a job.
+type Slot = OnceLock<Result<WrapSummary, RootError>>;
+
+/// What the rows of a run collect as the model steps: each row's time, end state and gross-slip
+/// flag, its summary's slot, and the map rows and snapshots (in the run).
+struct Rows<'a, 's> {
+    times: &'a [f64],
+    slots: &'s [Slot],
+    ends: Vec<(f64, EndState, bool)>,
+    run: &'a mut HistoryRun,
+}
+
+/// Steps `model` through the rows' times; a row's summary is made in place, or (with a
+/// `scope`, but at a snapshot) by a job spawned on it.
+fn step_rows<'s, M: WrapModel, S: RowSamples<M>>(
+    model: &mut M,
+    source: &mut S,
+    output: &Output,
+    output_nodes: usize,
+    rows: &mut Rows<'_, 's>,
+    scope: Option<&rayon::Scope<'s>>,
+) -> Result<(), M::Error> {
+    let mass_per_m_kg = model.wrap().mass_per_m_kg;
+    for (&t, slot) in rows.times.iter().zip(rows.slots) {
+        let (sample, slope, last) = source.at(model, t);
+        model.advance_to(t)?;
+        let end = EndState::of_sample(&sample, slope, mass_per_m_kg);
+        let snapshot = last || output.snapshots_s.contains(&t);
+        if output.utilization_map {
+            rows.run.map.push(model.utilization_row());
+        }
+        match scope.filter(|_| !snapshot).and_then(|s| Some((s, model.summary_job()?))) {
+            Some((scope, job)) => scope.spawn(move |_| {
+                let _ = slot.set(job());
+            }),
+            None => {
+                let summary = model.summary(snapshot)?;
+                if snapshot {
+                    let distribution = model.distribution(t, &summary, output_nodes);
+                    rows.run.snapshots.push(Snapshot { summary: summary.clone(), distribution });
+                }
+                let _ = slot.set(Ok(summary));
+            }
+        }
+        rows.ends.push((t, end, model.gross_slip()));
+    }
+    Ok(())
+}

@@ -1,0 +1,154 @@
+//! A duty cycle on the rigid lining with its wrap run beside its suspended ropes: the ropes step
+//! on a thread of their own and hand their samples over as they make them, and the wrap
+//! (level 2) works through them as they come, instead of waiting for the whole trip.
+//!
+//! The sequential run fixes two things from the whole end history before the wrap starts: the
+//! spacing of the m'v² lattice ([`level2::lattice::centrifugal_step_n`]: the larger of a
+//! fraction of the largest end tension and a fraction of the largest m'v²) and the end of the
+//! trip (at the onset of gross slip, or where a rope goes slack). The run beside the ropes
+//! takes the spacing from the largest m'v² of the motion profile at the samples' instants (the
+//! tensions' share is far smaller on a hoist: 1e-6 of the tension against 1e-3 of m'v²) and the
+//! profile's end, and its result is kept only when the whole history confirms both
+//! ([`Beside::confirmed`]): it is then the sequential run's to the last bit; otherwise the wrap
+//! runs again through the confirmed history.
+
+use super::wrap_run::{Initial, level2_initial, rolling_initial};
+use super::{Options, params};
+use crate::design::{Design, Direction, DutyCycleScene, HistorySample, Hoist, Scene};
+use crate::dynamics::{self, AT_REST_M_S, DynSample, MotionProfile, SimOptions};
+use crate::model::history::{self, HistoryRun, Output};
+use crate::model::level0::EndState;
+use crate::model::level2::{Simulation, lattice};
+use crate::model::level4::{self, Level4Error, RopeRun};
+use crate::model::numerics::Numerics;
+use std::sync::mpsc;
+
+/// The ropes' run and the wrap's run made beside it.
+pub(super) struct Beside {
+    /// The suspended ropes' run (the same as [`level4::scene_ropes`]'s).
+    ropes: RopeRun,
+    wrap: Option<HistoryRun>,
+    /// The m'v² lattice spacing the wrap ran with (N).
+    centrifugal_step_n: f64,
+    /// Samples the wrap was handed.
+    fed: usize,
+}
+
+impl Beside {
+    /// The ropes' run, and the wrap's run still to be confirmed.
+    pub fn split(self) -> (RopeRun, Unconfirmed) {
+        let Self { ropes, wrap, centrifugal_step_n, fed } = self;
+        (ropes, Unconfirmed { wrap, centrifugal_step_n, fed })
+    }
+}
+
+/// The wrap's run beside the ropes, before the whole history confirms it.
+pub(super) struct Unconfirmed {
+    wrap: Option<HistoryRun>,
+    centrifugal_step_n: f64,
+    fed: usize,
+}
+
+impl Unconfirmed {
+    /// The wrap's run when the whole end history `samples` (the trip's valid part, from
+    /// `ropes_len` samples of the ropes) confirms what it ran on: all of the ropes' samples (no
+    /// gross slip ended the trip early; a slack rope is refused before) and the lattice spacing
+    /// of the whole history. It is then the run through `samples` to the last bit.
+    pub fn confirmed(self, samples: &[HistorySample], ropes_len: usize, mass_per_m_kg: f64) -> Option<HistoryRun> {
+        let spacing = lattice::centrifugal_step_n(samples, mass_per_m_kg, &Numerics::default());
+        let whole = samples.len() == ropes_len && self.fed == samples.len();
+        let kept = self.wrap.filter(|_| whole && spacing == self.centrifugal_step_n);
+        if kept.is_some() {
+            crate::tally::add_wrap_beside();
+        }
+        kept
+    }
+}
+
+/// Whether a duty cycle's wrap can run beside its ropes: level 4 on the rigid lining, the
+/// hoist's motion (not a stop by the `[brake]`), no rope elements to follow, and a core to
+/// spare.
+pub(super) fn applies(design: &Design, scene: &Scene, cycle: &DutyCycleScene, spare_core: bool) -> bool {
+    spare_core && design.lining.is_none() && cycle.brake_stop_s.is_none() && scene.tracks.is_none()
+}
+
+/// Runs the ropes of `cycle` on a thread of their own and the wrap through their samples as
+/// they come; `direction_before` is the way the rope ran before the trip.
+pub(super) fn run(
+    design: &Design,
+    hoist: &Hoist,
+    cycle: &DutyCycleScene,
+    direction_before: Direction,
+    options: Options,
+    output: Output,
+) -> Result<Beside, Level4Error> {
+    let profile = level4::motion_profile(hoist, cycle)?;
+    let centrifugal_step_n = spacing_from_profile(design, cycle, &profile);
+    let t_end_s = profile.duration_s();
+    let (tx, rx) = mpsc::channel::<Vec<DynSample>>();
+    let (ropes, wrap_run) = std::thread::scope(|s| {
+        let producer = s.spawn(move || {
+            level4::scene_ropes_streamed(design, hoist, cycle, &mut |chunk| {
+                // A wrap that stopped early no longer listens; the ropes run on.
+                let _ = tx.send(chunk.to_vec());
+            })
+        });
+        let lattice = (centrifugal_step_n, t_end_s);
+        let wrap_run = wrap_beside(design, &rx, direction_before, lattice, options, output);
+        drop(rx);
+        (producer.join(), wrap_run)
+    });
+    let ropes = ropes.unwrap_or_else(|panic| std::panic::resume_unwind(panic))?;
+    let (wrap, fed) = match wrap_run {
+        Some((run, fed)) => (Some(run), fed),
+        None => (None, 0),
+    };
+    Ok(Beside { ropes, wrap, centrifugal_step_n, fed })
+}
+
+/// The wrap through the samples from `rx`, with the lattice spacing given; `None` when the
+/// history stops before it has two samples or the wrap fails (the confirmed history then
+/// decides, run again). Returns the run and the number of samples it was handed.
+fn wrap_beside(
+    design: &Design,
+    rx: &mpsc::Receiver<Vec<DynSample>>,
+    direction_before: Direction,
+    (centrifugal_step_n, t_end_s): (f64, f64),
+    options: Options,
+    output: Output,
+) -> Option<(HistoryRun, usize)> {
+    let first = rx.recv().ok()?;
+    let s0 = *first.first()?;
+    let samples = level4::end_history(&first);
+    let start = EndState::of_sample(&samples[0], s0.accel_m_s2, design.rope.mass_per_m_kg);
+    let rolling = rolling_initial(design, &start, direction_before);
+    let initial = level2_initial(design, Initial::of(&rolling, start, direction_before));
+    let mut fed = samples.len();
+    let sim = Simulation::growing(params(design, options.solver), samples, initial, centrifugal_step_n);
+    let mut next = || {
+        let chunk = rx.recv().ok()?;
+        fed += chunk.len();
+        Some(level4::end_history(&chunk))
+    };
+    let range = (s0.t_s, t_end_s);
+    let (run, _) = history::run_growing(sim, &mut next, range, output, options.nodes, true).ok()?;
+    Some((run, fed))
+}
+
+/// The m'v² lattice spacing of the samples the ropes will make, from the motion profile at
+/// their instants (those of [`dynamics::simulate_streamed`]: the start, every `record_every`-th
+/// step and the end), with the tensions' share left out.
+fn spacing_from_profile(design: &Design, cycle: &DutyCycleScene, profile: &MotionProfile) -> f64 {
+    let every = ((level4::WRAP_SAMPLE_S / cycle.time_step_s).round() as usize).max(1);
+    let opt = SimOptions { record_every: every, ..SimOptions::new(cycle.time_step_s, level4::ELEMENTS_PER_SIDE) };
+    let m = design.rope.mass_per_m_kg;
+    let c_max = dynamics::recorded_times(profile.duration_s(), &opt)
+        .into_iter()
+        .map(|t| {
+            let v = profile.at(t).speed_m_s;
+            let v = if v.abs() <= AT_REST_M_S { 0.0 } else { v };
+            m * v * v
+        })
+        .fold(0.0, f64::max);
+    Numerics::default().centrifugal_step_of_range * c_max
+}
