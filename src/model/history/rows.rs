@@ -99,6 +99,25 @@ fn step_rows<'s, M: WrapModel, S: RowSamples<M>>(
     rows: &mut Rows<'_, 's>,
     scope: Option<&rayon::Scope<'s>>,
 ) -> Result<(), M::Error> {
+    let mut batch = Vec::with_capacity(JOBS_PER_TASK);
+    let stepped = step_rows_batched(model, source, output, output_nodes, rows, scope, &mut batch);
+    // The rows before a failure keep their summaries.
+    if let Some(scope) = scope {
+        spawn_batch(scope, batch);
+    }
+    stepped
+}
+
+/// [`step_rows`], the jobs gathered in `batch` and spawned [`JOBS_PER_TASK`] at a time.
+fn step_rows_batched<'s, M: WrapModel, S: RowSamples<M>>(
+    model: &mut M,
+    source: &mut S,
+    output: &Output,
+    output_nodes: usize,
+    rows: &mut Rows<'_, 's>,
+    scope: Option<&rayon::Scope<'s>>,
+    batch: &mut Vec<(&'s Slot, super::SummaryJob)>,
+) -> Result<(), M::Error> {
     let mass_per_m_kg = model.wrap().mass_per_m_kg;
     for (&t, slot) in rows.times.iter().zip(rows.slots) {
         let (sample, slope, last) = source.at(model, t);
@@ -109,9 +128,12 @@ fn step_rows<'s, M: WrapModel, S: RowSamples<M>>(
             rows.run.map.push(model.utilization_row());
         }
         match scope.filter(|_| !snapshot).and_then(|s| Some((s, model.summary_job()?))) {
-            Some((scope, job)) => scope.spawn(move |_| {
-                let _ = slot.set(job());
-            }),
+            Some((scope, job)) => {
+                batch.push((slot, job));
+                if batch.len() == JOBS_PER_TASK {
+                    spawn_batch(scope, std::mem::take(batch));
+                }
+            }
             None => {
                 let summary = model.summary(snapshot)?;
                 if snapshot {
@@ -124,4 +146,20 @@ fn step_rows<'s, M: WrapModel, S: RowSamples<M>>(
         rows.ends.push((t, end, model.gross_slip()));
     }
     Ok(())
+}
+
+/// Rows' summaries one task of the pool makes in turn: fewer, longer tasks keep the threads
+/// that take them from waking and idling between rows.
+const JOBS_PER_TASK: usize = 8;
+
+/// Spawns one task making `batch`'s summaries into their slots, in order.
+fn spawn_batch<'s>(scope: &rayon::Scope<'s>, batch: Vec<(&'s Slot, super::SummaryJob)>) {
+    if batch.is_empty() {
+        return;
+    }
+    scope.spawn(move |_| {
+        for (slot, job) in batch {
+            let _ = slot.set(job());
+        }
+    });
 }
