@@ -135,12 +135,19 @@ fn write_into(dir: &Path, summary: &Summary, run: &RunResult, options: ReportOpt
         matrix::write_matrix_csv(BufWriter::new(f), m)
             .map_err(|source| ReportError::Csv { path: path.display().to_string(), source })?;
     }
-    run.scenes.par_iter().try_for_each(|scene| write_scene(dir, summary, scene, options))?;
-    compare::write(dir, options.compare, &run.scenes, options.plots)?;
-    if let Some((design, provenance)) = options.document {
-        write_document(dir, design, provenance, run)?;
+    let scenes = || {
+        run.scenes.par_iter().try_for_each(|scene| write_scene(dir, summary, scene, options))?;
+        compare::write(dir, options.compare, &run.scenes, options.plots)
+    };
+    let document = || options.document.map_or(Ok(()), |(design, provenance)| write_document(dir, design, provenance, run));
+    if options.plots {
+        // The document embeds the figures the scenes draw.
+        scenes()?;
+        document()
+    } else {
+        let (scenes, document) = rayon::join(scenes, document);
+        scenes.and(document)
     }
-    Ok(())
 }
 
 /// The calculation report (after the figures it embeds) and the checks' workbook.
