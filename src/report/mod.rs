@@ -139,7 +139,8 @@ fn write_into(dir: &Path, summary: &Summary, run: &RunResult, options: ReportOpt
         run.scenes.par_iter().try_for_each(|scene| write_scene(dir, summary, scene, options))?;
         compare::write(dir, options.compare, &run.scenes, options.plots)
     };
-    let document = || options.document.map_or(Ok(()), |(design, provenance)| write_document(dir, design, provenance, run));
+    let document =
+        || options.document.map_or(Ok(()), |(design, provenance)| write_document(dir, design, provenance, run));
     if options.plots {
         // The document embeds the figures the scenes draw.
         scenes()?;

@@ -21,6 +21,7 @@ use crate::model::level0::EndState;
 use crate::model::level2::{Simulation, lattice};
 use crate::model::level4::{self, Level4Error, RopeRun};
 use crate::model::numerics::Numerics;
+use crate::planner::{self, Level, Plan};
 use std::sync::mpsc;
 
 /// The ropes' run and the wrap's run made beside it.
@@ -65,11 +66,12 @@ impl Unconfirmed {
     }
 }
 
-/// Whether a duty cycle's wrap can run beside its ropes: level 4 on the rigid lining, the
-/// hoist's motion (not a stop by the `[brake]`), no rope elements to follow, and a core to
-/// spare.
-pub(super) fn applies(design: &Design, scene: &Scene, cycle: &DutyCycleScene, spare_core: bool) -> bool {
-    spare_core && design.lining.is_none() && cycle.brake_stop_s.is_none() && scene.tracks.is_none()
+/// Whether a duty cycle's wrap can run beside its ropes: the wrap at level 2 (the rigid
+/// lining), the hoist's motion (not a stop by the `[brake]`), no rope elements to follow, and
+/// a core to spare.
+pub(super) fn applies(design: &Design, scene: &Scene, cycle: &DutyCycleScene, plan: &Plan, spare_core: bool) -> bool {
+    let rigid = design.lining.is_none() && planner::wrap_level(plan, false) == Level::Rigid2;
+    spare_core && rigid && cycle.brake_stop_s.is_none() && scene.tracks.is_none()
 }
 
 /// Runs the ropes of `cycle` on a thread of their own and the wrap through their samples as

@@ -76,7 +76,7 @@ pub(super) fn run_duty_cycle(
     let (trip, dynamics, unconfirmed) = if plan.level == Level::Closed0 {
         (rigid, None, None)
     } else {
-        let (ropes, unconfirmed) = ropes(design, scene, cycle, options, parallel_sides).map_err(err)?;
+        let (ropes, unconfirmed) = ropes(design, scene, cycle, &plan, options, parallel_sides).map_err(err)?;
         let dynamics = &ropes.samples;
         let kin = dynamics.iter().map(|s| Kinematics { x_m: s.x_m, speed_m_s: s.speed_m_s, accel_m_s2: s.accel_m_s2 });
         (Trip::valid_part(design, level4::end_history(dynamics), kin.collect()), Some((ropes, rigid)), unconfirmed)
@@ -127,11 +127,12 @@ fn ropes(
     design: &Design,
     scene: &Scene,
     cycle: &DutyCycleScene,
+    plan: &Plan,
     options: Options,
     parallel_sides: bool,
 ) -> Result<(RopeRun, Option<pipelined::Unconfirmed>), Level4Error> {
     let hoist = design.hoist.as_ref().ok_or(Level4Error::NoHoist)?;
-    if !pipelined::applies(design, scene, cycle, parallel_sides) {
+    if !pipelined::applies(design, scene, cycle, plan, parallel_sides) {
         return Ok((level4::scene_ropes(design, hoist, cycle, parallel_sides)?, None));
     }
     let end_s = level4::motion_profile(hoist, cycle)?.duration_s();
