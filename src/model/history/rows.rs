@@ -63,10 +63,16 @@ pub(super) fn run_rows<M: WrapModel, S: RowSamples<M>>(
     let mut run = HistoryRun::with_capacity(times.len());
     let slots: Vec<Slot> = times.iter().map(|_| OnceLock::new()).collect();
     let mut rows = Rows { times, slots: &slots, ends: Vec::with_capacity(times.len()), run: &mut run };
+    let mut batch = Vec::with_capacity(JOBS_PER_TASK);
     let stepped = if parallel_rows {
-        rayon::in_place_scope(|scope| step_rows(model, source, &output, output_nodes, &mut rows, Some(scope)))
+        rayon::in_place_scope(|scope| {
+            let stepped = step_rows(model, source, &output, output_nodes, &mut rows, (Some(scope), &mut batch));
+            // The rows before a failure keep their summaries.
+            spawn_batch(scope, std::mem::take(&mut batch));
+            stepped
+        })
     } else {
-        step_rows(model, source, &output, output_nodes, &mut rows, None)
+        step_rows(model, source, &output, output_nodes, &mut rows, (None, &mut batch))
     };
     let ends = std::mem::take(&mut rows.ends);
     for ((t, end, gross_slip), slot) in ends.into_iter().zip(slots) {
@@ -90,33 +96,15 @@ struct Rows<'a, 's> {
 }
 
 /// Steps `model` through the rows' times; a row's summary is made in place, or (with a
-/// `scope`, but at a snapshot) by a job spawned on it.
+/// `scope`, but at a snapshot) by a job gathered in `batch` and spawned [`JOBS_PER_TASK`] at a
+/// time (the caller spawns what is left, after a failure too).
 fn step_rows<'s, M: WrapModel, S: RowSamples<M>>(
     model: &mut M,
     source: &mut S,
     output: &Output,
     output_nodes: usize,
     rows: &mut Rows<'_, 's>,
-    scope: Option<&rayon::Scope<'s>>,
-) -> Result<(), M::Error> {
-    let mut batch = Vec::with_capacity(JOBS_PER_TASK);
-    let stepped = step_rows_batched(model, source, output, output_nodes, rows, scope, &mut batch);
-    // The rows before a failure keep their summaries.
-    if let Some(scope) = scope {
-        spawn_batch(scope, batch);
-    }
-    stepped
-}
-
-/// [`step_rows`], the jobs gathered in `batch` and spawned [`JOBS_PER_TASK`] at a time.
-fn step_rows_batched<'s, M: WrapModel, S: RowSamples<M>>(
-    model: &mut M,
-    source: &mut S,
-    output: &Output,
-    output_nodes: usize,
-    rows: &mut Rows<'_, 's>,
-    scope: Option<&rayon::Scope<'s>>,
-    batch: &mut Vec<(&'s Slot, super::SummaryJob)>,
+    (scope, batch): (Option<&rayon::Scope<'s>>, &mut Vec<(&'s Slot, super::SummaryJob)>),
 ) -> Result<(), M::Error> {
     let mass_per_m_kg = model.wrap().mass_per_m_kg;
     for (&t, slot) in rows.times.iter().zip(rows.slots) {

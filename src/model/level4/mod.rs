@@ -220,7 +220,7 @@ pub fn scene_ropes(
         return Ok(RopeRun { samples: trips.pop().unwrap_or_default(), at_brake: None });
     }
     let keep_at_s = scene.emergency.map(|stop| stop.at_s);
-    let (samples, at_brake) = resumable_ropes(design, hoist, scene, None, keep_at_s, parallel_sides)?;
+    let (samples, at_brake) = resumable_ropes(design, hoist, scene, None, keep_at_s, parallel_sides, &mut |_| {})?;
     Ok(RopeRun { samples, at_brake })
 }
 
@@ -244,24 +244,13 @@ pub fn scene_ropes_streamed(
         sink(&chunk);
     };
     let keep_at_s = scene.emergency.map(|stop| stop.at_s);
-    let (samples, at_brake) = resumable_ropes_into(design, hoist, scene, None, keep_at_s, false, &mut guided)?;
+    let (samples, at_brake) = resumable_ropes(design, hoist, scene, None, keep_at_s, false, &mut guided)?;
     Ok(RopeRun { samples, at_brake })
 }
 
-/// [`suspended_ropes`] from a checkpoint and/or keeping one ([`dynamics::simulate_resumable`]).
+/// [`suspended_ropes`] from a checkpoint and/or keeping one, handing the raw samples to `sink`
+/// as they are made ([`dynamics::simulate_streamed`]).
 fn resumable_ropes(
-    design: &Design,
-    hoist: &Hoist,
-    scene: &DutyCycleScene,
-    from: Option<&Checkpoint>,
-    keep_at_s: Option<f64>,
-    parallel_sides: bool,
-) -> Result<(Vec<DynSample>, Option<Checkpoint>), Level4Error> {
-    resumable_ropes_into(design, hoist, scene, from, keep_at_s, parallel_sides, &mut |_| {})
-}
-
-/// [`resumable_ropes`], handing the raw samples to `sink` as they are made.
-fn resumable_ropes_into(
     design: &Design,
     hoist: &Hoist,
     scene: &DutyCycleScene,
@@ -422,7 +411,8 @@ impl<'a> StopTrials<'a> {
             None => {
                 let emergency = Some(EmergencyStop { decel_m_s2, ..self.stop });
                 let trial = DutyCycleScene { emergency, ..self.scene.clone() };
-                let run = resumable_ropes(self.design, self.hoist, &trial, Some(&self.checkpoint), None, false);
+                let run =
+                    resumable_ropes(self.design, self.hoist, &trial, Some(&self.checkpoint), None, false, &mut |_| {});
                 runs.push((key, run.ok().map(|(samples, _)| samples)));
                 runs.len() - 1
             }
