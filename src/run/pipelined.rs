@@ -15,7 +15,7 @@
 use super::wrap_run::{Initial, level2_initial, rolling_initial};
 use super::{Options, params};
 use crate::design::{Design, Direction, DutyCycleScene, HistorySample, Hoist, Scene};
-use crate::dynamics::{self, AT_REST_M_S, DynSample, MotionProfile, SimOptions};
+use crate::dynamics::{self, DynSample, MotionProfile, SimOptions};
 use crate::model::history::{self, HistoryRun, Output};
 use crate::model::level0::EndState;
 use crate::model::level2::{Simulation, lattice};
@@ -147,8 +147,7 @@ fn spacing_from_profile(design: &Design, cycle: &DutyCycleScene, profile: &Motio
     let c_max = dynamics::recorded_times(profile.duration_s(), &opt)
         .into_iter()
         .map(|t| {
-            let v = profile.at(t).speed_m_s;
-            let v = if v.abs() <= AT_REST_M_S { 0.0 } else { v };
+            let v = level4::at_rest_snapped(profile.at(t).speed_m_s);
             m * v * v
         })
         .fold(0.0, f64::max);

@@ -323,7 +323,7 @@ pub fn rigid_kinematics(
 }
 
 /// Speeds below 1 nm/s are round-off of a profile that has come to rest: exactly 0.
-fn at_rest_snapped(speed_m_s: f64) -> f64 {
+pub(crate) fn at_rest_snapped(speed_m_s: f64) -> f64 {
     if speed_m_s.abs() <= AT_REST_M_S { 0.0 } else { speed_m_s }
 }
 
