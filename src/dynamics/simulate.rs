@@ -212,7 +212,7 @@ pub fn simulate_streamed(
         (keep_step == Some(first_step - 1)).then(|| checkpoint(first_step - 1, t_prev, &sides, work_j, dissipated_j));
     let mut motion = profile.cursor();
     for step in first_step..=steps {
-        let t = if step == steps { total_s } else { (step as f64 * dt).min(total_s) };
+        let t = step_time_s(step, steps, dt, total_s);
         let h = t - t_prev;
         if h <= 0.0 {
             continue;
@@ -240,6 +240,11 @@ pub fn simulate_streamed(
     Ok((out, kept))
 }
 
+/// The instant step `step` of `steps` ends at: `step·dt`, the last at exactly `total_s`.
+pub(super) fn step_time_s(step: usize, steps: usize, dt_s: f64, total_s: f64) -> f64 {
+    if step == steps { total_s } else { (step as f64 * dt_s).min(total_s) }
+}
+
 /// The instants of the samples a run from the start of a profile of `duration_s` records
 /// ([`simulate_streamed`], without a checkpoint): the start, every `record_every`-th step and
 /// the last, the steps as the run takes them.
@@ -249,7 +254,7 @@ pub fn recorded_times(duration_s: f64, opt: &SimOptions) -> Vec<f64> {
     let mut out = vec![0.0];
     let mut t_prev = 0.0;
     for step in 1..=steps {
-        let t = if step == steps { duration_s } else { (step as f64 * dt).min(duration_s) };
+        let t = step_time_s(step, steps, dt, duration_s);
         if t - t_prev <= 0.0 {
             continue;
         }

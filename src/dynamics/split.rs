@@ -6,7 +6,9 @@
 //! first error are those of [`super::simulate_resumable`]'s paired run, bit for bit.
 
 use super::rope::Coeffs;
-use super::simulate::{Checkpoint, DynSample, Side2, SideSample, SimOptions, coeffs, sample_from, sample_of};
+use super::simulate::{
+    Checkpoint, DynSample, Side2, SideSample, SimOptions, coeffs, sample_from, sample_of, step_time_s,
+};
 use super::sweep::{Pivots, step_alone};
 use super::{DynamicsError, HoistParams, MotionProfile};
 
@@ -103,7 +105,7 @@ fn run_side(p: &HoistParams, profile: &MotionProfile, opt: &SimOptions, mut side
     while next <= plan.steps {
         ahead.clear();
         for step in next..=(next + AHEAD - 1).min(plan.steps) {
-            let t = if step == plan.steps { total_s } else { (step as f64 * dt).min(total_s) };
+            let t = step_time_s(step, plan.steps, dt, total_s);
             let h = t - t_formed;
             if h <= 0.0 {
                 continue;

@@ -120,12 +120,17 @@ pub fn run_with<M: WrapModel>(
 ) -> Result<(HistoryRun, M::Counters), M::Error> {
     let times = output.times(samples);
     model.settle()?;
-    let mut run = rows::run_rows(&mut model, &mut rows::Whole(samples), &times, output, output_nodes, parallel_rows)?;
+    let run = rows::run_rows(&mut model, &mut rows::Whole(samples), &times, output, output_nodes, parallel_rows)?;
+    Ok(finished(&model, run))
+}
+
+/// The run with the model's solver report and root searches, and the model's counters.
+fn finished<M: WrapModel>(model: &M, mut run: HistoryRun) -> (HistoryRun, M::Counters) {
     run.stats = model.solver_report();
     let roots = model.roots();
     run.roots.calls += roots.calls;
     run.roots.iterations += roots.iterations;
-    Ok((run, model.counters()))
+    (run, model.counters())
 }
 
 /// A wrap model whose history grows as the run goes ([`crate::model::level2::Simulation::growing`]).
@@ -154,10 +159,6 @@ pub fn run_growing<M: WrapModel + Growing>(
     // The first interval's end, for the settling.
     rows::RowSamples::at(&mut source, &mut model, t0_s);
     model.settle()?;
-    let mut run = rows::run_rows(&mut model, &mut source, &times, output, output_nodes, parallel_rows)?;
-    run.stats = model.solver_report();
-    let roots = model.roots();
-    run.roots.calls += roots.calls;
-    run.roots.iterations += roots.iterations;
-    Ok((run, model.counters()))
+    let run = rows::run_rows(&mut model, &mut source, &times, output, output_nodes, parallel_rows)?;
+    Ok(finished(&model, run))
 }

@@ -137,9 +137,10 @@ impl Output<'_> {
         times
     }
 
-    /// Whether the run reports a distribution at `t_s`: a requested snapshot, or the last sample.
-    pub fn is_snapshot(&self, t_s: f64, samples: &[HistorySample]) -> bool {
-        self.snapshots_s.contains(&t_s) || samples.last().is_some_and(|s| s.t_s == t_s)
+    /// Whether the run reports a distribution at `t_s`: a requested snapshot, or the last sample
+    /// (`at_last_sample`).
+    pub fn is_snapshot(&self, t_s: f64, at_last_sample: bool) -> bool {
+        self.snapshots_s.contains(&t_s) || at_last_sample
     }
 }
 

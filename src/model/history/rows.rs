@@ -111,7 +111,7 @@ fn step_rows<'s, M: WrapModel, S: RowSamples<M>>(
         let (sample, slope, last) = source.at(model, t);
         model.advance_to(t)?;
         let end = EndState::of_sample(&sample, slope, mass_per_m_kg);
-        let snapshot = last || output.snapshots_s.contains(&t);
+        let snapshot = output.is_snapshot(t, last);
         if output.utilization_map {
             rows.run.map.push(model.utilization_row());
         }
