@@ -9,6 +9,7 @@
 
 use crate::contact::{ARC_THRESHOLD, ContactLaw, NodeState, SLIP_UTILIZATION};
 use crate::roots::{RootError, RootStats, bracketed};
+use crate::screen::{Screen, Side};
 use crate::wrap::{Distribution, Piece, Sample, TensionField, Zone, output_grid_rad};
 
 /// Sign class of friction on a stretch of wrap.
@@ -157,42 +158,176 @@ pub fn summarize_pieces(
     law: &ContactLaw,
     zones: bool,
 ) -> Result<WrapSummary, RootError> {
-    let mut roots = RootStats::default();
-    let mut states = ZoneRuns::default();
-    let mut arcs = ArcTally::default();
-    let mut max_utilization: f64 = 0.0;
-    let inv_mu = 1.0 / law.mu;
-    let state_of = |above: bool, positive: bool| match (above, positive) {
+    let mut gather = Gather::new(zones);
+    for piece in pieces {
+        if !gather.exponential(&piece, law) {
+            gather.evaluate(&piece, law, Evaluate { peak: true, arc: true, slip: true })?;
+        }
+    }
+    Ok(gather.summary())
+}
+
+/// Pieces as a state carries them ([`crate::model::level2::Profile`]): in θ order, held in the
+/// pulley's material coordinate `ξ = θ − φ`, the first and the last reaching exactly 0 and α in
+/// the wrap's frame.
+#[derive(Debug, Clone, Copy)]
+pub struct Carried {
+    /// The pulley's turn φ (rad): θ = ξ + φ.
+    pub phi_rad: f64,
+    /// Wrap angle α (rad).
+    pub wrap_angle_rad: f64,
+    /// Number of pieces.
+    pub len: usize,
+}
+
+impl Carried {
+    /// Piece `i`, held as `held`, in the wrap's frame.
+    pub fn piece(&self, held: &Piece, i: usize) -> Piece {
+        let mut p = held.shifted(self.phi_rad);
+        (p.theta0_rad, p.theta1_rad) = self.ends(held, i);
+        p
+    }
+
+    /// The ends of piece `i` in the wrap's frame (rad), as [`Self::piece`] has them.
+    fn ends(&self, held: &Piece, i: usize) -> (f64, f64) {
+        let a = if i == 0 { 0.0 } else { held.theta0_rad + self.phi_rad };
+        let b = if i + 1 == self.len { self.wrap_angle_rad } else { held.theta1_rad + self.phi_rad };
+        (a, b)
+    }
+}
+
+/// [`summarize_pieces`] over carried pieces with their [`Screen`]s, the same summary to
+/// round-off of the arcs' sums: a piece that its screen puts wholly on one side of a threshold
+/// is not evaluated against it, and the peak utilization is evaluated first on the piece of the
+/// largest bound, then only on the pieces whose bound exceeds the peak so far.
+pub fn summarize_screened<'a, I>(
+    held: I,
+    carried: Carried,
+    law: &ContactLaw,
+    zones: bool,
+) -> Result<WrapSummary, RootError>
+where
+    I: Iterator<Item = (&'a Piece, &'a Screen)> + Clone,
+{
+    let (mu, c) = (law.mu, law.centrifugal_n);
+    let mut gather = Gather::new(zones);
+    let top = held
+        .clone()
+        .enumerate()
+        .filter(|(_, (_, s))| !s.contact_exponential(c))
+        .map(|(i, (p, s))| (s.utilization_bound(mu, c), i, p))
+        .max_by(|a, b| a.0.total_cmp(&b.0));
+    if let Some((_, i, p)) = top {
+        gather.evaluate(&carried.piece(p, i), law, Evaluate { peak: true, arc: false, slip: false })?;
+    }
+    for (i, (p, screen)) in held.enumerate() {
+        if screen.contact_exponential(c) {
+            gather.exponential(&carried.piece(p, i), law);
+            continue;
+        }
+        let (a, b) = carried.ends(p, i);
+        let arc = match screen.arc.side(c) {
+            Side::Open => true,
+            side => {
+                gather.arcs.add(a, b, side == Side::Above, screen.positive);
+                false
+            }
+        };
+        let slip = gather.zones
+            && match screen.slip.side(c) {
+                Side::Open => true,
+                side => {
+                    gather.states.push(a, b, state_of(side == Side::Above, screen.positive));
+                    false
+                }
+            };
+        let peak = screen.may_exceed(mu, c, gather.max_utilization);
+        if peak || arc || slip {
+            gather.evaluate(&carried.piece(p, i), law, Evaluate { peak, arc, slip })?;
+        }
+    }
+    Ok(gather.summary())
+}
+
+/// The contact state of a stretch at or above the slip threshold or not, by friction's sign.
+fn state_of(above: bool, positive: bool) -> NodeState {
+    match (above, positive) {
         (false, _) => NodeState::Stick,
         (true, true) => NodeState::SlipPositive,
         (true, false) => NodeState::SlipNegative,
-    };
-    for piece in pieces.into_iter().flat_map(|p| monotone_parts(p, law.centrifugal_n)) {
-        // Friction keeps its sign over a piece.
-        let positive = piece.friction_positive();
-        if let Some((_, rate)) = piece.contact_exponential(law.centrifugal_n) {
-            // An exponential of the contact force itself: u = |k|/μ on the whole piece.
-            let u = (rate.abs() * inv_mu).min(1.0);
-            max_utilization = max_utilization.max(u);
-            arcs.add(piece.theta0_rad, piece.theta1_rad, u >= ARC_THRESHOLD, positive);
-            if zones {
-                let state = state_of(u >= SLIP_UTILIZATION, positive);
-                states.push(piece.theta0_rad, piece.theta1_rad, state);
-            }
-            continue;
-        }
-        let ends = (Fraction::at(law, &piece, piece.theta0_rad), Fraction::at(law, &piece, piece.theta1_rad));
-        max_utilization = ends.1.max_with(ends.0.max_with(max_utilization));
-        for &(s, e, above) in split(&piece, law, ends, ARC_THRESHOLD, &mut roots)?.parts() {
-            arcs.add(s, e, above, positive);
-        }
-        if zones {
-            for &(s, e, above) in split(&piece, law, ends, SLIP_UTILIZATION, &mut roots)?.parts() {
-                states.push(s, e, state_of(above, positive));
-            }
+    }
+}
+
+/// Which of a piece's contributions [`Gather::evaluate`] makes.
+#[derive(Debug, Clone, Copy)]
+struct Evaluate {
+    peak: bool,
+    arc: bool,
+    slip: bool,
+}
+
+/// What a summary gathers, piece by piece in θ order.
+struct Gather {
+    roots: RootStats,
+    states: ZoneRuns,
+    arcs: ArcTally,
+    max_utilization: f64,
+    zones: bool,
+}
+
+impl Gather {
+    fn new(zones: bool) -> Self {
+        Self {
+            roots: RootStats::default(),
+            states: ZoneRuns::default(),
+            arcs: ArcTally::default(),
+            max_utilization: 0.0,
+            zones,
         }
     }
-    Ok(arcs.summary(max_utilization, states, roots))
+
+    /// Adds a piece that is an exponential of the contact force itself (u = |k|/μ on the whole
+    /// piece) and returns true; false for any other piece.
+    fn exponential(&mut self, piece: &Piece, law: &ContactLaw) -> bool {
+        let Some((_, rate)) = piece.contact_exponential(law.centrifugal_n) else { return false };
+        let positive = piece.friction_positive();
+        let u = (rate.abs() * (1.0 / law.mu)).min(1.0);
+        self.max_utilization = self.max_utilization.max(u);
+        self.arcs.add(piece.theta0_rad, piece.theta1_rad, u >= ARC_THRESHOLD, positive);
+        if self.zones {
+            self.states.push(piece.theta0_rad, piece.theta1_rad, state_of(u >= SLIP_UTILIZATION, positive));
+        }
+        true
+    }
+
+    /// Evaluates a piece part by part (each of monotone utilization): the peak at the parts'
+    /// ends, and the stretches above and below the arc and slip thresholds (a root where a
+    /// part's ends lie on both sides), as `what` asks.
+    fn evaluate(&mut self, piece: &Piece, law: &ContactLaw, what: Evaluate) -> Result<(), RootError> {
+        // Friction keeps its sign over a piece.
+        let positive = piece.friction_positive();
+        for part in monotone_parts(*piece, law.centrifugal_n) {
+            let ends = (Fraction::at(law, &part, part.theta0_rad), Fraction::at(law, &part, part.theta1_rad));
+            if what.peak {
+                self.max_utilization = ends.1.max_with(ends.0.max_with(self.max_utilization));
+            }
+            if what.arc {
+                for &(s, e, above) in split(&part, law, ends, ARC_THRESHOLD, &mut self.roots)?.parts() {
+                    self.arcs.add(s, e, above, positive);
+                }
+            }
+            if what.slip && self.zones {
+                for &(s, e, above) in split(&part, law, ends, SLIP_UTILIZATION, &mut self.roots)?.parts() {
+                    self.states.push(s, e, state_of(above, positive));
+                }
+            }
+        }
+        Ok(())
+    }
+
+    fn summary(self) -> WrapSummary {
+        self.arcs.summary(self.max_utilization, self.states, self.roots)
+    }
 }
 
 /// A piece cut where its utilization turns, so that each part has a monotone utilization.

@@ -33,6 +33,7 @@ pub mod report;
 pub mod requirements;
 pub mod roots;
 pub mod run;
+pub mod screen;
 pub mod sheet;
 pub mod sweep;
 pub mod tally;

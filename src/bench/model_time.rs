@@ -71,7 +71,10 @@ impl ModelRun {
         for s in &self.samples {
             sim.advance_to(s.t_s)?;
             let law = ContactLaw::new(self.params.mu, sim.centrifugal_n);
-            std::hint::black_box(derived::summarize_pieces(sim.profile.pieces(), &law, false)?);
+            std::hint::black_box({
+                let (held, carried) = sim.profile.screened();
+                derived::summarize_screened(held, carried, &law, false)
+            }?);
         }
         Ok((sim.stats.increments, sim.profile))
     }

@@ -133,7 +133,8 @@ fn wrap_beside(
         Some(level4::end_history(&chunk))
     };
     let range = (s0.t_s, t_end_s);
-    let (run, _) = history::run_growing(sim, &mut next, range, output, options.nodes, true).ok()?;
+    // The ropes hold the other core: the rows' summaries are made in place.
+    let (run, _) = history::run_growing(sim, &mut next, range, output, options.nodes, false).ok()?;
     Some((run, fed))
 }
 

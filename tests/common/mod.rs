@@ -19,17 +19,15 @@ pub const EA_N: f64 = 2.634e8;
 pub const T0_N: f64 = 2.0e5;
 pub const MASS_PER_M_KG: f64 = 10.81;
 
+/// Level-2 (rigid lining) parameters of the bench rope on the given wrap and lining.
+pub fn rigid_params(mu: f64, alpha_rad: f64, solver: Solver) -> level2::Params {
+    level2::Params { mu, wrap_angle_rad: alpha_rad, radius_m: R_M, mass_per_m_kg: MASS_PER_M_KG, ea_n: EA_N, solver }
+}
+
 /// Level-3 parameters of the bench rope (no bending, no inertia) on the given wrap and lining.
 pub fn params(mu: f64, alpha_rad: f64, shear_stiffness_n_per_m2: f64, solver: Solver) -> Params {
     Params {
-        wrap: level2::Params {
-            mu,
-            wrap_angle_rad: alpha_rad,
-            radius_m: R_M,
-            mass_per_m_kg: MASS_PER_M_KG,
-            ea_n: EA_N,
-            solver,
-        },
+        wrap: rigid_params(mu, alpha_rad, solver),
         shear_stiffness_n_per_m2,
         bending_stiffness_n_m2: 0.0,
         rope_inertia: false,

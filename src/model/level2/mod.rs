@@ -66,12 +66,16 @@ impl WrapModel for Simulation<'_> {
     }
 
     fn summary(&self, zones: bool) -> Result<WrapSummary, RootError> {
-        derived::summarize_pieces(self.profile.pieces(), &self.law(), zones)
+        let (held, carried) = self.profile.screened();
+        derived::summarize_screened(held, carried, &self.law(), zones)
     }
 
     fn summary_job(&self) -> Option<history::SummaryJob> {
         let (frozen, law) = (self.profile.frozen(), self.law());
-        Some(Box::new(move || derived::summarize_pieces(frozen.pieces(), &law, false)))
+        Some(Box::new(move || {
+            let (held, carried) = frozen.screened();
+            derived::summarize_screened(held, carried, &law, false)
+        }))
     }
 
     fn distribution(&self, t_s: f64, summary: &WrapSummary, output_nodes: usize) -> Distribution {

@@ -9,7 +9,10 @@
 //! are contiguous and cover exactly `θ ∈ [0, α]`; their closed forms are those of
 //! [`crate::wrap::Shape`], so the state has no interpolation error.
 
+use crate::derived::Carried;
+use crate::screen::{Screen, limit_centrifugal_n};
 use crate::wrap::{Piece, Shape, TensionField};
+use std::cell::OnceCell;
 use std::collections::VecDeque;
 
 /// Shortest piece kept (rad; 2.5e-10 m of rope on a 2.5 m pulley): shorter ones are round-off
@@ -25,13 +28,27 @@ const REBASE_RAD: f64 = 64.0;
 pub struct Profile {
     /// Pieces in material coordinates (`theta*` fields hold ξ), in increasing ξ.
     pieces: VecDeque<Piece>,
-    /// For each piece, the m'v² at which it first reaches the Coulomb limit somewhere
-    /// ([`limit_centrifugal_n`], a lower bound): a rise of m'v² past it calls for a repair.
-    limits_n: VecDeque<f64>,
+    /// What the profile holds beside each piece.
+    beside: VecDeque<Beside>,
     /// The pulley's turn φ (rad) since the pieces were last re-based: θ = ξ + φ.
     phi_rad: f64,
     wrap_angle_rad: f64,
     mu: f64,
+}
+
+/// What the profile holds beside each piece: the m'v² at which it first reaches the Coulomb
+/// limit somewhere (a rise of m'v² past it calls for a repair), and its [`Screen`], made when a
+/// summary first asks for it (most pieces near the ends are replaced before any summary).
+#[derive(Debug, Clone, PartialEq)]
+struct Beside {
+    limit_n: f64,
+    screen: OnceCell<Screen>,
+}
+
+impl Beside {
+    fn of(piece: &Piece, mu: f64) -> Self {
+        Self { limit_n: limit_centrifugal_n(piece, mu), screen: OnceCell::new() }
+    }
 }
 
 impl Profile {
@@ -44,8 +61,8 @@ impl Profile {
     pub fn from_field(field: &TensionField, mu: f64) -> Self {
         let wrap_angle_rad = field.wrap_angle_rad();
         let pieces: VecDeque<Piece> = field.pieces.iter().copied().filter(|p| p.len_rad() > 0.0).collect();
-        let limits_n = pieces.iter().map(|p| limit_centrifugal_n(p, mu)).collect();
-        Self { pieces, limits_n, phi_rad: 0.0, wrap_angle_rad, mu }
+        let beside = pieces.iter().map(|p| Beside::of(p, mu)).collect();
+        Self { pieces, beside, phi_rad: 0.0, wrap_angle_rad, mu }
     }
 
     /// The friction coefficient the profile is admissible for.
@@ -53,9 +70,10 @@ impl Profile {
         self.mu
     }
 
-    /// [`limit_centrifugal_n`] of piece `i`.
+    /// The m'v² at which piece `i` first reaches the Coulomb limit somewhere
+    /// ([`limit_centrifugal_n`], a lower bound).
     pub fn limit_n(&self, i: usize) -> f64 {
-        self.limits_n[i]
+        self.beside[i].limit_n
     }
 
     /// Wrap angle α the profile spans (rad).
@@ -75,20 +93,36 @@ impl Profile {
 
     /// Piece `i` in θ (the wrap's frame), its ends snapped to exactly 0 and α at the ends.
     pub fn piece(&self, i: usize) -> Piece {
-        debug_assert_eq!(self.pieces.len(), self.limits_n.len());
-        in_frame(&self.pieces[i], i, self.pieces.len(), self.phi_rad, self.wrap_angle_rad)
+        debug_assert_eq!(self.pieces.len(), self.beside.len());
+        self.carried().piece(&self.pieces[i], i)
     }
 
     /// All pieces in θ order, in the wrap's frame.
-    pub fn pieces(&self) -> impl ExactSizeIterator<Item = Piece> + '_ {
+    pub fn pieces(&self) -> impl ExactSizeIterator<Item = Piece> + Clone + '_ {
         (0..self.pieces.len()).map(|i| self.piece(i))
     }
 
-    /// A copy of the pieces as they are held (one copy of memory, no arithmetic), which gives
-    /// [`Self::pieces`] again, to the last bit, wherever it is taken.
+    /// The pieces as held, each with its [`Screen`], and how they are carried.
+    pub fn screened(&self) -> (impl Iterator<Item = (&Piece, &Screen)> + Clone + '_, Carried) {
+        let mu = self.mu;
+        let screened = self.pieces.iter().zip(self.beside.iter());
+        (screened.map(move |(p, b)| (p, b.screen.get_or_init(|| Screen::of(p, mu)))), self.carried())
+    }
+
+    fn carried(&self) -> Carried {
+        Carried { phi_rad: self.phi_rad, wrap_angle_rad: self.wrap_angle_rad, len: self.pieces.len() }
+    }
+
+    /// A copy of the pieces and their screens as they are held (one copy of memory, no
+    /// arithmetic), which gives [`Self::screened`] again, to the last bit, wherever it is taken.
     pub fn frozen(&self) -> Frozen {
         let (front, back) = self.pieces.as_slices();
-        Frozen { pieces: [front, back].concat(), phi_rad: self.phi_rad, wrap_angle_rad: self.wrap_angle_rad }
+        Frozen {
+            pieces: [front, back].concat(),
+            screens: self.screened().0.map(|(_, s)| *s).collect(),
+            phi_rad: self.phi_rad,
+            wrap_angle_rad: self.wrap_angle_rad,
+        }
     }
 
     /// The state as a tension field over [0, α].
@@ -141,21 +175,21 @@ impl Profile {
             // Near the front: pop and push there, leaving the rest in place.
             for _ in 0..to {
                 self.pieces.pop_front();
-                self.limits_n.pop_front();
+                self.beside.pop_front();
             }
             for (p, q) in material.zip(items).rev() {
                 self.pieces.push_front(p);
-                self.limits_n.push_front(limit_centrifugal_n(q, mu));
+                self.beside.push_front(Beside::of(q, mu));
             }
         } else {
             let tail: Vec<Piece> = self.pieces.drain(to..).collect();
-            let tail_limits: Vec<f64> = self.limits_n.drain(to..).collect();
+            let tail_beside: Vec<Beside> = self.beside.drain(to..).collect();
             self.pieces.truncate(from);
-            self.limits_n.truncate(from);
+            self.beside.truncate(from);
             self.pieces.extend(material);
-            self.limits_n.extend(items.iter().map(|q| limit_centrifugal_n(q, mu)));
+            self.beside.extend(items.iter().map(|q| Beside::of(q, mu)));
             self.pieces.extend(tail);
-            self.limits_n.extend(tail_limits);
+            self.beside.extend(tail_beside);
         }
     }
 
@@ -181,11 +215,11 @@ impl Profile {
             // Leaves at θ = α: drop pieces beyond hi.
             while self.pieces.len() > 1 && self.pieces.back().is_some_and(|p| p.theta0_rad >= hi) {
                 self.pieces.pop_back();
-                self.limits_n.pop_back();
+                self.beside.pop_back();
             }
             if self.pieces.back().is_some_and(|p| p.theta0_rad >= hi) {
                 self.pieces.clear();
-                self.limits_n.clear();
+                self.beside.clear();
             }
             if let Some(last) = self.pieces.back_mut() {
                 last.theta1_rad = hi;
@@ -196,17 +230,17 @@ impl Profile {
                 None => entered.theta1_rad = hi,
             }
             if !self.absorb_front(&entered) {
-                self.limits_n.push_front(limit_centrifugal_n(&entered, self.mu));
+                self.beside.push_front(Beside::of(&entered, self.mu));
                 self.pieces.push_front(entered);
             }
         } else {
             while self.pieces.len() > 1 && self.pieces.front().is_some_and(|p| p.theta1_rad <= lo) {
                 self.pieces.pop_front();
-                self.limits_n.pop_front();
+                self.beside.pop_front();
             }
             if self.pieces.front().is_some_and(|p| p.theta1_rad <= lo) {
                 self.pieces.clear();
-                self.limits_n.clear();
+                self.beside.clear();
             }
             if let Some(first) = self.pieces.front_mut() {
                 *first = first.restricted(lo, first.theta1_rad);
@@ -217,7 +251,7 @@ impl Profile {
                 None => entered.theta0_rad = lo,
             }
             if !self.absorb_back(&entered) {
-                self.limits_n.push_back(limit_centrifugal_n(&entered, self.mu));
+                self.beside.push_back(Beside::of(&entered, self.mu));
                 self.pieces.push_back(entered);
             }
         }
@@ -248,9 +282,11 @@ impl Profile {
             return;
         }
         self.pieces[i].theta1_rad = self.pieces[i + 1].theta1_rad;
-        self.limits_n[i] = self.limits_n[i].min(self.limits_n[i + 1]);
+        // The joined piece's screen is made anew when a summary asks for it.
+        self.beside[i] =
+            Beside { limit_n: self.beside[i].limit_n.min(self.beside[i + 1].limit_n), screen: OnceCell::new() };
         self.pieces.remove(i + 1);
-        self.limits_n.remove(i + 1);
+        self.beside.remove(i + 1);
     }
 
     /// Extends the first piece over `p` (just in front of it) when both hold the same constant
@@ -281,14 +317,14 @@ impl Profile {
         while self.pieces.len() > 1 && self.pieces.front().is_some_and(|p| p.len_rad() < MIN_PIECE_RAD) {
             let lo = self.pieces[0].theta0_rad;
             self.pieces.pop_front();
-            self.limits_n.pop_front();
+            self.beside.pop_front();
             let first = &mut self.pieces[0];
             *first = first.restricted(lo, first.theta1_rad);
         }
         while self.pieces.len() > 1 && self.pieces.back().is_some_and(|p| p.len_rad() < MIN_PIECE_RAD) {
             let hi = self.pieces[self.pieces.len() - 1].theta1_rad;
             self.pieces.pop_back();
-            self.limits_n.pop_back();
+            self.beside.pop_back();
             if let Some(last) = self.pieces.back_mut() {
                 last.theta1_rad = hi;
             }
@@ -305,63 +341,20 @@ impl Profile {
     }
 }
 
-/// Piece `i` of `len` held in material coordinates, in the wrap's frame at the turn `phi_rad`:
-/// the ends of the first and the last snapped to exactly 0 and α.
-fn in_frame(held: &Piece, i: usize, len: usize, phi_rad: f64, wrap_angle_rad: f64) -> Piece {
-    let mut p = held.shifted(phi_rad);
-    if i == 0 {
-        p.theta0_rad = 0.0;
-    }
-    if i + 1 == len {
-        p.theta1_rad = wrap_angle_rad;
-    }
-    p
-}
-
 /// The pieces of a [`Profile`] at one instant, as [`Profile::frozen`] copies them.
 #[derive(Debug, Clone)]
 pub struct Frozen {
     pieces: Vec<Piece>,
+    screens: Vec<Screen>,
     phi_rad: f64,
     wrap_angle_rad: f64,
 }
 
 impl Frozen {
-    /// [`Profile::pieces`] of the profile copied.
-    pub fn pieces(&self) -> impl ExactSizeIterator<Item = Piece> + '_ {
-        let len = self.pieces.len();
-        self.pieces.iter().enumerate().map(move |(i, p)| in_frame(p, i, len, self.phi_rad, self.wrap_angle_rad))
-    }
-}
-
-/// A lower bound of the m'v² at which a piece first reaches the Coulomb limit,
-/// `min over the piece of T − |q|/μ` (u = |q|/(μ(T − c)) = 1 there): exact for exponentials (the
-/// bound is monotone over them, so an end), the smaller of the ends and the interior turning
-/// point for an entry ramp.
-pub fn limit_centrifugal_n(piece: &Piece, mu: f64) -> f64 {
-    let at = |theta: f64| {
-        let (t, q) = piece.tension_friction(theta);
-        t - q.abs() / mu
-    };
-    let ends = at(piece.theta0_rad).min(at(piece.theta1_rad));
-    match piece.shape {
-        Shape::Entry(r) if r.alpha_per_s2 != 0.0 && r.slope_n_per_s != 0.0 => {
-            // d/dτ [T − |s|/(μ|ω|)] = s + |s| σ ε/(μ ω²) vanishes at |ω| = √(|ε|/μ) when
-            // −sign(s) σ ε > 0 (σ the sign of ω).
-            let sigma = if r.omega_per_s != 0.0 { r.omega_per_s.signum() } else { r.alpha_per_s2.signum() };
-            let (s, e) = (r.slope_n_per_s, r.alpha_per_s2);
-            if -s.signum() * sigma * e > 0.0 {
-                let w = sigma * (e.abs() / mu).sqrt();
-                let tau = (w - r.omega_per_s) / e;
-                let theta = r.theta_a_rad - (r.omega_per_s * tau + 0.5 * e * tau * tau);
-                let (lo, hi) = (piece.theta0_rad.min(piece.theta1_rad), piece.theta1_rad.max(piece.theta0_rad));
-                if theta > lo && theta < hi {
-                    return ends.min(at(theta));
-                }
-            }
-            ends
-        }
-        _ => ends,
+    /// [`Profile::screened`] of the profile copied.
+    pub fn screened(&self) -> (impl Iterator<Item = (&Piece, &Screen)> + Clone + '_, Carried) {
+        let carried = Carried { phi_rad: self.phi_rad, wrap_angle_rad: self.wrap_angle_rad, len: self.pieces.len() };
+        (self.pieces.iter().zip(self.screens.iter()), carried)
     }
 }
 

@@ -1,0 +1,250 @@
+//! What the summaries of a tension piece need to know of it before any root is sought: ranges
+//! over the piece that depend neither on where the pulley has carried it nor on m'v², so a
+//! state that carries its pieces can hold them beside the pieces, and a summary decides most
+//! pieces with a few comparisons.
+//!
+//! With `n = T − c` (c = m'v²), a point of the piece reaches a utilization threshold `u*`,
+//! `|q|/(μ n) ≥ u*`, exactly where
+//!
+//! ```text
+//! c ≥ g(θ) = T(θ) − |q(θ)| / (μ u*)          (at T ≤ c, n ≤ 0 and u = 1: also c ≥ T ≥ g)
+//! ```
+//!
+//! so the piece lies wholly below the threshold for `c < min g` and wholly at or above it for
+//! `c ≥ max g`. `T` and `|q|` are monotone over an exponential piece and over an entry ramp
+//! (`T` is linear in the entry time τ, `|q| = |Ṫ|/|Φ'(τ)|` with `Φ'` monotone in a one-way
+//! ramp), so `g` takes its extremes at the ends, and on an entry ramp also where
+//! `dg/dτ = Ṫ + |Ṫ| σ ε / (μ u* Φ'²) = 0` (σ the sign of Φ'). The same monotony bounds the
+//! utilization over the piece by `max|q| / (μ (min T − c))`.
+//!
+//! The ranges are widened by a rounding margin of 1e-9 of the magnitudes they are formed from:
+//! a summary decides on them only well clear of a threshold and otherwise evaluates the piece
+//! as it would without them.
+
+use crate::contact::{ARC_THRESHOLD, SLIP_UTILIZATION};
+use crate::piece::{Piece, Shape};
+
+/// Relative rounding margin of the ranges.
+const MARGIN: f64 = 1e-9;
+
+/// The m'v² range `[lo, hi]` of one threshold: below `lo` the whole piece is below it, at or
+/// above `hi` the whole piece is at or above it (N).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Crossing {
+    lo_n: f64,
+    hi_n: f64,
+}
+
+/// Where a piece stands against a threshold at one m'v².
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Side {
+    /// Below the threshold everywhere on the piece.
+    Below,
+    /// At or above it everywhere.
+    Above,
+    /// Not decided by the range: the piece is to be evaluated.
+    Open,
+}
+
+impl Crossing {
+    /// Where the piece stands at m'v² = `centrifugal_n`.
+    pub fn side(&self, centrifugal_n: f64) -> Side {
+        if centrifugal_n < self.lo_n {
+            Side::Below
+        } else if centrifugal_n > self.hi_n {
+            Side::Above
+        } else {
+            Side::Open
+        }
+    }
+}
+
+/// A piece's ranges ([module docs](self)) for a lining of friction coefficient μ, with what a
+/// summary reads of the piece without evaluating it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Screen {
+    /// The range of the arc threshold ([`ARC_THRESHOLD`]).
+    pub arc: Crossing,
+    /// The range of the slip threshold ([`SLIP_UTILIZATION`]).
+    pub slip: Crossing,
+    /// Least tension over the piece (N), less the margin.
+    tension_min_n: f64,
+    /// Largest |q| over the piece (N/rad), plus the margin.
+    friction_max_n_per_rad: f64,
+    /// The `T_base` of an exponential piece of positive amplitude, NaN for any other piece: at
+    /// m'v² equal to it the piece is an exponential of the contact force itself
+    /// ([`Piece::contact_exponential`]).
+    contact_base_n: f64,
+    /// Whether friction is positive (+θ) on the piece ([`Piece::friction_positive`]).
+    pub positive: bool,
+}
+
+impl Screen {
+    /// The ranges of `piece` on a lining of friction coefficient `mu`.
+    pub fn of(piece: &Piece, mu: f64) -> Self {
+        let ends = end_values(piece);
+        let (t_min, q_max) = ends.iter().fold((f64::INFINITY, 0.0_f64), |(t, q), &(te, qe)| {
+            (t.min(te), if qe.is_nan() { f64::NAN } else { q.max(qe.abs()) })
+        });
+        let scale = ends.iter().map(|(t, _)| t.abs()).fold(0.0, f64::max);
+        let widened = |(lo, hi): (f64, f64)| Crossing {
+            lo_n: lo - MARGIN * (scale + lo.abs()),
+            hi_n: hi + MARGIN * (scale + hi.abs()),
+        };
+        let contact_base_n = match piece.shape {
+            Shape::Exp { base_n, amp_n, .. } if amp_n > 0.0 => base_n,
+            _ => f64::NAN,
+        };
+        Self {
+            arc: widened(range_with_ends(piece, &ends, mu * ARC_THRESHOLD)),
+            slip: widened(range_with_ends(piece, &ends, mu * SLIP_UTILIZATION)),
+            tension_min_n: t_min - MARGIN * scale,
+            friction_max_n_per_rad: q_max * (1.0 + MARGIN),
+            contact_base_n,
+            positive: piece.friction_positive(),
+        }
+    }
+
+    /// Whether the piece is an exponential of the contact force itself at m'v² = `centrifugal_n`
+    /// (as [`Piece::contact_exponential`] tells).
+    pub fn contact_exponential(&self, centrifugal_n: f64) -> bool {
+        self.contact_base_n == centrifugal_n
+    }
+
+    /// An upper bound of the utilization over the piece at m'v² = `centrifugal_n` on a lining
+    /// of friction coefficient `mu` (infinite where the bound has no positive capacity).
+    pub fn utilization_bound(&self, mu: f64, centrifugal_n: f64) -> f64 {
+        let capacity = mu * (self.tension_min_n - centrifugal_n);
+        if capacity > 0.0 { self.friction_max_n_per_rad / capacity } else { f64::INFINITY }
+    }
+
+    /// Whether the utilization may exceed `peak` somewhere on the piece ([`Self::utilization_bound`]
+    /// above it), without a division.
+    pub fn may_exceed(&self, mu: f64, centrifugal_n: f64, peak: f64) -> bool {
+        let capacity = mu * (self.tension_min_n - centrifugal_n);
+        !(capacity > 0.0 && self.friction_max_n_per_rad <= peak * capacity)
+    }
+}
+
+/// The m'v² at which the piece first reaches the Coulomb limit somewhere: `min g` at `u* = 1`
+/// ([`threshold_range`] at `μ' = μ`), N.
+pub fn limit_centrifugal_n(piece: &Piece, mu: f64) -> f64 {
+    threshold_range(piece, mu).0
+}
+
+/// `(T, q)` at the piece's two ends, as [`Piece::tension_friction`] gives them (to the last
+/// bit), with one exponential for an exponential piece.
+fn end_values(piece: &Piece) -> [(f64, f64); 2] {
+    match piece.shape {
+        Shape::Exp { base_n, amp_n, rate_per_rad } if rate_per_rad != 0.0 => {
+            let e = (rate_per_rad * (piece.theta1_rad - piece.theta0_rad)).exp();
+            [(base_n + amp_n, -amp_n * rate_per_rad), (base_n + amp_n * e, -amp_n * rate_per_rad * e)]
+        }
+        _ => [piece.tension_friction(piece.theta0_rad), piece.tension_friction(piece.theta1_rad)],
+    }
+}
+
+/// `[min g, max g]` over the piece of `g = T − |q|/μ'` (`μ' = μ u*`): at its ends, and on an
+/// entry ramp also at the interior stationary point of `g`, where `|Φ'| = √(|ε|/μ')` (when
+/// `−sign(Ṫ) σ ε > 0`, σ the sign of the motion). A NaN anywhere leaves the range unbounded.
+pub fn threshold_range(piece: &Piece, mu_eff: f64) -> (f64, f64) {
+    range_with_ends(piece, &end_values(piece), mu_eff)
+}
+
+/// [`threshold_range`] with the piece's [`end_values`] given.
+fn range_with_ends(piece: &Piece, ends: &[(f64, f64); 2], mu_eff: f64) -> (f64, f64) {
+    let g = |(t, q): (f64, f64)| t - q.abs() / mu_eff;
+    let (a, b) = (g(ends[0]), g(ends[1]));
+    let (mut lo, mut hi) = (a.min(b), a.max(b));
+    let mut nan = a.is_nan() || b.is_nan();
+    if let Shape::Entry(r) = piece.shape
+        && r.alpha_per_s2 != 0.0
+        && r.slope_n_per_s != 0.0
+    {
+        let sigma = if r.omega_per_s != 0.0 { r.omega_per_s.signum() } else { r.alpha_per_s2.signum() };
+        let (s, e) = (r.slope_n_per_s, r.alpha_per_s2);
+        if -s.signum() * sigma * e > 0.0 {
+            let w = sigma * (e.abs() / mu_eff).sqrt();
+            let tau = (w - r.omega_per_s) / e;
+            let theta = r.theta_a_rad - (r.omega_per_s * tau + 0.5 * e * tau * tau);
+            let (p, q) = (piece.theta0_rad.min(piece.theta1_rad), piece.theta1_rad.max(piece.theta0_rad));
+            if theta > p && theta < q {
+                let inner = g(piece.tension_friction(theta));
+                nan |= inner.is_nan();
+                lo = lo.min(inner);
+                hi = hi.max(inner);
+            }
+        }
+    }
+    if nan { (f64::NEG_INFINITY, f64::INFINITY) } else { (lo, hi) }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::contact::ContactLaw;
+    use crate::piece::EntryRamp;
+
+    /// Samples the utilization of a piece densely and checks that the screen's verdicts agree
+    /// with every sample: a piece screened below (above) a threshold has every sample below
+    /// (at or above) it, and the utilization bound is not exceeded. Pieces: entry ramps
+    /// speeding up and slowing down, lifting and lowering (the mirror: ω, ε, θ → −ω, −ε, −θ),
+    /// and exponentials of both signs of the rate.
+    #[test]
+    fn verdicts_hold_at_every_point_of_the_piece() {
+        let mu = 0.25;
+        let mut pieces = Vec::new();
+        for (w, e) in [(1.0, 0.4), (1.0, -0.4), (-1.0, -0.4), (-1.0, 0.4), (0.0, 0.6), (0.0, -0.6)] {
+            for slope in [3.0e3, -3.0e3, 40.0, -40.0] {
+                let ramp = EntryRamp {
+                    theta_a_rad: 0.0,
+                    tension_n: 5e4,
+                    slope_n_per_s: slope,
+                    omega_per_s: w,
+                    alpha_per_s2: e,
+                };
+                // Rope that entered 0.1 … 0.8 s after the ramp's start lies between −Φ(0.8) and
+                // −Φ(0.1) (a ramp from rest holds |q| → ∞ at its very start).
+                let turn = |tau: f64| w * tau + 0.5 * e * tau * tau;
+                let (near, far) = (-turn(0.1), -turn(0.8));
+                pieces.push(Piece::entry(near.min(far), near.max(far), ramp));
+            }
+        }
+        for rate in [0.2, -0.2, 0.0002, -0.0002] {
+            pieces.push(Piece::exponential(0.0, 1.5, 300.0, 4e4, rate));
+        }
+        for piece in &pieces {
+            let screen = Screen::of(piece, mu);
+            for c in [0.0, 500.0, 2.0e3, 4.9e4, 6.0e4] {
+                let law = ContactLaw::new(mu, c);
+                let bound = screen.utilization_bound(mu, c);
+                for k in 0..=400 {
+                    let theta = piece.theta0_rad + piece.len_rad() * k as f64 / 400.0;
+                    let u = law.utilization(piece, theta);
+                    assert!(u <= bound, "{piece:?} at c = {c}: u {u} above its bound {bound}");
+                    for (crossing, threshold) in [(screen.arc, ARC_THRESHOLD), (screen.slip, SLIP_UTILIZATION)] {
+                        match crossing.side(c) {
+                            Side::Below => assert!(u < threshold, "{piece:?} at c = {c}: u {u} ≥ {threshold}"),
+                            Side::Above => assert!(u >= threshold, "{piece:?} at c = {c}: u {u} < {threshold}"),
+                            Side::Open => {}
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    /// The limit is the least m'v² at which a point reaches u = 1, by hand for a constant
+    /// piece (q = 0: the rope's own tension) and an exponential at |k| = μ/2, where
+    /// `T − |q|/μ = T (1 − |k|/μ) = T/2`, least at the end of the smaller tension. The
+    /// exponential takes two roundings from the hand value: 1e-9 relative bounds them.
+    #[test]
+    fn limit_by_hand() {
+        let mu = 0.25;
+        assert_eq!(limit_centrifugal_n(&Piece::constant(0.0, 1.0, 4e4), mu), 4e4);
+        let p = Piece::exponential(0.0, 1.0, 0.0, 4e4, -0.125);
+        let low_end = 4e4 * (-0.125_f64).exp();
+        let limit = limit_centrifugal_n(&p, mu);
+        assert!((limit - 0.5 * low_end).abs() <= 1e-9 * low_end, "{limit} vs {}", 0.5 * low_end);
+    }
+}
