@@ -75,37 +75,44 @@ pub(super) fn applies(design: &Design, scene: &Scene, cycle: &DutyCycleScene, pl
 }
 
 /// Runs the ropes of `cycle` on a thread of their own and the wrap through their samples as
-/// they come; `direction_before` is the way the rope ran before the trip.
-pub(super) fn run(
+/// they come; `direction_before` is the way the rope ran before the trip. The ropes' thread
+/// then makes `also`'s result, while the wrap works through the last samples.
+pub(super) fn run<R: Send>(
     design: &Design,
     hoist: &Hoist,
     cycle: &DutyCycleScene,
     direction_before: Direction,
     options: Options,
     output: Output,
-) -> Result<Beside, Level4Error> {
-    let profile = level4::motion_profile(hoist, cycle)?;
+    also: impl FnOnce() -> R + Send,
+) -> (Result<Beside, Level4Error>, R) {
+    let profile = match level4::motion_profile(hoist, cycle) {
+        Ok(profile) => profile,
+        Err(e) => return (Err(e), also()),
+    };
     let centrifugal_step_n = spacing_from_profile(design, cycle, &profile);
     let t_end_s = profile.duration_s();
     let (tx, rx) = mpsc::channel::<Vec<DynSample>>();
     let (ropes, wrap_run) = std::thread::scope(|s| {
         let producer = s.spawn(move || {
-            level4::scene_ropes_streamed(design, hoist, cycle, &mut |chunk| {
+            let ropes = level4::scene_ropes_streamed(design, hoist, cycle, &mut |chunk| {
                 // A wrap that stopped early no longer listens; the ropes run on.
                 let _ = tx.send(chunk.to_vec());
-            })
+            });
+            drop(tx);
+            (ropes, also())
         });
         let lattice = (centrifugal_step_n, t_end_s);
         let wrap_run = wrap_beside(design, &rx, direction_before, lattice, options, output);
         drop(rx);
         (producer.join(), wrap_run)
     });
-    let ropes = ropes.unwrap_or_else(|panic| std::panic::resume_unwind(panic))?;
+    let (ropes, also) = ropes.unwrap_or_else(|panic| std::panic::resume_unwind(panic));
     let (wrap, fed) = match wrap_run {
         Some((run, fed)) => (Some(run), fed),
         None => (None, 0),
     };
-    Ok(Beside { ropes, wrap, centrifugal_step_n, fed })
+    (ropes.map(|ropes| Beside { ropes, wrap, centrifugal_step_n, fed }), also)
 }
 
 /// The wrap through the samples from `rx`, with the lattice spacing given; `None` when the

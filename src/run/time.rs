@@ -70,13 +70,18 @@ pub(super) fn run_duty_cycle(
     let before = cycle.direction.reversed();
     let params = level4::hoist_params(design, hoist, cycle);
     // The classical check: rigid ropes along the motion (and the brake's stop).
-    let kin = level4::rigid_kinematics(design, hoist, cycle, &params).map_err(err)?;
-    let rigid_samples = stop::rigid_samples(design, &params, &kin).map_err(|e| err(e.into()))?;
-    let rigid = Trip::valid_part(design, rigid_samples, kin.into_iter().map(|(_, k)| k).collect());
+    let rigid_trip = || -> Result<Trip, Level4Error> {
+        let kin = level4::rigid_kinematics(design, hoist, cycle, &params)?;
+        let rigid_samples = stop::rigid_samples(design, &params, &kin)?;
+        Ok(Trip::valid_part(design, rigid_samples, kin.into_iter().map(|(_, k)| k).collect()))
+    };
     let (trip, dynamics, unconfirmed) = if plan.level == Level::Closed0 {
-        (rigid, None, None)
+        (rigid_trip().map_err(err)?, None, None)
     } else {
-        let (ropes, unconfirmed) = ropes(design, scene, cycle, &plan, options, parallel_sides).map_err(err)?;
+        let (ropes, rigid) = ropes(design, scene, cycle, &plan, options, parallel_sides, rigid_trip);
+        // The rigid ropes' error first, as when they run before the suspended ropes.
+        let rigid = rigid.map_err(err)?;
+        let (ropes, unconfirmed) = ropes.map_err(err)?;
         let dynamics = &ropes.samples;
         let kin = dynamics.iter().map(|s| Kinematics { x_m: s.x_m, speed_m_s: s.speed_m_s, accel_m_s2: s.accel_m_s2 });
         (Trip::valid_part(design, level4::end_history(dynamics), kin.collect()), Some((ropes, rigid)), unconfirmed)
@@ -121,26 +126,30 @@ pub(super) fn run_duty_cycle(
 }
 
 /// The suspended ropes of a level-4 duty cycle, with the wrap's run beside them where it can be
-/// made ([`pipelined`]; it is kept when the whole trip confirms it); without, with
-/// `parallel_sides`, the ropes' two sides run on two threads.
-fn ropes(
+/// made ([`pipelined`]; it is kept when the whole trip confirms it; the ropes' thread then also
+/// makes `also`'s result after them); without, with `parallel_sides`, the ropes' two sides run
+/// on two threads.
+fn ropes<R: Send>(
     design: &Design,
     scene: &Scene,
     cycle: &DutyCycleScene,
     plan: &Plan,
     options: Options,
     parallel_sides: bool,
-) -> Result<(RopeRun, Option<pipelined::Unconfirmed>), Level4Error> {
-    let hoist = design.hoist.as_ref().ok_or(Level4Error::NoHoist)?;
-    if !pipelined::applies(design, scene, cycle, plan, parallel_sides) {
-        return Ok((level4::scene_ropes(design, hoist, cycle, parallel_sides)?, None));
-    }
-    let end_s = level4::motion_profile(hoist, cycle)?.duration_s();
+    also: impl FnOnce() -> R + Send,
+) -> (Result<(RopeRun, Option<pipelined::Unconfirmed>), Level4Error>, R) {
+    let Some(hoist) = &design.hoist else { return (Err(Level4Error::NoHoist), also()) };
+    let end_s = match level4::motion_profile(hoist, cycle) {
+        Ok(profile) if pipelined::applies(design, scene, cycle, plan, parallel_sides) => profile.duration_s(),
+        _ => {
+            let also = also();
+            return (level4::scene_ropes(design, hoist, cycle, parallel_sides).map(|r| (r, None)), also);
+        }
+    };
     let snapshots_s = valid_snapshots(cycle, end_s);
     let output = cycle_output(cycle, &snapshots_s, options);
-    let (ropes, unconfirmed) =
-        pipelined::run(design, hoist, cycle, cycle.direction.reversed(), options, output)?.split();
-    Ok((ropes, Some(unconfirmed)))
+    let (beside, also) = pipelined::run(design, hoist, cycle, cycle.direction.reversed(), options, output, also);
+    (beside.map(|b| b.split()).map(|(ropes, unconfirmed)| (ropes, Some(unconfirmed))), also)
 }
 
 /// The snapshots of a duty cycle up to `end_s` (after the end of a trip that slipped grossly
