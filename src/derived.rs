@@ -5,7 +5,10 @@
 //! `u(θ) = |k| / μ · 1 / (1 + d e^{−kθ'} / A)` with `d = T_base − m'v²` is monotone in θ; on an
 //! entry ramp `u = |Ṫ| / (μ Φ'(τ) n(τ))` with a quadratic denominator in τ, which is cut at its
 //! extremum. So a threshold (slip at u = 0.999, friction counted from u = 0.001) is crossed at
-//! most once per part; the crossing is found by Brent root finding ([`crate::roots`]).
+//! most once per part; the crossing is found by Brent root finding ([`crate::roots`]). A state
+//! that keeps a [`Screen`] beside each piece is summarized by [`summarize_screened`], which
+//! evaluates only the pieces their screens do not decide (docs/physics.md §8, points of the
+//! distribution).
 
 use crate::contact::{ARC_THRESHOLD, ContactLaw, NodeState, SLIP_UTILIZATION};
 use crate::roots::{RootError, RootStats, bracketed};
@@ -207,18 +210,26 @@ pub fn summarize_screened<'a, I>(
     zones: bool,
 ) -> Result<WrapSummary, RootError>
 where
-    I: Iterator<Item = (&'a Piece, &'a Screen)> + Clone,
+    I: DoubleEndedIterator<Item = (&'a Piece, &'a Screen)> + Clone,
 {
     let (mu, c) = (law.mu, law.centrifugal_n);
     let mut gather = Gather::new(zones);
-    let top = held
-        .clone()
-        .enumerate()
-        .filter(|(_, (_, s))| !s.contact_exponential(c))
-        .map(|(i, (p, s))| (s.utilization_bound(mu, c), i, p))
-        .max_by(|a, b| a.0.total_cmp(&b.0));
-    if let Some((_, i, p)) = top {
-        gather.evaluate(&carried.piece(p, i), law, Evaluate { peak: true, arc: false, slip: false })?;
+    // A slip zone at the Coulomb limit (most often at an end) is the peak, u = 1: no piece
+    // needs evaluating for it.
+    let ends = held.clone().take(3).chain(held.clone().rev().take(3));
+    let at_limit = ends.into_iter().any(|(p, s)| {
+        s.contact_exponential(c) && p.contact_exponential(c).is_some_and(|(_, k)| contact_utilization(k, mu) >= 1.0)
+    });
+    if !at_limit {
+        let top = held
+            .clone()
+            .enumerate()
+            .filter(|(_, (_, s))| !s.contact_exponential(c))
+            .map(|(i, (p, s))| (s.utilization_bound(mu, c), i, p))
+            .max_by(|a, b| a.0.total_cmp(&b.0));
+        if let Some((_, i, p)) = top {
+            gather.evaluate(&carried.piece(p, i), law, Evaluate { peak: true, arc: false, slip: false })?;
+        }
     }
     for (i, (p, screen)) in held.enumerate() {
         if screen.contact_exponential(c) {
@@ -241,12 +252,17 @@ where
                     false
                 }
             };
-        let peak = screen.may_exceed(mu, c, gather.max_utilization);
+        let peak = !at_limit && screen.may_exceed(mu, c, gather.max_utilization);
         if peak || arc || slip {
             gather.evaluate(&carried.piece(p, i), law, Evaluate { peak, arc, slip })?;
         }
     }
     Ok(gather.summary())
+}
+
+/// The utilization `|k|/μ` (at most 1) of an exponential of the contact force of rate `k`.
+fn contact_utilization(rate_per_rad: f64, mu: f64) -> f64 {
+    (rate_per_rad.abs() * (1.0 / mu)).min(1.0)
 }
 
 /// The contact state of a stretch at or above the slip threshold or not, by friction's sign.
@@ -291,7 +307,7 @@ impl Gather {
     fn exponential(&mut self, piece: &Piece, law: &ContactLaw) -> bool {
         let Some((_, rate)) = piece.contact_exponential(law.centrifugal_n) else { return false };
         let positive = piece.friction_positive();
-        let u = (rate.abs() * (1.0 / law.mu)).min(1.0);
+        let u = contact_utilization(rate, law.mu);
         self.max_utilization = self.max_utilization.max(u);
         self.arcs.add(piece.theta0_rad, piece.theta1_rad, u >= ARC_THRESHOLD, positive);
         if self.zones {

@@ -103,7 +103,7 @@ impl Profile {
     }
 
     /// The pieces as held, each with its [`Screen`], and how they are carried.
-    pub fn screened(&self) -> (impl Iterator<Item = (&Piece, &Screen)> + Clone + '_, Carried) {
+    pub fn screened(&self) -> (impl DoubleEndedIterator<Item = (&Piece, &Screen)> + Clone + '_, Carried) {
         let mu = self.mu;
         let screened = self.pieces.iter().zip(self.beside.iter());
         (screened.map(move |(p, b)| (p, b.screen.get_or_init(|| Screen::of(p, mu)))), self.carried())
@@ -352,7 +352,7 @@ pub struct Frozen {
 
 impl Frozen {
     /// [`Profile::screened`] of the profile copied.
-    pub fn screened(&self) -> (impl Iterator<Item = (&Piece, &Screen)> + Clone + '_, Carried) {
+    pub fn screened(&self) -> (impl DoubleEndedIterator<Item = (&Piece, &Screen)> + Clone + '_, Carried) {
         let carried = Carried { phi_rad: self.phi_rad, wrap_angle_rad: self.wrap_angle_rad, len: self.pieces.len() };
         (self.pieces.iter().zip(self.screens.iter()), carried)
     }
