@@ -156,11 +156,35 @@ impl Line {
     }
 }
 
+/// `ln n` of a piece over its range: in closed form, `ln A + k (θ − θ0)`, for an exponential of
+/// the contact force itself (a slip zone's line), else from its tension.
+#[derive(Debug, Clone, Copy)]
+struct LogContact<'p> {
+    piece: &'p Piece,
+    centrifugal_n: f64,
+    /// `(ln A, k)` of an exponential of the contact force.
+    line: Option<(f64, f64)>,
+}
+
+impl<'p> LogContact<'p> {
+    fn of(piece: &'p Piece, centrifugal_n: f64) -> Self {
+        let line = piece.contact_exponential(centrifugal_n).map(|(amp, rate)| (amp.ln(), rate));
+        Self { piece, centrifugal_n, line }
+    }
+
+    fn at(&self, theta: f64) -> f64 {
+        match self.line {
+            Some((ln_amp, rate)) => ln_amp + rate * (theta - self.piece.theta0_rad),
+            None => log_contact(self.piece.tension_n(theta) - self.centrifugal_n),
+        }
+    }
+}
+
 /// The clamp of one piece, in θ order, appended to `out`, and how far it moved.
 pub fn clamp_piece(piece: &Piece, env: &Envelopes, out: &mut Vec<Piece>, stats: &mut RootStats) -> Moved {
     let (a, b) = (piece.theta0_rad, piece.theta1_rad);
-    let ends =
-        (log_contact(piece.tension_n(a) - env.centrifugal_n), log_contact(piece.tension_n(b) - env.centrifugal_n));
+    let x = LogContact::of(piece, env.centrifugal_n);
+    let ends = (x.at(a), x.at(b));
     if untouched(piece, env, ends) {
         out.push(*piece);
         return Moved { side1_to_rad: None, side2_from_rad: None, side1_line: None, side2_line: None };
@@ -189,7 +213,7 @@ pub fn clamp_piece(piece: &Piece, env: &Envelopes, out: &mut Vec<Piece>, stats: 
         if end - start < super::profile::MIN_PIECE_RAD && end < b {
             continue;
         }
-        let bound = bound_at(piece, env, 0.5 * (start + end));
+        let bound = bound_at(&x, env, 0.5 * (start + end));
         if let Some(prev) = current.filter(|p| *p == bound) {
             // Same bound as the stretch before: extend it.
             let last = out.last_mut().expect("a stretch was pushed");
@@ -237,8 +261,8 @@ fn log_contact(n: f64) -> f64 {
 
 /// Which bound holds at θ: the old profile when it lies within [L, U], else the line it is
 /// clamped to.
-fn bound_at(piece: &Piece, env: &Envelopes, theta: f64) -> Bound {
-    let x = log_contact(piece.tension_n(theta) - env.centrifugal_n);
+fn bound_at(piece: &LogContact, env: &Envelopes, theta: f64) -> Bound {
+    let x = piece.at(theta);
     let (lower, l) = env.lower(theta);
     let (upper, u) = env.upper(theta);
     if x < l {
@@ -254,5 +278,46 @@ fn bound_at(piece: &Piece, env: &Envelopes, theta: f64) -> Bound {
 /// l1 and u1; else l2 and u2): beyond such a point those lines cannot bind (see the module doc).
 pub fn strictly_inside(piece: &Piece, env: &Envelopes, theta: f64, side1: bool) -> bool {
     let (lo, hi) = if side1 { (Line::Lower1, Line::Upper1) } else { (Line::Lower2, Line::Upper2) };
-    env.gap(piece, lo, theta) > 0.0 && env.gap(piece, hi, theta) < 0.0
+    match piece.contact_exponential(env.centrifugal_n) {
+        Some(_) => {
+            // Straight in ln n, as the lines are: compare the logarithms.
+            let x = LogContact::of(piece, env.centrifugal_n).at(theta);
+            x > env.line(lo, theta) && x < env.line(hi, theta)
+        }
+        None => env.gap(piece, lo, theta) > 0.0 && env.gap(piece, hi, theta) < 0.0,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The closed form of `ln n` on a slip zone's line against the logarithm of its tension,
+    /// on all four lines (positive and reverse friction from either end: the mirror images):
+    /// the tension `c + e^{line}` rounds at 1e-16 of T ≈ 1e5 N, which is 1e-16·T/n ≤ 1e-15 in
+    /// `ln n` at n ≥ T/10, so 1e-14 bounds the difference. The verdicts of `strictly_inside`
+    /// are those of the gaps in tension at points clear of the lines.
+    #[test]
+    fn a_line_holds_its_logarithm_in_closed_form() {
+        let env = Envelopes::new(1.1e5, 0.9e5, 1.2e3, 0.25, 3.2);
+        for line in [Line::Lower1, Line::Upper1, Line::Lower2, Line::Upper2] {
+            let piece = env.line_piece(line, 0.4, 1.9);
+            let x = LogContact::of(&piece, env.centrifugal_n);
+            assert!(x.line.is_some(), "{line:?}: a line is an exponential of the contact force");
+            for k in 0..=20 {
+                let theta = 0.4 + 1.5 * k as f64 / 20.0;
+                let from_tension = log_contact(piece.tension_n(theta) - env.centrifugal_n);
+                assert!((x.at(theta) - from_tension).abs() <= 1e-14, "{line:?} at {theta}");
+                assert!((x.at(theta) - env.line(line, theta)).abs() <= 1e-14, "{line:?} at {theta}");
+                for side1 in [true, false] {
+                    let (lo, hi) = if side1 { (Line::Lower1, Line::Upper1) } else { (Line::Lower2, Line::Upper2) };
+                    let (glo, ghi) = (env.gap(&piece, lo, theta), env.gap(&piece, hi, theta));
+                    if glo.abs() > 1e-6 && ghi.abs() > 1e-6 {
+                        let by_gaps = glo > 0.0 && ghi < 0.0;
+                        assert_eq!(strictly_inside(&piece, &env, theta, side1), by_gaps, "{line:?} at {theta}");
+                    }
+                }
+            }
+        }
+    }
 }
