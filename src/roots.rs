@@ -206,6 +206,55 @@ pub fn bracketed(f: impl Fn(f64) -> f64, lo: f64, hi: f64, tol: f64, stats: &mut
     Err(RootError::NotConverged { reason: NoRoot::Bracketed(Termination::MaxItersReached) })
 }
 
+/// A root of `f` on `[lo, hi]` to `tol` in x by Newton's method from `x0`, kept inside the
+/// bracket: `f_df(x)` gives `f(x)` and `f′(x)`, and `f(lo) < 0` when `lo_negative` (`f(hi)` of the
+/// other sign; neither end is evaluated). Each iterate shrinks the bracket to the side where the
+/// sign changes; a Newton step that would leave the bracket, or that does not at least halve the
+/// step before it, is a bisection instead (the safeguard of Numerical Recipes' `rtsafe`). It
+/// stops at an iterate where f is exactly 0, at a Newton step below `2ε|x| + tol/2` (Brent's
+/// tolerance in [`bracketed`]) or once the bracket is twice that. From a close start on a smooth
+/// monotone f it takes two or three evaluations where [`bracketed`] takes eight or nine.
+pub fn newton_bracketed(
+    f_df: impl Fn(f64) -> (f64, f64),
+    (lo, hi): (f64, f64),
+    x0: f64,
+    lo_negative: bool,
+    tol: f64,
+    stats: &mut RootStats,
+) -> Result<f64, RootError> {
+    let (mut a, mut b) = (lo, hi);
+    let mut x = if x0 > a && x0 < b { x0 } else { 0.5 * (a + b) };
+    let mut last_step = b - a;
+    stats.calls += 1;
+    for _ in 0..MAX_ITERS {
+        stats.iterations += 1;
+        let (fx, dfx) = f_df(x);
+        if fx == 0.0 {
+            return Ok(x);
+        }
+        if !fx.is_finite() {
+            return Err(RootError::NotConverged { reason: NoRoot::NonFiniteInside });
+        }
+        if (fx < 0.0) == lo_negative {
+            a = x;
+        } else {
+            b = x;
+        }
+        let newton = x - fx / dfx;
+        let inside = newton >= a && newton <= b;
+        let close = 2.0 * f64::EPSILON * x.abs() + 0.5 * tol;
+        if inside && (newton - x).abs() <= close {
+            return Ok(newton);
+        }
+        let next = if inside && (newton - x).abs() <= 0.5 * last_step.abs() { newton } else { 0.5 * (a + b) };
+        if b - a <= 2.0 * close {
+            return Ok(next);
+        }
+        (x, last_step) = (next, next - x);
+    }
+    Err(RootError::NotConverged { reason: NoRoot::Bracketed(Termination::MaxItersReached) })
+}
+
 struct Fun<F>(F);
 
 impl<F: Fn(f64) -> f64> CostFunction for Fun<F> {
@@ -304,5 +353,30 @@ mod tests {
             assert!(f(a).abs() < 1e-13, "f({a}) = {}", f(a));
         }
         assert!(matches!(bracketed(|x| x * x + 1.0, -1.0, 1.0, 1e-12, &mut stats), Err(RootError::NoBracket { .. })));
+    }
+
+    /// Newton's method in the bracket against roots known by hand: ∛2 of x³ − 2 on [1, 2], and
+    /// its mirror image (−∛2 of −((−x)³ − 2) on [−2, −1], the sign at the low end flipped), from
+    /// a close start and from a start at the bracket's end; and atan(x − 0.3) on [−10, 10] from
+    /// −9, where the first Newton steps leave the bracket and the bisections carry it. Each
+    /// root to 4 ulp, in at most 40 iterations for all six searches (33 when written).
+    #[test]
+    fn newton_in_the_bracket_finds_roots_by_hand() {
+        let cube = 2f64.cbrt();
+        let mut stats = RootStats::default();
+        for start in [1.3, 2.0] {
+            let x = newton_bracketed(|x| (x * x * x - 2.0, 3.0 * x * x), (1.0, 2.0), start, true, 0.0, &mut stats);
+            assert!((x.expect("a root") - cube).abs() <= 4.0 * f64::EPSILON * cube, "from {start}");
+            let mirrored = |x: f64| (-((-x).powi(3) - 2.0), 3.0 * x * x);
+            let x = newton_bracketed(mirrored, (-2.0, -1.0), -start, true, 0.0, &mut stats);
+            assert!((x.expect("a root") + cube).abs() <= 4.0 * f64::EPSILON * cube, "from {}", -start);
+        }
+        for (start, lo_negative, sign) in [(-9.0, true, 1.0), (9.0, false, -1.0)] {
+            let f = |x: f64| (sign * (x - 0.3).atan(), sign / (1.0 + (x - 0.3) * (x - 0.3)));
+            let x = newton_bracketed(f, (-10.0, 10.0), start, lo_negative, 0.0, &mut stats).expect("a root");
+            assert!((x - 0.3).abs() <= 4.0 * f64::EPSILON, "from {start}: {x}");
+        }
+        assert_eq!(stats.calls, 6);
+        assert!(stats.iterations <= 40, "{} iterations", stats.iterations);
     }
 }

@@ -18,7 +18,7 @@
 //! never rise (`|o'| ≤ μ`), so each line crosses a piece at most once: the clamp of a piece is
 //! found from the signs at its ends and one bracketed root per line.
 
-use crate::roots::{RootStats, bracketed};
+use crate::roots::{RootStats, bracketed, newton_bracketed};
 use crate::wrap::Piece;
 
 /// One of the four envelope lines.
@@ -122,7 +122,22 @@ impl Envelopes {
             return (t > a && t < b).then_some(t);
         }
         let tol = 1e-14 * (b - a).max(1e-300);
-        bracketed(|t| self.gap(piece, line, t), a, b, tol, stats).ok().filter(|t| *t > a && *t < b)
+        // Newton's method on `ln n − line`, from the secant of its end values (both nearly
+        // straight over a piece); where it cannot (no contact force inside), Brent on the gap.
+        let slope = match line {
+            Line::Lower1 | Line::Upper2 => -self.mu,
+            Line::Upper1 | Line::Lower2 => self.mu,
+        };
+        let h = |t: f64| {
+            let (tension_n, q) = piece.tension_friction(t);
+            let n = tension_n - self.centrifugal_n;
+            (n.ln() - self.line(line, t), -q / n - slope)
+        };
+        let start = a + (b - a) * da / (da - db);
+        newton_bracketed(h, (a, b), start, da < 0.0, tol, stats)
+            .or_else(|_| bracketed(|t| self.gap(piece, line, t), a, b, tol, stats))
+            .ok()
+            .filter(|t| *t > a && *t < b)
     }
 }
 
