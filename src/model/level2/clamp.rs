@@ -63,7 +63,7 @@ pub fn clamp(profile: &mut Profile, env: &Envelopes, stats: &mut RootStats, scra
         let moved = envelope::clamp_piece(&p, env, left, stats);
         touched.note(&moved, alpha);
         i += 1;
-        if envelope::strictly_inside(&p, env, p.theta1_rad, true) {
+        if envelope::strictly_between(env, moved.ends_ln_n.1, p.theta1_rad, true) {
             break;
         }
     }
@@ -75,7 +75,7 @@ pub fn clamp(profile: &mut Profile, env: &Envelopes, stats: &mut RootStats, scra
         right[start..].reverse();
         touched.note(&moved, alpha);
         j -= 1;
-        if envelope::strictly_inside(&p, env, p.theta0_rad, false) {
+        if envelope::strictly_between(env, moved.ends_ln_n.0, p.theta0_rad, false) {
             break;
         }
     }

@@ -162,6 +162,8 @@ pub struct Moved {
     pub side1_line: Option<Line>,
     /// The line of the moved stretch from the θ = α end.
     pub side2_line: Option<Line>,
+    /// `ln n` of the piece clamped, at its two ends (before the clamp).
+    pub ends_ln_n: (f64, f64),
 }
 
 impl Line {
@@ -202,7 +204,7 @@ pub fn clamp_piece(piece: &Piece, env: &Envelopes, out: &mut Vec<Piece>, stats: 
     let ends = (x.at(a), x.at(b));
     if untouched(piece, env, ends) {
         out.push(*piece);
-        return Moved { side1_to_rad: None, side2_from_rad: None, side1_line: None, side2_line: None };
+        return Moved { side1_to_rad: None, side2_from_rad: None, side1_line: None, side2_line: None, ends_ln_n: ends };
     }
     let mut cuts: [f64; 8] = [f64::NAN; 8];
     let mut k = 0;
@@ -220,7 +222,8 @@ pub fn clamp_piece(piece: &Piece, env: &Envelopes, out: &mut Vec<Piece>, stats: 
     }
     let cuts = &mut cuts[..k];
     cuts.sort_by(f64::total_cmp);
-    let mut moved = Moved { side1_to_rad: None, side2_from_rad: None, side1_line: None, side2_line: None };
+    let mut moved =
+        Moved { side1_to_rad: None, side2_from_rad: None, side1_line: None, side2_line: None, ends_ln_n: ends };
     let mut start = a;
     let mut current: Option<Bound> = None;
     let ends = cuts.iter().copied().chain(std::iter::once(b));
@@ -289,18 +292,12 @@ fn bound_at(piece: &LogContact, env: &Envelopes, theta: f64) -> Bound {
     }
 }
 
-/// Whether a piece's value at θ lies strictly between the two lines from one end (`side1`:
-/// l1 and u1; else l2 and u2): beyond such a point those lines cannot bind (see the module doc).
-pub fn strictly_inside(piece: &Piece, env: &Envelopes, theta: f64, side1: bool) -> bool {
+/// Whether `ln n` = `x` at θ lies strictly between the two lines from one end (`side1`: l1 and
+/// u1; else l2 and u2): beyond such a point of a piece those lines cannot bind (see the module
+/// doc). No contact force (x = −∞) is not between them.
+pub fn strictly_between(env: &Envelopes, x: f64, theta: f64, side1: bool) -> bool {
     let (lo, hi) = if side1 { (Line::Lower1, Line::Upper1) } else { (Line::Lower2, Line::Upper2) };
-    match piece.contact_exponential(env.centrifugal_n) {
-        Some(_) => {
-            // Straight in ln n, as the lines are: compare the logarithms.
-            let x = LogContact::of(piece, env.centrifugal_n).at(theta);
-            x > env.line(lo, theta) && x < env.line(hi, theta)
-        }
-        None => env.gap(piece, lo, theta) > 0.0 && env.gap(piece, hi, theta) < 0.0,
-    }
+    x > env.line(lo, theta) && x < env.line(hi, theta)
 }
 
 #[cfg(test)]
@@ -310,8 +307,8 @@ mod tests {
     /// The closed form of `ln n` on a slip zone's line against the logarithm of its tension,
     /// on all four lines (positive and reverse friction from either end: the mirror images):
     /// the tension `c + e^{line}` rounds at 1e-16 of T ≈ 1e5 N, which is 1e-16·T/n ≤ 1e-15 in
-    /// `ln n` at n ≥ T/10, so 1e-14 bounds the difference. The verdicts of `strictly_inside`
-    /// are those of the gaps in tension at points clear of the lines.
+    /// `ln n` at n ≥ T/10, so 1e-14 bounds the difference. The verdicts of `strictly_between`
+    /// on `ln n` are those of the gaps in tension at points clear of the lines.
     #[test]
     fn a_line_holds_its_logarithm_in_closed_form() {
         let env = Envelopes::new(1.1e5, 0.9e5, 1.2e3, 0.25, 3.2);
@@ -329,7 +326,7 @@ mod tests {
                     let (glo, ghi) = (env.gap(&piece, lo, theta), env.gap(&piece, hi, theta));
                     if glo.abs() > 1e-6 && ghi.abs() > 1e-6 {
                         let by_gaps = glo > 0.0 && ghi < 0.0;
-                        assert_eq!(strictly_inside(&piece, &env, theta, side1), by_gaps, "{line:?} at {theta}");
+                        assert_eq!(strictly_between(&env, x.at(theta), theta, side1), by_gaps, "{line:?} at {theta}");
                     }
                 }
             }
