@@ -19,6 +19,10 @@ pub fn write(x: f64, out: &mut String) {
     }
     let mut buffer = ryu::Buffer::new();
     let text = buffer.format_finite(x);
+    if let Some(plain) = plain(text) {
+        out.push_str(plain);
+        return;
+    }
     let (negative, text) = match text.strip_prefix('-') {
         Some(rest) => (true, rest),
         None => (false, text),
@@ -69,6 +73,22 @@ pub fn write(x: f64, out: &mut String) {
         out.push('.');
         out.push_str(b);
     }
+}
+
+/// `ryu`'s text where it is already the standard library's: no exponent, its `.0` dropped, and
+/// too few digits for a tie between two shortest candidates (below fifteen, or an odd last
+/// digit); `None` sends the value through the general path.
+fn plain(text: &str) -> Option<&str> {
+    let bytes = text.as_bytes();
+    if bytes.contains(&b'e') {
+        return None;
+    }
+    let text = text.strip_suffix(".0").unwrap_or(text);
+    let digits = text.bytes().filter(u8::is_ascii_digit);
+    let leading = digits.clone().take_while(|&d| d == b'0').count();
+    let significant = digits.count() - leading;
+    let even_last = text.bytes().last().is_some_and(|d| matches!(d, b'0' | b'2' | b'4' | b'6' | b'8'));
+    (significant < 15 || !even_last).then_some(text)
 }
 
 /// Whether `|x|` is exactly `(D + ½)·10^q`, `D` the integer of `digits`: the midpoint between

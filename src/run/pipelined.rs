@@ -90,10 +90,8 @@ pub(super) fn run<R: Send>(
         Ok(profile) => profile,
         Err(e) => return (Err(e), also()),
     };
-    let centrifugal_step_n = spacing_from_profile(design, cycle, &profile);
-    let t_end_s = profile.duration_s();
     let (tx, rx) = mpsc::channel::<Vec<DynSample>>();
-    let (ropes, wrap_run) = std::thread::scope(|s| {
+    let (ropes, (wrap_run, centrifugal_step_n)) = std::thread::scope(|s| {
         let producer = s.spawn(move || {
             let ropes = level4::scene_ropes_streamed(design, hoist, cycle, &mut |chunk| {
                 // A wrap that stopped early no longer listens; the ropes run on.
@@ -102,10 +100,12 @@ pub(super) fn run<R: Send>(
             drop(tx);
             (ropes, also())
         });
-        let lattice = (centrifugal_step_n, t_end_s);
+        // The lattice spacing is worked out while the ropes make their first samples.
+        let centrifugal_step_n = spacing_from_profile(design, cycle, &profile);
+        let lattice = (centrifugal_step_n, profile.duration_s());
         let wrap_run = wrap_beside(design, &rx, direction_before, lattice, options, output);
         drop(rx);
-        (producer.join(), wrap_run)
+        (producer.join(), (wrap_run, centrifugal_step_n))
     });
     let (ropes, also) = ropes.unwrap_or_else(|panic| std::panic::resume_unwind(panic));
     let (wrap, fed) = match wrap_run {
