@@ -36,19 +36,14 @@ pub struct Profile {
     mu: f64,
 }
 
-/// What the profile holds beside each piece: the m'v² at which it first reaches the Coulomb
-/// limit somewhere (a rise of m'v² past it calls for a repair), and its [`Screen`], made when a
-/// summary first asks for it (most pieces near the ends are replaced before any summary).
-#[derive(Debug, Clone, PartialEq)]
+/// What the profile holds beside each piece, each made when first asked for (most pieces near
+/// the ends are replaced before a repair or a summary reads them): the m'v² at which it first
+/// reaches the Coulomb limit somewhere (a rise of m'v² past it calls for a repair), and its
+/// [`Screen`].
+#[derive(Debug, Clone, PartialEq, Default)]
 struct Beside {
-    limit_n: f64,
+    limit_n: OnceCell<f64>,
     screen: OnceCell<Screen>,
-}
-
-impl Beside {
-    fn of(piece: &Piece, mu: f64) -> Self {
-        Self { limit_n: limit_centrifugal_n(piece, mu), screen: OnceCell::new() }
-    }
 }
 
 impl Profile {
@@ -61,7 +56,7 @@ impl Profile {
     pub fn from_field(field: &TensionField, mu: f64) -> Self {
         let wrap_angle_rad = field.wrap_angle_rad();
         let pieces: VecDeque<Piece> = field.pieces.iter().copied().filter(|p| p.len_rad() > 0.0).collect();
-        let beside = pieces.iter().map(|p| Beside::of(p, mu)).collect();
+        let beside = pieces.iter().map(|_| Beside::default()).collect();
         Self { pieces, beside, phi_rad: 0.0, wrap_angle_rad, mu }
     }
 
@@ -73,7 +68,7 @@ impl Profile {
     /// The m'v² at which piece `i` first reaches the Coulomb limit somewhere
     /// ([`limit_centrifugal_n`], a lower bound).
     pub fn limit_n(&self, i: usize) -> f64 {
-        self.beside[i].limit_n
+        *self.beside[i].limit_n.get_or_init(|| limit_centrifugal_n(&self.pieces[i], self.mu))
     }
 
     /// Wrap angle α the profile spans (rad).
@@ -169,7 +164,6 @@ impl Profile {
     /// Replaces pieces `from..to` (θ frame, contiguous with their neighbours) by `items`.
     pub fn replace(&mut self, from: usize, to: usize, items: &[Piece]) {
         let phi = self.phi_rad;
-        let mu = self.mu;
         let material = items.iter().map(|p| p.shifted(-phi));
         if from == 0 && to <= self.pieces.len() {
             // Near the front: pop and push there, leaving the rest in place.
@@ -177,9 +171,9 @@ impl Profile {
                 self.pieces.pop_front();
                 self.beside.pop_front();
             }
-            for (p, q) in material.zip(items).rev() {
+            for p in material.rev() {
                 self.pieces.push_front(p);
-                self.beside.push_front(Beside::of(q, mu));
+                self.beside.push_front(Beside::default());
             }
         } else {
             let tail: Vec<Piece> = self.pieces.drain(to..).collect();
@@ -187,7 +181,7 @@ impl Profile {
             self.pieces.truncate(from);
             self.beside.truncate(from);
             self.pieces.extend(material);
-            self.beside.extend(items.iter().map(|q| Beside::of(q, mu)));
+            self.beside.extend(items.iter().map(|_| Beside::default()));
             self.pieces.extend(tail);
             self.beside.extend(tail_beside);
         }
@@ -230,7 +224,7 @@ impl Profile {
                 None => entered.theta1_rad = hi,
             }
             if !self.absorb_front(&entered) {
-                self.beside.push_front(Beside::of(&entered, self.mu));
+                self.beside.push_front(Beside::default());
                 self.pieces.push_front(entered);
             }
         } else {
@@ -251,7 +245,7 @@ impl Profile {
                 None => entered.theta0_rad = lo,
             }
             if !self.absorb_back(&entered) {
-                self.beside.push_back(Beside::of(&entered, self.mu));
+                self.beside.push_back(Beside::default());
                 self.pieces.push_back(entered);
             }
         }
@@ -282,9 +276,8 @@ impl Profile {
             return;
         }
         self.pieces[i].theta1_rad = self.pieces[i + 1].theta1_rad;
-        // The joined piece's screen is made anew when a summary asks for it.
-        self.beside[i] =
-            Beside { limit_n: self.beside[i].limit_n.min(self.beside[i + 1].limit_n), screen: OnceCell::new() };
+        // The joined piece's limit and screen are made anew when asked for.
+        self.beside[i] = Beside::default();
         self.pieces.remove(i + 1);
         self.beside.remove(i + 1);
     }
