@@ -202,7 +202,8 @@ impl Carried {
 /// [`summarize_pieces`] over carried pieces with their [`Screen`]s, the same summary to
 /// round-off of the arcs' sums: a piece that its screen puts wholly on one side of a threshold
 /// is not evaluated against it, and the peak utilization is evaluated first on the piece of the
-/// largest bound, then only on the pieces whose bound exceeds the peak so far.
+/// largest bound, then only on the pieces whose bound exceeds the peak so far (on none where a
+/// slip zone at the Coulomb limit near an end is the peak, u = 1).
 pub fn summarize_screened<'a, I>(
     held: I,
     carried: Carried,
