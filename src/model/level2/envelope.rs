@@ -76,13 +76,17 @@ impl Envelopes {
         }
     }
 
-    /// The line as a piece over [a, b]: `T = m'v² + e^{line(a)} e^{±μ(θ − a)}`.
-    pub fn line_piece(&self, line: Line, a: f64, b: f64) -> Piece {
-        let rate = match line {
+    /// The slope of a line in θ, `d line/dθ` (1/rad): −μ for l1 and u2, +μ for u1 and l2.
+    fn slope(&self, line: Line) -> f64 {
+        match line {
             Line::Lower1 | Line::Upper2 => -self.mu,
             Line::Upper1 | Line::Lower2 => self.mu,
-        };
-        Piece::exponential(a, b, self.centrifugal_n, self.line(line, a).exp(), rate)
+        }
+    }
+
+    /// The line as a piece over [a, b]: `T = m'v² + e^{line(a)} e^{±μ(θ − a)}`.
+    pub fn line_piece(&self, line: Line, a: f64, b: f64) -> Piece {
+        Piece::exponential(a, b, self.centrifugal_n, self.line(line, a).exp(), self.slope(line))
     }
 
     /// The line that bounds from below at θ (the larger of l1, l2) and its value.
@@ -124,10 +128,7 @@ impl Envelopes {
         let tol = 1e-14 * (b - a).max(1e-300);
         // Newton's method on `ln n − line`, from the secant of its end values (both nearly
         // straight over a piece); where it cannot (no contact force inside), Brent on the gap.
-        let slope = match line {
-            Line::Lower1 | Line::Upper2 => -self.mu,
-            Line::Upper1 | Line::Lower2 => self.mu,
-        };
+        let slope = self.slope(line);
         let h = |t: f64| {
             let (tension_n, q) = piece.tension_friction(t);
             let n = tension_n - self.centrifugal_n;
