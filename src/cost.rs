@@ -51,7 +51,7 @@ pub const BREAKPOINTS_PER_CENTRIFUGAL_STEP: f64 = 2.0;
 
 /// Level 2's work, in breakpoint updates, for a history of `samples` samples with `reversals`
 /// load reversals and `centrifugal_steps` steps of m'v² on its lattice
-/// ([`crate::model::level2::simulate::centrifugal_steps`]), reported in `rows` rows: linear in
+/// ([`crate::model::level2::lattice::centrifugal_steps`]), reported in `rows` rows: linear in
 /// each, independent of the node count (`--nodes` only sets the output grid of the
 /// distributions).
 pub fn level2_work(samples: u64, reversals: u64, centrifugal_steps: u64, rows: u64) -> f64 {

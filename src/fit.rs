@@ -10,7 +10,7 @@
 //! linear least-squares value `A = Σ sᵢyᵢ / Σ sᵢ²` (`yᵢ = Tᵢ − m'v²`, `sᵢ` the shape above); the
 //! remaining one-dimensional problem, min over β of the squared residual, is solved by argmin's
 //! Brent minimizer on the bracket around the best of a 1° scan (made from running sums over the
-//! samples, [`Sums`]). Both signs of k (positive and reverse friction) are tried, and both
+//! samples). Both signs of k (positive and reverse friction) are tried, and both
 //! entry sides when the rope is at rest.
 
 use argmin::core::{CostFunction, Error as ArgminError, Executor, State};

@@ -1,5 +1,5 @@
 //! The shared frame of every PNG plot: the embedded font (no system fonts needed), the figure
-//! with its caption ([`render`]), stacked panels and their meshes, legends, axis ranges and tick
+//! with its caption (`render`), stacked panels and their meshes, legends, axis ranges and tick
 //! labels. Drawing never panics: every failure comes back as a [`PlotError`]. The figures
 //! themselves live beside their features (`plot_distribution`, `plot_history`, `plot_wrap`, …).
 
