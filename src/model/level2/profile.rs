@@ -259,27 +259,34 @@ impl Profile {
     /// entered during one ramp of the end tension over several increments), looking at the
     /// first and last few pairs: only there do pieces enter or change.
     pub fn merge_ends(&mut self) {
+        // A second look finds what the first one's joins brought together; after a first look
+        // that joined nothing it would see the same pairs again.
         for _ in 0..2 {
+            let mut joined = false;
             for i in [0, 1, 2] {
-                self.merge_pair(i);
+                joined |= self.merge_pair(i);
             }
             let m = self.pieces.len();
             for i in [m.saturating_sub(2), m.saturating_sub(3), m.saturating_sub(4)] {
-                self.merge_pair(i);
+                joined |= self.merge_pair(i);
+            }
+            if !joined {
+                break;
             }
         }
     }
 
-    /// Joins pieces i and i + 1 when the second continues the first.
-    fn merge_pair(&mut self, i: usize) {
+    /// Joins pieces i and i + 1 when the second continues the first; whether it did.
+    fn merge_pair(&mut self, i: usize) -> bool {
         if i + 1 >= self.pieces.len() || !continues(&self.pieces[i], &self.pieces[i + 1]) {
-            return;
+            return false;
         }
         self.pieces[i].theta1_rad = self.pieces[i + 1].theta1_rad;
         // The joined piece's limit and screen are made anew when asked for.
         self.beside[i] = Beside::default();
         self.pieces.remove(i + 1);
         self.beside.remove(i + 1);
+        true
     }
 
     /// Extends the first piece over `p` (just in front of it) when both hold the same constant
