@@ -218,14 +218,13 @@ where
     // A slip zone at the Coulomb limit (most often at an end) is the peak, u = 1: no piece
     // needs evaluating for it.
     let ends = held.clone().take(3).chain(held.clone().rev().take(3));
-    let at_limit = ends.into_iter().any(|(p, s)| {
-        s.contact_exponential(c) && p.contact_exponential(c).is_some_and(|(_, k)| contact_utilization(k, mu) >= 1.0)
-    });
+    let at_limit =
+        ends.into_iter().any(|(p, _)| p.contact_exponential(c).is_some_and(|(_, k)| contact_utilization(k, mu) >= 1.0));
     if !at_limit {
         let top = held
             .clone()
             .enumerate()
-            .filter(|(_, (_, s))| !s.contact_exponential(c))
+            .filter(|(_, (p, _))| p.contact_exponential(c).is_none())
             .map(|(i, (p, s))| (s.utilization_bound(mu, c), i, p))
             .max_by(|a, b| a.0.total_cmp(&b.0));
         if let Some((_, i, p)) = top {
@@ -233,15 +232,17 @@ where
         }
     }
     for (i, (p, screen)) in held.enumerate() {
-        if screen.contact_exponential(c) {
+        // Shifting a piece changes neither its shape nor the sign of its friction.
+        if p.contact_exponential(c).is_some() {
             gather.exponential(&carried.piece(p, i), law);
             continue;
         }
+        let positive = p.friction_positive();
         let (a, b) = carried.ends(p, i);
         let arc = match screen.arc.side(c) {
             Side::Open => true,
             side => {
-                gather.arcs.add(a, b, side == Side::Above, screen.positive);
+                gather.arcs.add(a, b, side == Side::Above, positive);
                 false
             }
         };
@@ -249,7 +250,7 @@ where
             && match screen.slip.side(c) {
                 Side::Open => true,
                 side => {
-                    gather.states.push(a, b, state_of(side == Side::Above, screen.positive));
+                    gather.states.push(a, b, state_of(side == Side::Above, positive));
                     false
                 }
             };

@@ -71,12 +71,6 @@ pub struct Screen {
     tension_min_n: f64,
     /// Largest |q| over the piece (N/rad), plus the margin.
     friction_max_n_per_rad: f64,
-    /// The `T_base` of an exponential piece of positive amplitude, NaN for any other piece: at
-    /// m'v² equal to it the piece is an exponential of the contact force itself
-    /// ([`Piece::contact_exponential`]).
-    contact_base_n: f64,
-    /// Whether friction is positive (+θ) on the piece ([`Piece::friction_positive`]).
-    pub positive: bool,
 }
 
 impl Screen {
@@ -91,24 +85,12 @@ impl Screen {
             lo_n: lo - MARGIN * (scale + lo.abs()),
             hi_n: hi + MARGIN * (scale + hi.abs()),
         };
-        let contact_base_n = match piece.shape {
-            Shape::Exp { base_n, amp_n, .. } if amp_n > 0.0 => base_n,
-            _ => f64::NAN,
-        };
         Self {
             arc: widened(range_with_ends(piece, &ends, mu * ARC_THRESHOLD)),
             slip: widened(range_with_ends(piece, &ends, mu * SLIP_UTILIZATION)),
             tension_min_n: t_min - MARGIN * scale,
             friction_max_n_per_rad: q_max * (1.0 + MARGIN),
-            contact_base_n,
-            positive: piece.friction_positive(),
         }
-    }
-
-    /// Whether the piece is an exponential of the contact force itself at m'v² = `centrifugal_n`
-    /// (as [`Piece::contact_exponential`] tells).
-    pub fn contact_exponential(&self, centrifugal_n: f64) -> bool {
-        self.contact_base_n == centrifugal_n
     }
 
     /// An upper bound of the utilization over the piece at m'v² = `centrifugal_n` on a lining
