@@ -75,21 +75,18 @@ pub(super) fn applies(design: &Design, scene: &Scene, cycle: &DutyCycleScene, pl
 }
 
 /// Runs the ropes of `cycle` on a thread of their own and the wrap through their samples as
-/// they come; `direction_before` is the way the rope ran before the trip. The ropes' thread
-/// then makes `also`'s result, while the wrap works through the last samples.
+/// they come; `profile` is the trip's motion ([`level4::motion_profile`]), the rope running the
+/// other way before it. The ropes' thread then makes `also`'s result, while the wrap works
+/// through the last samples.
 pub(super) fn run<R: Send>(
     design: &Design,
-    hoist: &Hoist,
-    cycle: &DutyCycleScene,
-    direction_before: Direction,
+    (hoist, cycle): (&Hoist, &DutyCycleScene),
+    profile: &MotionProfile,
     options: Options,
     output: Output,
     also: impl FnOnce() -> R + Send,
 ) -> (Result<Beside, Level4Error>, R) {
-    let profile = match level4::motion_profile(hoist, cycle) {
-        Ok(profile) => profile,
-        Err(e) => return (Err(e), also()),
-    };
+    let direction_before = cycle.direction.reversed();
     let (tx, rx) = mpsc::channel::<Vec<DynSample>>();
     let (ropes, (wrap_run, centrifugal_step_n)) = std::thread::scope(|s| {
         let producer = s.spawn(move || {
@@ -101,7 +98,7 @@ pub(super) fn run<R: Send>(
             (ropes, also())
         });
         // The lattice spacing is worked out while the ropes make their first samples.
-        let centrifugal_step_n = spacing_from_profile(design, cycle, &profile);
+        let centrifugal_step_n = spacing_from_profile(design, cycle, profile);
         let lattice = (centrifugal_step_n, profile.duration_s());
         let wrap_run = wrap_beside(design, &rx, direction_before, lattice, options, output);
         drop(rx);

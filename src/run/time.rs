@@ -139,16 +139,16 @@ fn ropes<R: Send>(
     also: impl FnOnce() -> R + Send,
 ) -> (Result<(RopeRun, Option<pipelined::Unconfirmed>), Level4Error>, R) {
     let Some(hoist) = &design.hoist else { return (Err(Level4Error::NoHoist), also()) };
-    let end_s = match level4::motion_profile(hoist, cycle) {
-        Ok(profile) if pipelined::applies(design, scene, cycle, plan, parallel_sides) => profile.duration_s(),
+    let profile = match level4::motion_profile(hoist, cycle) {
+        Ok(profile) if pipelined::applies(design, scene, cycle, plan, parallel_sides) => profile,
         _ => {
             let also = also();
             return (level4::scene_ropes(design, hoist, cycle, parallel_sides).map(|r| (r, None)), also);
         }
     };
-    let snapshots_s = valid_snapshots(cycle, end_s);
+    let snapshots_s = valid_snapshots(cycle, profile.duration_s());
     let output = cycle_output(cycle, &snapshots_s, options);
-    let (beside, also) = pipelined::run(design, hoist, cycle, cycle.direction.reversed(), options, output, also);
+    let (beside, also) = pipelined::run(design, (hoist, cycle), &profile, options, output, also);
     (beside.map(|b| b.split()).map(|(ropes, unconfirmed)| (ropes, Some(unconfirmed))), also)
 }
 
