@@ -56,6 +56,7 @@
 //! the pulley as a body: its motion is then an unknown of the same scheme.
 
 mod braked;
+mod fixed;
 mod profile;
 mod rope;
 mod simulate;

@@ -233,8 +233,9 @@ pub(crate) fn fundamental_omega(c: &Coeffs, n: usize) -> f64 {
 }
 
 /// The state of one side: nodal displacement, velocity and acceleration of the free nodes
-/// (downward, relative to the rigid motion), with work buffers.
-#[derive(Debug, Clone, PartialEq)]
+/// (downward, relative to the rigid motion), with work buffers (not part of the state: two
+/// states are equal when their nodes' q, v and a are).
+#[derive(Debug, Clone)]
 pub(crate) struct SideState {
     pub q: Vec<f64>,
     pub v: Vec<f64>,
@@ -243,6 +244,12 @@ pub(crate) struct SideState {
     pub(super) scratch: Vec<f64>,
     pub(super) mid_q: Vec<f64>,
     pub(super) mid_v: Vec<f64>,
+}
+
+impl PartialEq for SideState {
+    fn eq(&self, other: &Self) -> bool {
+        self.q == other.q && self.v == other.v && self.a == other.a
+    }
 }
 
 impl SideState {

@@ -39,17 +39,27 @@ pub(crate) fn sweep<const K: usize>(sides: [(&mut SideState, &Coeffs); K], dt: f
     sweep_with(sides.map(|(s, c)| (s, c, Pivots::of(c, dt))), dt);
 }
 
+/// [`sweep_with`] for the usual meshes, whose size is known when compiled ([`fixed::sweep`]);
+/// any other size by the loop over the nodes. The same operations in the same order either way.
+fn sweep_with<const K: usize>(sides: [(&mut SideState, &Coeffs, Pivots); K], dt: f64) {
+    match sides[0].0.q.len() {
+        12 => super::fixed::sweep::<12, K>(sides, dt),
+        24 => super::fixed::sweep::<24, K>(sides, dt),
+        _ => sweep_nodes(sides, dt),
+    }
+}
+
 /// What the elimination of a step needs of a side's effective matrix beyond its coefficients:
 /// the last diagonal, the off-diagonal `o`, `λ₊`, `ρ` and `1/λ₊`. They depend on the
 /// coefficients and the step only, not on the state, so a run can form those of several steps
 /// ahead together, where their roots and divisions overlap.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Pivots {
-    last: f64,
-    off: f64,
-    lambda: f64,
-    rho: f64,
-    settled_inv: f64,
+    pub(super) last: f64,
+    pub(super) off: f64,
+    pub(super) lambda: f64,
+    pub(super) rho: f64,
+    pub(super) settled_inv: f64,
 }
 
 impl Pivots {
@@ -66,8 +76,8 @@ impl Pivots {
     }
 }
 
-/// [`sweep`] with the sides' pivots given.
-fn sweep_with<const K: usize>(sides: [(&mut SideState, &Coeffs, Pivots); K], dt: f64) {
+/// [`sweep`] with the sides' pivots given, as a loop over the nodes of any number.
+pub(super) fn sweep_nodes<const K: usize>(sides: [(&mut SideState, &Coeffs, Pivots); K], dt: f64) {
     let h2 = 0.25 * dt * dt;
     let n = sides[0].0.q.len();
     let mut lanes = sides.map(|(s, c, pivots)| Lanes::new(s, c, pivots, dt, h2));
@@ -87,7 +97,7 @@ fn sweep_with<const K: usize>(sides: [(&mut SideState, &Coeffs, Pivots); K], dt:
 }
 
 /// `ρ^{i+1}` at and below which the closed-form pivot is `1/λ₊` to the last bit.
-const SETTLED: f64 = 1.0 / (1u64 << 54) as f64;
+pub(super) const SETTLED: f64 = 1.0 / (1u64 << 54) as f64;
 
 /// One side's state as slices of one length, for [`sweep`].
 struct Lanes<'a> {
