@@ -66,8 +66,8 @@ mod sweep;
 pub use braked::{PulleyBody, braked_stop};
 pub use profile::{AT_REST_M_S, Kinematics, MotionProfile, Stage};
 pub use simulate::{
-    Checkpoint, DynSample, STREAM_CHUNK, SimOptions, recorded_times, simulate, simulate_resumable, simulate_streamed,
-    simulate_with,
+    Checkpoint, DynSample, STREAM_CHUNK, SimOptions, recorded_times, simulate, simulate_prefix, simulate_resumable,
+    simulate_streamed, simulate_with,
 };
 
 pub use crate::design::Side;

@@ -192,6 +192,24 @@ impl MotionProfile {
         seg.at(t_s - seg.t0_s)
     }
 
+    /// The instant up to which (exclusive) this profile and `other` give the same kinematics at
+    /// every time, bit for bit: the end of the stages they share (the same start, start state
+    /// and jerk), or of the shorter of the first two that have the same polynomial and differ
+    /// only in how long they last (a stage cut short by an emergency stop). 0 when they differ
+    /// from the start.
+    pub fn agrees_until(&self, other: &Self) -> f64 {
+        for (a, b) in self.segments.iter().zip(&other.segments) {
+            let same_polynomial = a.t0_s == b.t0_s && a.start == b.start && a.jerk_m_s3 == b.jerk_m_s3;
+            if !same_polynomial {
+                return a.t0_s.min(b.t0_s);
+            }
+            if a.duration_s != b.duration_s {
+                return (a.t0_s + a.duration_s).min(b.t0_s + b.duration_s);
+            }
+        }
+        self.duration_s.min(other.duration_s)
+    }
+
     /// A reader of the profile at times taken in increasing order (the steps of a run).
     pub fn cursor(&self) -> Cursor<'_> {
         Cursor { profile: self, segment: 0 }
@@ -301,6 +319,49 @@ mod tests {
             let mut cursor = profile.cursor();
             for t in times {
                 assert_eq!(cursor.at(t), profile.at(t), "sign {sign}, t = {t}");
+            }
+        }
+    }
+
+    /// Two profiles agree, bit for bit, exactly up to where `agrees_until` says, lifting and
+    /// lowering: a trip and the same trip cut by a step to a deceleration at 3.2 s, inside its
+    /// constant-speed stage (they part there); a trip and a longer one that begins with it (they
+    /// agree over the whole shorter one); a first ramp cut short (the same jerk, a shorter stage);
+    /// and profiles that differ from the start.
+    #[test]
+    fn profiles_agree_up_to_where_they_part() {
+        for sign in [1.0, -1.0] {
+            let trip = [Stage::ramp(1.5, sign * 0.75), Stage::ramp(1.5, 0.0), Stage::ramp(2.0, 0.0)];
+            let full = MotionProfile::new(&trip).expect("valid");
+            let mut cut = trip[..2].to_vec();
+            cut.extend([Stage::ramp(0.2, 0.0), Stage::step_until_stop(sign * -1.5)]);
+            let cut = MotionProfile::new(&cut).expect("valid");
+            let mut longer = trip.to_vec();
+            longer.extend([Stage::ramp(1.0, 0.0), Stage::ramp(1.5, sign * -0.75)]);
+            let longer = MotionProfile::new(&longer).expect("valid");
+            // The first ramp's jerk is 0.5 m/s³, exactly, in both.
+            let short_ramp = MotionProfile::new(&[Stage::ramp(0.5, sign * 0.25)]).expect("valid");
+            let other = MotionProfile::new(&[Stage::ramp(1.5, sign * 0.6)]).expect("valid");
+            let cases = [(&full, &cut, 3.2), (&full, &longer, 5.0), (&full, &short_ramp, 0.5), (&full, &other, 0.0)];
+            for (a, b, until) in cases {
+                assert!(
+                    (a.agrees_until(b) - until).abs() < 1e-12,
+                    "sign {sign}: {} against {until}",
+                    a.agrees_until(b)
+                );
+                assert_eq!(a.agrees_until(b), b.agrees_until(a));
+                let t_part = a.agrees_until(b);
+                for i in 0..=6000 {
+                    let t = i as f64 * 1e-3;
+                    if t < t_part {
+                        assert_eq!(a.at(t), b.at(t), "sign {sign}, t = {t}");
+                    }
+                }
+                // Just past the instant they part, they differ (unless both have ended).
+                let after = t_part + 1e-3;
+                if after < a.duration_s().min(b.duration_s()) {
+                    assert_ne!(a.at(after), b.at(after), "sign {sign}, t = {after}");
+                }
             }
         }
     }

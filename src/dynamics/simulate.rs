@@ -114,6 +114,11 @@ impl Checkpoint {
     pub fn t_s(&self) -> f64 {
         self.t_s
     }
+
+    /// The step it was taken after (0: the start).
+    pub fn step(&self) -> usize {
+        self.step
+    }
 }
 
 /// Coefficients of a side at time `t_s` for the kinematics `x_m`, `accel_m_s2`.
@@ -178,10 +183,6 @@ pub fn simulate_streamed(
     let (dt, n, total_s) = (opt.dt_s, opt.elements, profile.duration_s());
     let every = opt.record_every.max(1);
     let mut sides = initial_sides(p, profile, opt)?;
-    let sample = |t_s: f64, k: super::Kinematics, sides: &[Side2], work_j: f64, dissipated_j: f64| {
-        sample_of(p, t_s, k, sides, work_j, dissipated_j)
-    };
-
     let (mut work_j, mut dissipated_j) = (0.0, 0.0);
     let (mut t_prev, mut first_step) = (0.0, 1);
     if let Some(cp) = from.filter(|cp| cp.dt_s == dt && cp.elements == n && cp.step < steps) {
@@ -196,48 +197,109 @@ pub fn simulate_streamed(
         sink(&run.0);
         return Ok(run);
     }
-    let mut sent = 0;
     let mut out = Vec::with_capacity((steps + 1 - first_step) / every + 2);
-    out.push(sample(t_prev, profile.at(t_prev), &sides, work_j, dissipated_j));
-    let checkpoint = |step: usize, t_s: f64, sides: &[Side2], work_j: f64, dissipated_j: f64| Checkpoint {
-        step,
-        t_s,
-        dt_s: dt,
-        elements: n,
-        sides: sides.to_vec(),
-        work_j,
-        dissipated_j,
-    };
-    let mut kept =
-        (keep_step == Some(first_step - 1)).then(|| checkpoint(first_step - 1, t_prev, &sides, work_j, dissipated_j));
-    let mut motion = profile.cursor();
-    for step in first_step..=steps {
-        let t = step_time_s(step, steps, dt, total_s);
-        let h = t - t_prev;
-        if h <= 0.0 {
-            continue;
-        }
-        let kin = motion.at(t);
-        let (w, d) = step_sides(p, &mut sides, t, kin.x_m, kin.accel_m_s2, h, opt.energy)?;
-        work_j += w;
-        dissipated_j += d;
-        t_prev = t;
-        if step % every == 0 || step == steps {
-            out.push(sample(t, kin, &sides, work_j, dissipated_j));
-            if out.len() - sent >= STREAM_CHUNK {
-                sink(&out[sent..]);
-                sent = out.len();
-            }
+    out.push(sample_of(p, t_prev, profile.at(t_prev), &sides, work_j, dissipated_j));
+    let mut run = Stepping { sides, work_j, dissipated_j, t_prev };
+    let mut kept = (keep_step == Some(first_step - 1)).then(|| run.checkpoint(first_step - 1, opt));
+    let mut sent = 0;
+    run.steps(p, profile, opt, (first_step..=steps, steps), &mut out, &mut |step, run, out| {
+        if out.len() - sent >= STREAM_CHUNK {
+            sink(&out[sent..]);
+            sent = out.len();
         }
         if keep_step == Some(step) {
-            kept = Some(checkpoint(step, t, &sides, work_j, dissipated_j));
+            kept = Some(run.checkpoint(step, opt));
         }
-    }
+    })?;
     if out.len() > sent {
         sink(&out[sent..]);
     }
     crate::tally::add_increments((steps + 1 - first_step) as u64);
     Ok((out, kept))
+}
+
+/// The start of a run over `profile` (from static equilibrium, on one thread) up to the last of
+/// `keep_steps` (each before the run's last step; ascending), keeping a checkpoint at each:
+/// the stretch that runs over profiles agreeing with `profile` up to those steps share
+/// ([`MotionProfile::agrees_until`]); each continues from its checkpoint
+/// ([`simulate_resumable`]). Returns the samples up to the last step kept (those of the whole
+/// run, bit for bit) and the checkpoints.
+pub fn simulate_prefix(
+    p: &HoistParams,
+    profile: &MotionProfile,
+    opt: &SimOptions,
+    keep_steps: &[usize],
+) -> Result<(Vec<DynSample>, Vec<Checkpoint>), DynamicsError> {
+    let steps = step_count(p, profile, opt)?;
+    let last = keep_steps.iter().copied().filter(|k| *k < steps).max().unwrap_or(0);
+    let sides = initial_sides(p, profile, opt)?;
+    let mut out = Vec::with_capacity(last / opt.record_every.max(1) + 2);
+    out.push(sample_of(p, 0.0, profile.at(0.0), &sides, 0.0, 0.0));
+    let mut run = Stepping { sides, work_j: 0.0, dissipated_j: 0.0, t_prev: 0.0 };
+    let mut kept: Vec<Checkpoint> = keep_steps.contains(&0).then(|| run.checkpoint(0, opt)).into_iter().collect();
+    run.steps(p, profile, opt, (1..=last, steps), &mut out, &mut |step, run, _| {
+        if keep_steps.contains(&step) {
+            kept.push(run.checkpoint(step, opt));
+        }
+    })?;
+    crate::tally::add_increments(last as u64);
+    Ok((out, kept))
+}
+
+/// The integrator's state between steps of a sequential run.
+struct Stepping {
+    sides: Vec<Side2>,
+    work_j: f64,
+    dissipated_j: f64,
+    /// The instant of the last step, s.
+    t_prev: f64,
+}
+
+impl Stepping {
+    /// The checkpoint of the state after step `step`.
+    fn checkpoint(&self, step: usize, opt: &SimOptions) -> Checkpoint {
+        Checkpoint {
+            step,
+            t_s: self.t_prev,
+            dt_s: opt.dt_s,
+            elements: opt.elements,
+            sides: self.sides.clone(),
+            work_j: self.work_j,
+            dissipated_j: self.dissipated_j,
+        }
+    }
+
+    /// Steps `range` of a run of `steps` steps, recording every `record_every`-th (and the last)
+    /// into `out`; `after` sees the state after each step.
+    fn steps(
+        &mut self,
+        p: &HoistParams,
+        profile: &MotionProfile,
+        opt: &SimOptions,
+        (range, steps): (std::ops::RangeInclusive<usize>, usize),
+        out: &mut Vec<DynSample>,
+        after: &mut dyn FnMut(usize, &Self, &mut Vec<DynSample>),
+    ) -> Result<(), DynamicsError> {
+        let (dt, total_s, every) = (opt.dt_s, profile.duration_s(), opt.record_every.max(1));
+        let mut motion = profile.cursor();
+        for step in range {
+            let t = step_time_s(step, steps, dt, total_s);
+            let h = t - self.t_prev;
+            if h <= 0.0 {
+                continue;
+            }
+            let kin = motion.at(t);
+            let (w, d) = step_sides(p, &mut self.sides, t, kin.x_m, kin.accel_m_s2, h, opt.energy)?;
+            self.work_j += w;
+            self.dissipated_j += d;
+            self.t_prev = t;
+            if step % every == 0 || step == steps {
+                out.push(sample_of(p, t, kin, &self.sides, self.work_j, self.dissipated_j));
+            }
+            after(step, self, out);
+        }
+        Ok(())
+    }
 }
 
 /// The instant step `step` of `steps` ends at: `step·dt`, the last at exactly `total_s`.

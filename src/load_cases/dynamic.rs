@@ -51,7 +51,9 @@ pub fn cases(
             let (trips, after_s, mode) = match emergency {
                 Emergency::Brake(b) => {
                     runs += 1;
-                    let trips = stop::braked_ropes(design, &params, &stages, &times, lc.time_step_s, &b)?;
+                    let trip =
+                        stop::BrakedTrip { stages: &stages, trips_s: &times, time_step_s: lc.time_step_s, from: None };
+                    let trips = stop::braked_ropes(design, &params, trip, &b)?;
                     (trips, b.idle_time_s + b.build_up_s, StopMode::Brake)
                 }
                 Emergency::Imposed(d) => {

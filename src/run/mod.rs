@@ -9,6 +9,8 @@ mod derive;
 mod design_checks;
 mod loads;
 mod pipelined;
+mod schedule;
+mod share;
 mod time;
 pub mod track;
 mod trip;
@@ -30,12 +32,14 @@ use crate::model::history::{HistoryRow, SolverReport};
 use crate::model::level0::{Classical, EndState};
 use crate::model::level2::{Level2Error, Params, Solver};
 use crate::model::level3::{Level3Error, Level3Stats};
-use crate::model::level4::Level4Error;
+use crate::model::level4::shared::RopePrefix;
+use crate::model::level4::{self, Level4Error};
 use crate::model::stop::{SlipOnset, StopReport};
 use crate::planner::{self, Level, Plan, PlanError, Request};
 use crate::roots::RootError;
 use crate::wrap::Distribution;
 use rayon::prelude::*;
+use std::sync::Mutex;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
 
@@ -312,25 +316,79 @@ pub fn run_with_progress(
     // Scenes are independent: run in parallel, the costliest first (so that a long scene does
     // not start last and run alone), reported in the sheet's order. After a failure no further
     // scene starts; the error reported is the first in the sheet's order.
-    let mut queue: Vec<(usize, Estimate)> = estimates.into_iter().enumerate().collect();
-    queue.sort_by(|a, b| b.1.seconds.total_cmp(&a.1.seconds));
     let failed = AtomicBool::new(false);
-    let mut done: Vec<(usize, Result<SceneResult, RunError>)> = queue
-        .into_iter()
-        .par_bridge()
-        .filter(|_| !failed.load(Ordering::Relaxed))
-        .map(|(i, e)| {
-            let seconds = e.seconds;
-            let result =
-                run_scene(design, scenes[i], options, parallel_sides).map(|r| SceneResult { cost: Some(e), ..r });
-            failed.fetch_or(result.is_err(), Ordering::Relaxed);
-            progress(seconds);
-            (i, result)
-        })
-        .collect();
+    let one = |i: usize, e: Estimate, prefix: Option<&RopePrefix>| {
+        let seconds = e.seconds;
+        let context = SceneContext { parallel_sides, prefix };
+        let result = run_scene(design, scenes[i], options, context).map(|r| SceneResult { cost: Some(e), ..r });
+        failed.fetch_or(result.is_err(), Ordering::Relaxed);
+        progress(seconds);
+        (i, result)
+    };
+    // Scenes that share the start of their trip ([`share`]) wait for it, integrated once; a
+    // run that is one of many in parallel, or whose scenes each have cores to spare, has none.
+    let groups = if parallel_sides || rayon::current_thread_index().is_some() {
+        Vec::new()
+    } else {
+        share::groups(design, scenes, options)
+    };
+    let mut done = if groups.is_empty() {
+        let mut queue: Vec<(usize, Estimate)> = estimates.into_iter().enumerate().collect();
+        queue.sort_by(|a, b| b.1.seconds.total_cmp(&a.1.seconds));
+        queue
+            .into_iter()
+            .par_bridge()
+            .filter(|_| !failed.load(Ordering::Relaxed))
+            .map(|(i, e)| one(i, e, None))
+            .collect()
+    } else {
+        run_shared(&groups, estimates, &failed, &one)
+    };
     done.sort_by_key(|(i, _)| *i);
     let scenes = done.into_iter().map(|(_, r)| r).collect::<Result<Vec<_>, _>>()?;
     Ok(RunResult { scenes, design: None, runtime_ms: start.elapsed().as_secs_f64() * 1e3 })
+}
+
+/// A scene's result with its index among the run's scenes.
+type Done = (usize, Result<SceneResult, RunError>);
+
+/// The scenes of a run with `groups` sharing the start of their trip: each group's start is a
+/// task that makes its scenes ready when done ([`schedule`]); a scene starts only while none
+/// has failed.
+fn run_shared(
+    groups: &[share::Group],
+    estimates: Vec<Estimate>,
+    failed: &AtomicBool,
+    one: &(dyn Fn(usize, Estimate, Option<&RopePrefix>) -> Done + Sync),
+) -> Vec<Done> {
+    enum Task {
+        Start(usize),
+        Scene(usize, Option<RopePrefix>),
+    }
+    let grouped: Vec<usize> = groups.iter().flat_map(|g| g.members.iter().map(|(i, _)| *i)).collect();
+    let mut initial: Vec<(f64, Task)> = (0..groups.len()).map(|g| (f64::INFINITY, Task::Start(g))).collect();
+    initial.extend(
+        (0..estimates.len()).filter(|i| !grouped.contains(i)).map(|i| (estimates[i].seconds, Task::Scene(i, None))),
+    );
+    let done = Mutex::new(Vec::with_capacity(estimates.len()));
+    schedule::run(initial, rayon::current_num_threads(), |task, push| match task {
+        Task::Start(g) => {
+            let group = &groups[g];
+            let forks: Vec<usize> = group.members.iter().map(|(_, k)| *k).collect();
+            // A start that cannot be integrated leaves each scene to run (and fail) on its own.
+            let mut prefixes = level4::shared::prefixes(&group.leader, &forks).unwrap_or_default().into_iter();
+            for (i, _) in &group.members {
+                push(estimates[*i].seconds, Task::Scene(*i, prefixes.next().flatten()));
+            }
+        }
+        Task::Scene(i, prefix) => {
+            if !failed.load(Ordering::Relaxed) {
+                let result = one(i, estimates[i].clone(), prefix.as_ref());
+                done.lock().unwrap_or_else(|poisoned| poisoned.into_inner()).push(result);
+            }
+        }
+    });
+    done.into_inner().unwrap_or_else(|poisoned| poisoned.into_inner())
 }
 
 /// [`run`], then the design as a whole: the load-case matrix of `[load_cases]` (with its level-4
@@ -358,15 +416,26 @@ pub fn run_all_with_progress(
     Ok(result)
 }
 
-/// Runs one scene (`parallel_sides`: a second core is free for it, for the two sides of its
-/// suspended ropes and its rows' summaries).
-fn run_scene(design: &Design, scene: &Scene, options: Options, parallel_sides: bool) -> Result<SceneResult, RunError> {
+/// What a scene runs with beside the design and the options.
+#[derive(Debug, Clone, Copy, Default)]
+struct SceneContext<'a> {
+    /// A second core is free for the scene: for the two sides of its suspended ropes and its
+    /// rows' summaries.
+    parallel_sides: bool,
+    /// The start of the trip the scene's suspended ropes share with others of the run
+    /// ([`share`]), to continue from.
+    prefix: Option<&'a RopePrefix>,
+}
+
+/// Runs one scene.
+fn run_scene(design: &Design, scene: &Scene, options: Options, context: SceneContext) -> Result<SceneResult, RunError> {
     let start = Instant::now();
     let plan = planner::plan_with_lining(scene, options.request, design.lining.is_some())?;
+    let spare_core = context.parallel_sides;
     let (mut result, ropes) = match &scene.kind {
         SceneKind::Loads(loads) => (run_loads(design, scene, loads, plan, options)?, None),
-        SceneKind::History(history) => (run_history(design, scene, history, plan, options, parallel_sides)?, None),
-        SceneKind::DutyCycle(cycle) => run_duty_cycle(design, scene, cycle, plan, options, parallel_sides)?,
+        SceneKind::History(history) => (run_history(design, scene, history, plan, options, spare_core)?, None),
+        SceneKind::DutyCycle(cycle) => run_duty_cycle(design, scene, cycle, plan, options, context)?,
     };
     derive_answers(design, scene, &mut result, ropes)?;
     result.runtime_ms = start.elapsed().as_secs_f64() * 1e3;

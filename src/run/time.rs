@@ -5,7 +5,7 @@
 use super::pipelined;
 use super::trip::{self, Trip};
 use super::wrap_run::{Initial, rolling_initial, run_model, wrap_model};
-use super::{HistoryOutput, Options, RunError, SceneResult, WrapResult, empty};
+use super::{HistoryOutput, Options, RunError, SceneContext, SceneResult, WrapResult, empty};
 use crate::check;
 use crate::design::{Design, Direction, DutyCycleScene, HistorySample, HistoryScene, Hoist, Scene};
 use crate::dynamics::Kinematics;
@@ -53,16 +53,18 @@ pub(super) fn run_history(
 /// onset of gross slip, if any (the rest is not valid); its dynamic safety factor is the code's,
 /// on rigid ropes, with the level-4 value beside it ([`trip::code_and_rope_dynamics`]).
 /// Returns the suspended ropes' run with the result (the emergency margins continue from it);
-/// with `parallel_sides` its two sides run on two threads, and its rows' summaries may run on
-/// another thread.
+/// with `context.parallel_sides` its two sides run on two threads, and its rows' summaries may
+/// run on another thread; with `context.prefix` the ropes continue from the start of the trip
+/// the scene shares with others of the run.
 pub(super) fn run_duty_cycle(
     design: &Design,
     scene: &Scene,
     cycle: &DutyCycleScene,
     plan: Plan,
     options: Options,
-    parallel_sides: bool,
+    context: SceneContext,
 ) -> Result<(SceneResult, Option<RopeRun>), RunError> {
+    let parallel_sides = context.parallel_sides;
     let err = |source| RunError::Level4 { scene: scene.name.clone(), source };
     let Some(hoist) = &design.hoist else {
         return Err(err(Level4Error::NoHoist));
@@ -78,7 +80,7 @@ pub(super) fn run_duty_cycle(
     let (trip, dynamics, unconfirmed) = if plan.level == Level::Closed0 {
         (rigid_trip().map_err(err)?, None, None)
     } else {
-        let (ropes, rigid) = ropes(design, scene, cycle, &plan, options, parallel_sides, rigid_trip);
+        let (ropes, rigid) = ropes(design, scene, cycle, &plan, options, context, rigid_trip);
         // The rigid ropes' error first, as when they run before the suspended ropes.
         let rigid = rigid.map_err(err)?;
         let (ropes, unconfirmed) = ropes.map_err(err)?;
@@ -135,15 +137,17 @@ fn ropes<R: Send>(
     cycle: &DutyCycleScene,
     plan: &Plan,
     options: Options,
-    parallel_sides: bool,
+    context: SceneContext,
     also: impl FnOnce() -> R + Send,
 ) -> (Result<(RopeRun, Option<pipelined::Unconfirmed>), Level4Error>, R) {
     let Some(hoist) = &design.hoist else { return (Err(Level4Error::NoHoist), also()) };
+    let SceneContext { parallel_sides, prefix } = context;
     let profile = match level4::motion_profile(hoist, cycle) {
-        Ok(profile) if pipelined::applies(design, scene, cycle, plan, parallel_sides) => profile,
+        Ok(profile) if prefix.is_none() && pipelined::applies(design, scene, cycle, plan, parallel_sides) => profile,
         _ => {
             let also = also();
-            return (level4::scene_ropes(design, hoist, cycle, parallel_sides).map(|r| (r, None)), also);
+            let run = level4::scene_ropes_from(design, hoist, cycle, parallel_sides, prefix);
+            return (run.map(|r| (r, None)), also);
         }
     };
     let snapshots_s = valid_snapshots(cycle, profile.duration_s());

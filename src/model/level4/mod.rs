@@ -8,6 +8,7 @@
 //! 1e-3, far below what moves their tensions. The wrap therefore does not feed back into the
 //! suspended ropes, and each side's tension is what its rope column pulls with.
 
+pub mod shared;
 pub mod stop;
 
 use crate::design::{Design, Direction, DutyCycleScene, EmergencyStop, HistorySample, Hoist};
@@ -18,6 +19,7 @@ use crate::dynamics::{
 use crate::model::braking::{self, BrakeError};
 use crate::planner::Level;
 use crate::roots::{self, Holding, RootStats};
+use shared::{RopePlan, RopePrefix};
 use std::cell::RefCell;
 
 /// Name of the dynamic safety factor with the suspended ropes' dynamics (level 4).
@@ -212,16 +214,46 @@ pub fn scene_ropes(
     scene: &DutyCycleScene,
     parallel_sides: bool,
 ) -> Result<RopeRun, Level4Error> {
+    scene_ropes_from(design, hoist, scene, parallel_sides, None)
+}
+
+/// [`scene_ropes`], continuing from `prefix`, the start of the trip this scene shares with
+/// others of the run ([`shared`]): the same run, to the last bit, without integrating that
+/// start again.
+pub fn scene_ropes_from(
+    design: &Design,
+    hoist: &Hoist,
+    scene: &DutyCycleScene,
+    parallel_sides: bool,
+    prefix: Option<&RopePrefix>,
+) -> Result<RopeRun, Level4Error> {
     if let Some(at_s) = scene.brake_stop_s {
         let brake = design.machine.brake.ok_or(Level4Error::NoBrake)?;
         let params = hoist_params(design, hoist, scene);
         let stages = trip_stages(hoist, scene.direction, scene.return_after_s);
-        let mut trips = stop::braked_ropes(design, &params, &stages, &[at_s], scene.time_step_s, &brake)?;
+        let trip = stop::BrakedTrip { stages: &stages, trips_s: &[at_s], time_step_s: scene.time_step_s, from: prefix };
+        let mut trips = stop::braked_ropes(design, &params, trip, &brake)?;
         return Ok(RopeRun { samples: trips.pop().unwrap_or_default(), at_brake: None });
     }
     let keep_at_s = scene.emergency.map(|stop| stop.at_s);
-    let (samples, at_brake) = resumable_ropes(design, hoist, scene, None, keep_at_s, parallel_sides, &mut |_| {})?;
-    Ok(RopeRun { samples, at_brake })
+    let from = prefix.map(RopePrefix::checkpoint);
+    let (samples, at_brake) = resumable_ropes(design, hoist, scene, from, keep_at_s, parallel_sides, &mut |_| {})?;
+    Ok(RopeRun { samples: after_prefix(design, prefix, samples), at_brake })
+}
+
+/// The samples of a run continued from `prefix` (guided, from the checkpoint on) after those of
+/// the prefix, the guide sheave's inertia added to these; a run that did not continue from it
+/// (it started afresh) as it is.
+fn after_prefix(design: &Design, prefix: Option<&RopePrefix>, samples: Vec<DynSample>) -> Vec<DynSample> {
+    let Some(prefix) = prefix.filter(|p| samples.first().is_some_and(|s| s.t_s == p.checkpoint().t_s())) else {
+        return samples;
+    };
+    let before = prefix.samples();
+    let mut out = Vec::with_capacity(before.len() + samples.len());
+    out.extend_from_slice(&before[..before.len() - 1]);
+    stop::with_guide(design, &mut out);
+    out.extend(samples);
+    out
 }
 
 /// [`scene_ropes`] on one thread, handing the samples (the guide sheave's inertia included) to
@@ -259,15 +291,8 @@ fn resumable_ropes(
     parallel_sides: bool,
     sink: &mut dyn FnMut(&[DynSample]),
 ) -> Result<(Vec<DynSample>, Option<Checkpoint>), Level4Error> {
-    let params = hoist_params(design, hoist, scene);
-    let profile = motion_profile(hoist, scene)?;
-    let record_every = ((WRAP_SAMPLE_S / scene.time_step_s).round() as usize).max(1);
-    let options = SimOptions {
-        record_every,
-        energy: false,
-        parallel_sides,
-        ..SimOptions::new(scene.time_step_s, ELEMENTS_PER_SIDE)
-    };
+    let RopePlan { params, profile, options } = RopePlan::of(hoist, design, scene)?;
+    let options = SimOptions { parallel_sides, ..options };
     let (mut samples, cp) = dynamics::simulate_streamed(&params, &profile, &options, from, keep_at_s, sink)?;
     stop::with_guide(design, &mut samples);
     Ok((samples, cp))

@@ -4,6 +4,7 @@
 //! inertia; the onset of gross slip, after which a trip's results are not valid; and what the
 //! stop reached (deceleration, stopping distance, the slip-limited deceleration).
 
+use super::shared::RopePrefix;
 use super::{ELEMENTS_PER_SIDE, Level4Error, WRAP_SAMPLE_S, profile_until};
 use crate::design::{Brake, Design, Direction, HistorySample, Hoist};
 use crate::dynamics::{
@@ -74,18 +75,33 @@ pub fn rigid_braked_kinematics(
     Ok((profile, stop))
 }
 
-/// The level-4 samples of a trip whose brake trips at each of `trips_s` (ascending): the
-/// suspended ropes over the profile up to each trip (one run, continued from trip to trip), then
-/// each stop with the pulley as a body ([`dynamics::braked_stop`]). Returns, per trip, the
-/// samples from the start to standstill, tensions at the friction pulley (guide sheave included).
+/// The trips of [`braked_ropes`]: the stages, the instants the brake trips at (ascending), the
+/// time step, and the start of the trip shared with other scenes to continue from, if any
+/// ([`super::shared`]).
+#[derive(Debug, Clone, Copy)]
+pub struct BrakedTrip<'a> {
+    /// The trip's stages.
+    pub stages: &'a [Stage],
+    /// When the brake trips, ascending (s).
+    pub trips_s: &'a [f64],
+    /// The suspended ropes' time step (s).
+    pub time_step_s: f64,
+    /// The shared start of the trip, before the first trip.
+    pub from: Option<&'a RopePrefix>,
+}
+
+/// The level-4 samples of a trip whose brake trips at each of `trip.trips_s`: the suspended
+/// ropes over the profile up to each trip (one run, continued from trip to trip, and from
+/// `trip.from` when given), then each stop with the pulley as a body
+/// ([`dynamics::braked_stop`]). Returns, per trip, the samples from the start to standstill,
+/// tensions at the friction pulley (guide sheave included).
 pub fn braked_ropes(
     design: &Design,
     params: &HoistParams,
-    stages: &[Stage],
-    trips_s: &[f64],
-    time_step_s: f64,
+    trip: BrakedTrip,
     brake: &Brake,
 ) -> Result<Vec<Vec<DynSample>>, Level4Error> {
+    let BrakedTrip { stages, trips_s, time_step_s, from } = trip;
     let record_every = ((WRAP_SAMPLE_S / time_step_s).round() as usize).max(1);
     let options = SimOptions { record_every, energy: false, ..SimOptions::new(time_step_s, ELEMENTS_PER_SIDE) };
     let force = |tau: f64| braking::brake_force_n(brake, tau);
@@ -96,16 +112,19 @@ pub fn braked_ropes(
         max_stop_s: braking::MAX_STOP_S,
     };
     let mut out = Vec::with_capacity(trips_s.len());
-    let mut before: Vec<DynSample> = Vec::new();
-    let mut checkpoint = None;
+    let mut before: Vec<DynSample> = from.map(|p| p.samples().to_vec()).unwrap_or_default();
+    let mut checkpoint = from.map(|p| p.checkpoint().clone());
     for &at_s in trips_s {
         let profile = profile_until(stages, at_s)?;
         let (samples, cp) =
             dynamics::simulate_resumable(params, &profile, &options, checkpoint.as_ref(), Some(f64::INFINITY))?;
         let cp = cp.ok_or(Level4Error::EmergencyAtRest { at_s })?;
-        // The samples of a continued run start at its checkpoint, which the previous run ended with.
-        let skip = usize::from(checkpoint.is_some());
-        before.extend(samples.into_iter().skip(skip));
+        // The samples of a continued run start at its checkpoint, which the previous run (or
+        // the shared start) ended with; a run that started afresh replaces those.
+        match (checkpoint.as_ref(), samples.first()) {
+            (Some(c), Some(first)) if first.t_s == c.t_s() => before.extend(samples.into_iter().skip(1)),
+            _ => before = samples,
+        }
         let stop = dynamics::braked_stop(params, &options, &cp, profile.end(), &body)?;
         let mut trip = before.clone();
         trip.extend(stop.into_iter().skip(1).map(|mut s| {

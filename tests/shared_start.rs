@@ -1,0 +1,80 @@
+//! Duty cycles of one run that share the start of their trip (the same hoist, time step and
+//! mesh, motion profiles that agree up to an instant) integrate their suspended ropes over that
+//! start once, and each continues from its own last shared step: every result is the one of the
+//! scene run alone, to the last bit, lifting and lowering, for an imposed emergency stop, a
+//! stop by the `[brake]` and a round trip; and the steps saved are exactly those shared.
+
+use std::path::Path;
+use wrapcalc::design::{Design, DutyCycleScene, SceneKind};
+use wrapcalc::model::level4::shared::RopePlan;
+use wrapcalc::run::{self, Options, SceneResult};
+use wrapcalc::{sheet, tally};
+
+fn design() -> Design {
+    sheet::load(Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/tables/guo2020.toml")))
+        .expect("the bundled sheet loads")
+}
+
+fn cycle<'a>(design: &'a Design, name: &str) -> &'a DutyCycleScene {
+    match &design.scenes.iter().find(|s| s.name == name).expect("scene in the bundled sheet").kind {
+        SceneKind::DutyCycle(cycle) => cycle,
+        _ => panic!("{name} is a duty cycle"),
+    }
+}
+
+fn plan(design: &Design, name: &str) -> RopePlan {
+    RopePlan::of(design.hoist.as_ref().expect("a hoist"), design, cycle(design, name)).expect("a plan")
+}
+
+/// The steps are 1 ms and every 5th is recorded. An emergency stop or a brake trip at 30 s
+/// changes the motion at 30 s, step 30 000, so the last shared recorded step is 29 995; the
+/// round trip begins with the whole lift (64.03 s, 64 030 steps), whose last step is the lift's
+/// own, so they share up to 64 025. Another payload or the other direction shares nothing.
+#[test]
+fn trips_fork_at_the_last_recorded_step_before_their_motion_parts() {
+    let d = design();
+    let lift = plan(&d, "duty-MID");
+    assert_eq!(lift.fork_step(&plan(&d, "emergency-MID")), Some(29_995));
+    assert_eq!(plan(&d, "emergency-MID").fork_step(&lift), Some(29_995));
+    assert_eq!(lift.fork_step(&plan(&d, "brake-MID")), Some(29_995));
+    assert_eq!(plan(&d, "round-trip-MID").fork_step(&lift), Some(64_025));
+    assert_eq!(plan(&d, "emergency-MID").fork_step(&plan(&d, "brake-MID")), Some(29_995));
+    // Lowering: the mirrored profile from the top, its emergency stop at 30 s.
+    let lower = plan(&d, "duty-MAX-lower");
+    assert_eq!(lower.fork_step(&plan(&d, "emergency-MAX-lower")), Some(29_995));
+    assert_eq!(lift.fork_step(&plan(&d, "duty-MAX")), None, "another payload");
+    assert_eq!(lift.fork_step(&plan(&d, "duty-MID-lower")), None, "the other direction");
+    assert_eq!(plan(&d, "duty-MAX").fork_step(&lower), None, "the same payload the other way");
+}
+
+/// A scene's result without its run time.
+fn timeless(mut r: SceneResult) -> SceneResult {
+    r.runtime_ms = 0.0;
+    r
+}
+
+#[test]
+fn scenes_sharing_a_start_give_what_each_gives_alone() {
+    // Two threads whatever the machine: six scenes on two threads have no core to spare, and
+    // those that share a start share it.
+    let _ = rayon::ThreadPoolBuilder::new().num_threads(2).build_global();
+    let d = design();
+    let names = ["duty-MID", "emergency-MID", "brake-MID", "round-trip-MID", "duty-MAX-lower", "emergency-MAX-lower"];
+    let scenes: Vec<_> = names.iter().map(|n| d.scenes.iter().find(|s| s.name == *n).expect("in the sheet")).collect();
+    let options = Options { nodes: 90, utilization_map: false, ..Options::default() };
+    let before = tally::increments();
+    let together = run::run(&d, &scenes, options).expect("runs").scenes;
+    let shared = tally::increments() - before;
+    let before = tally::increments();
+    let alone: Vec<SceneResult> =
+        scenes.iter().map(|s| run::run(&d, &[*s], options).expect("runs").scenes.remove(0)).collect();
+    let separate = tally::increments() - before;
+    for (name, (a, b)) in names.iter().zip(together.into_iter().zip(alone)) {
+        assert_eq!(timeless(a), timeless(b), "{name}");
+    }
+    // Integrated once instead of once per scene: the MID lift's start up to 64 025 (the lift,
+    // the round trip) and 29 995 (the emergency stop, the brake trip); the lowering MAX trip's
+    // up to 29 995 (itself, its emergency stop). The wrap's increments are the same either way.
+    let saved = (64_025 + 64_025 + 29_995 + 29_995 - 64_025) + (29_995 + 29_995 - 29_995);
+    assert_eq!(separate - shared, saved);
+}
