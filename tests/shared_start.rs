@@ -23,7 +23,7 @@ fn cycle<'a>(design: &'a Design, name: &str) -> &'a DutyCycleScene {
 }
 
 fn plan(design: &Design, name: &str) -> RopePlan {
-    RopePlan::of(design.hoist.as_ref().expect("a hoist"), design, cycle(design, name)).expect("a plan")
+    RopePlan::of(design, design.hoist.as_ref().expect("a hoist"), cycle(design, name)).expect("a plan")
 }
 
 /// The steps are 1 ms and every 5th is recorded. An emergency stop or a brake trip at 30 s

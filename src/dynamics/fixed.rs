@@ -55,7 +55,7 @@ pub(super) fn sweep<const N: usize, const K: usize>(sides: [(&mut SideState, &Co
         inv[N - 1][k] = 1.0 / (p.last - p.off * factor[N - 2][k]);
         factor[N - 1][k] = p.off * inv[N - 1][k];
     }
-    // Forward: the eliminated right-hand sides (kept in `y`'s row once it is no longer read).
+    // Forward: the eliminated right-hand sides.
     let mut r = [0.0; K];
     let mut rhs = [[0.0; K]; N];
     for i in 0..N {

@@ -56,5 +56,5 @@ fn rope_plan(design: &Design, scene: &Scene, options: Options) -> Option<RopePla
     let SceneKind::DutyCycle(cycle) = &scene.kind else { return None };
     let plan = planner::plan_with_lining(scene, options.request, design.lining.is_some()).ok()?;
     (plan.level != Level::Closed0).then_some(())?;
-    RopePlan::of(design.hoist.as_ref()?, design, cycle).ok()
+    RopePlan::of(design, design.hoist.as_ref()?, cycle).ok()
 }

@@ -291,7 +291,7 @@ fn resumable_ropes(
     parallel_sides: bool,
     sink: &mut dyn FnMut(&[DynSample]),
 ) -> Result<(Vec<DynSample>, Option<Checkpoint>), Level4Error> {
-    let RopePlan { params, profile, options } = RopePlan::of(hoist, design, scene)?;
+    let RopePlan { params, profile, options } = RopePlan::of(design, hoist, scene)?;
     let options = SimOptions { parallel_sides, ..options };
     let (mut samples, cp) = dynamics::simulate_streamed(&params, &profile, &options, from, keep_at_s, sink)?;
     stop::with_guide(design, &mut samples);

@@ -27,7 +27,7 @@ pub struct RopePlan {
 
 impl RopePlan {
     /// The plan of a duty-cycle scene.
-    pub fn of(hoist: &Hoist, design: &Design, scene: &DutyCycleScene) -> Result<Self, Level4Error> {
+    pub fn of(design: &Design, hoist: &Hoist, scene: &DutyCycleScene) -> Result<Self, Level4Error> {
         let record_every = ((WRAP_SAMPLE_S / scene.time_step_s).round() as usize).max(1);
         Ok(Self {
             params: hoist_params(design, hoist, scene),
