@@ -375,8 +375,14 @@ fn run_shared(
         Task::Start(g) => {
             let group = &groups[g];
             let forks: Vec<usize> = group.members.iter().map(|(_, k)| *k).collect();
-            // A start that cannot be integrated leaves each scene to run (and fail) on its own.
-            let mut prefixes = level4::shared::prefixes(&group.leader, &forks).unwrap_or_default().into_iter();
+            // A start that cannot be integrated leaves each scene to run (and fail) on its own;
+            // after a failure, when no scene starts, it is not integrated.
+            let prefixes = if failed.load(Ordering::Relaxed) {
+                Vec::new()
+            } else {
+                level4::shared::prefixes(&group.leader, &forks).unwrap_or_default()
+            };
+            let mut prefixes = prefixes.into_iter();
             for (i, _) in &group.members {
                 push(estimates[*i].seconds, Task::Scene(*i, prefixes.next().flatten()));
             }
