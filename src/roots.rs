@@ -318,6 +318,13 @@ pub const HOLDING_REL_TOL: f64 = 1e-13;
 /// Largest x in `[lo, hi]` from which `h` (≥ 0: holds) still holds, as the root of h by
 /// [`brent`] to [`HOLDING_REL_TOL`] of the range in x.
 pub fn largest_holding(h: impl Fn(f64) -> f64, lo: f64, hi: f64, stats: &mut RootStats) -> Holding {
+    largest_holding_to(h, lo, hi, HOLDING_REL_TOL, stats)
+}
+
+/// [`largest_holding`] to `rel_tol` of the range in x: for a criterion each evaluation of
+/// which is costly (a simulation), where the last iterations of Brent's method, each one
+/// evaluation, would refine the root far below the accuracy of the criterion itself.
+pub fn largest_holding_to(h: impl Fn(f64) -> f64, lo: f64, hi: f64, rel_tol: f64, stats: &mut RootStats) -> Holding {
     let (h_lo, h_hi) = (h(lo), h(hi));
     if !(h_lo.is_finite() && h_hi.is_finite()) {
         return Holding::NotFinite;
@@ -328,7 +335,7 @@ pub fn largest_holding(h: impl Fn(f64) -> f64, lo: f64, hi: f64, stats: &mut Roo
     if h_hi >= 0.0 {
         return Holding::Throughout;
     }
-    match brent(&h, lo, hi, HOLDING_REL_TOL * (hi - lo), stats) {
+    match brent(&h, lo, hi, rel_tol * (hi - lo), stats) {
         Ok(x) => Holding::Until(x),
         Err(RootError::NoBracket { .. }) => Holding::Throughout,
         Err(e) => Holding::Failed(e),

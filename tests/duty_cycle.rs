@@ -169,7 +169,7 @@ fn anchor_tensions_match_the_papers_ranges_and_trends() {
 
 /// The emergency-braking margin found by root finding over the ropes' dynamics is the edge of
 /// gross slip: the same stop 0.5 % gentler holds and 0.5 % harder slips (Brent converges to
-/// ~1e-12 m/s², far inside that band, and the worst ratio grows smoothly with the deceleration).
+/// ~1e-7 m/s², far inside that band, and the worst ratio grows smoothly with the deceleration).
 /// It lies between the sheet's 1.5 m/s², which holds, and 3 m/s², which slips (its comment).
 #[test]
 fn emergency_braking_margin_is_the_edge_of_gross_slip() {

@@ -1,12 +1,18 @@
 //! The emergency-braking margins of a duty cycle with the ropes' dynamics: each trial
 //! deceleration runs the scene's suspended ropes (level 4's [`StopTrials`]).
 
-use super::{Margin, largest_holding, sf_residual, slip_residual};
+use super::{Margin, largest_holding_to, sf_residual, slip_residual};
 use crate::design::Design;
 use crate::dynamics::DynSample;
 use crate::model::level0::{EndState, euler_limit};
 use crate::model::level4::StopTrials;
 use crate::roots::RootStats;
+
+/// Relative x-tolerance of the emergency margins' searches (over the range's width, about
+/// 9e-8 m/s² on [d₀/2, 0.999 g]): each evaluation is a run of the ropes through the stop, and
+/// this is far below what the ropes' time step resolves (1 ms: about 1e-5 of the tensions), so
+/// the refinement [`crate::roots::HOLDING_REL_TOL`] would add, one run per margin, is not made.
+pub const TRIAL_REL_TOL: f64 = 1e-8;
 
 /// The largest emergency deceleration of a duty-cycle scene with an emergency stop before gross
 /// slip, and before the dynamic safety factor falls to `dynamic_safety_factor_min`, with the
@@ -15,9 +21,9 @@ use crate::roots::RootStats;
 ///
 /// `h_slip(d) = min_t [(T_lo − m'v²)·e^{μα} − (T_hi − m'v²)]`, `h_σ(d) = min_t [(T_lo − m'v²)(e^{μα} − 1) − σ_min(T_hi − T_lo)]`,
 ///
-/// whose roots in d (Brent, on [d₀/2, 0.999 g], d₀ the scene's own deceleration: a much gentler
-/// brake would run the conveyance past the end of the shaft) are the margins, to slip and to
-/// the safety factor. A trial that cannot run (e.g. a hanging length reaching 0 during a long
+/// whose roots in d (Brent to [`TRIAL_REL_TOL`], on [d₀/2, 0.999 g], d₀ the scene's own
+/// deceleration: a much gentler brake would run the conveyance past the end of the shaft) are
+/// the margins, to slip and to the safety factor. A trial that cannot run (e.g. a hanging length reaching 0 during a long
 /// stop) is a failure of that margin's search, reported as its verdict.
 pub fn emergency(design: &Design, trials: &StopTrials, stats: &mut RootStats) -> (Margin, Margin) {
     let limit = euler_limit(design.pulley.mu, design.pulley.wrap_angle_rad);
@@ -34,7 +40,7 @@ pub fn emergency(design: &Design, trials: &StopTrials, stats: &mut RootStats) ->
     let sf = |s: &DynSample| sf_residual(&state(s), limit, sf_min);
     let (slip_before, sf_before) = (trials.worst_before(&slip), trials.worst_before(&sf));
     let (lo, hi) = (0.5 * trials.decel_m_s2(), 0.999 * design.g_m_s2);
-    let to_slip = largest_holding(|d| trials.worst(d, &slip, slip_before), lo, hi, stats);
-    let to_sf = largest_holding(|d| trials.worst(d, &sf, sf_before), lo, hi, stats);
+    let to_slip = largest_holding_to(|d| trials.worst(d, &slip, slip_before), lo, hi, TRIAL_REL_TOL, stats);
+    let to_sf = largest_holding_to(|d| trials.worst(d, &sf, sf_before), lo, hi, TRIAL_REL_TOL, stats);
     (to_slip, to_sf)
 }

@@ -123,8 +123,13 @@ pub struct Margins {
 
 /// Largest x in [lo, hi] from which the criterion `h` (≥ 0: holds) still holds, as the root of h.
 pub fn largest_holding(h: impl Fn(f64) -> f64, lo: f64, hi: f64, stats: &mut RootStats) -> Margin {
+    largest_holding_to(h, lo, hi, roots::HOLDING_REL_TOL, stats)
+}
+
+/// [`largest_holding`] to `rel_tol` of the range ([`roots::largest_holding_to`]).
+pub fn largest_holding_to(h: impl Fn(f64) -> f64, lo: f64, hi: f64, rel_tol: f64, stats: &mut RootStats) -> Margin {
     let searched = [lo, hi];
-    let (value, verdict) = match roots::largest_holding(h, lo, hi, stats) {
+    let (value, verdict) = match roots::largest_holding_to(h, lo, hi, rel_tol, stats) {
         Holding::Until(x) => (Some(x), MarginVerdict::Found),
         Holding::Throughout => (None, MarginVerdict::NoSlipInRange),
         Holding::NotAtStart => (None, MarginVerdict::AlreadyBeyond),

@@ -19,7 +19,7 @@ pub fn write(x: f64, out: &mut String) {
     }
     let mut buffer = ryu::Buffer::new();
     let text = buffer.format_finite(x);
-    if let Some(plain) = plain(text) {
+    if let Some(plain) = plain(text, x) {
         out.push_str(plain);
         return;
     }
@@ -77,8 +77,9 @@ pub fn write(x: f64, out: &mut String) {
 
 /// `ryu`'s text where it is already the standard library's: no exponent, its `.0` dropped, and
 /// too few digits for a tie between two shortest candidates (below fifteen, or an odd last
-/// digit); `None` sends the value through the general path.
-fn plain(text: &str) -> Option<&str> {
+/// digit, or a value that cannot be a midpoint at all, [`may_tie`]); `None` sends the value
+/// through the general path.
+fn plain(text: &str, x: f64) -> Option<&str> {
     let bytes = text.as_bytes();
     if bytes.contains(&b'e') {
         return None;
@@ -88,7 +89,18 @@ fn plain(text: &str) -> Option<&str> {
     let leading = digits.clone().take_while(|&d| d == b'0').count();
     let significant = digits.count() - leading;
     let even_last = text.bytes().last().is_some_and(|d| matches!(d, b'0' | b'2' | b'4' | b'6' | b'8'));
-    (significant < 15 || !even_last).then_some(text)
+    (significant < 15 || !even_last || !may_tie(x)).then_some(text)
+}
+
+/// Whether `x` can be a midpoint `(D + ½)·10^q` at all (the necessary condition of
+/// [`midpoint_above`] that needs no digits): with `|x| = m·2^e`, `m` odd, a midpoint needs
+/// `q = e + 1` and `|q| ≤ 25`. Most values of the reports (seventeen digits, a last place near
+/// 1e-11) have `e` near −36 and cannot be one.
+fn may_tie(x: f64) -> bool {
+    let bits = x.abs().to_bits();
+    let (exp_bits, fraction) = ((bits >> 52) as i32, bits & ((1u64 << 52) - 1));
+    let (m, e) = if exp_bits == 0 { (fraction, -1074) } else { (fraction | (1u64 << 52), exp_bits - 1075) };
+    m != 0 && (e + m.trailing_zeros() as i32 + 1).unsigned_abs() <= 25
 }
 
 /// Whether `|x|` is exactly `(D + ½)·10^q`, `D` the integer of `digits`: the midpoint between

@@ -176,14 +176,20 @@ impl Profile {
                 self.beside.push_front(Beside::default());
             }
         } else {
-            let tail: Vec<Piece> = self.pieces.drain(to..).collect();
-            let tail_beside: Vec<Beside> = self.beside.drain(to..).collect();
-            self.pieces.truncate(from);
-            self.beside.truncate(from);
-            self.pieces.extend(material);
-            self.beside.extend(items.iter().map(|_| Beside::default()));
-            self.pieces.extend(tail);
-            self.beside.extend(tail_beside);
+            // Elsewhere: overwrite in place, then insert or remove the difference, which moves
+            // only the shorter side of the deque.
+            let kept = (to - from).min(items.len());
+            for (k, p) in material.enumerate() {
+                if k < kept {
+                    self.pieces[from + k] = p;
+                    self.beside[from + k] = Beside::default();
+                } else {
+                    self.pieces.insert(from + k, p);
+                    self.beside.insert(from + k, Beside::default());
+                }
+            }
+            self.pieces.drain(from + kept..to);
+            self.beside.drain(from + kept..to);
         }
     }
 
