@@ -19,12 +19,14 @@ pub const TRIAL_REL_TOL: f64 = 1e-8;
 /// ropes' dynamics: each trial deceleration d runs the scene's suspended ropes (`trials`) and
 /// takes the worst sample of the run,
 ///
-/// `h_slip(d) = min_t [(T_lo − m'v²)·e^{μα} − (T_hi − m'v²)]`, `h_σ(d) = min_t [(T_lo − m'v²)(e^{μα} − 1) − σ_min(T_hi − T_lo)]`,
+/// - `h_slip(d) = min_t [(T_lo − m'v²)·e^{μα} − (T_hi − m'v²)]`,
+/// - `h_σ(d) = min_t [(T_lo − m'v²)(e^{μα} − 1) − σ_min(T_hi − T_lo)]`,
 ///
 /// whose roots in d (Brent to [`TRIAL_REL_TOL`], on [d₀/2, 0.999 g], d₀ the scene's own
 /// deceleration: a much gentler brake would run the conveyance past the end of the shaft) are
-/// the margins, to slip and to the safety factor. A trial that cannot run (e.g. a hanging length reaching 0 during a long
-/// stop) is a failure of that margin's search, reported as its verdict.
+/// the margins, to slip and to the safety factor. A trial that cannot run (e.g. a hanging
+/// length reaching 0 during a long stop) is a failure of that margin's search, reported as its
+/// verdict.
 pub fn emergency(design: &Design, trials: &StopTrials, stats: &mut RootStats) -> (Margin, Margin) {
     let limit = euler_limit(design.pulley.mu, design.pulley.wrap_angle_rad);
     let m_v2 = design.rope.mass_per_m_kg;

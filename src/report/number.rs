@@ -97,10 +97,15 @@ fn plain(text: &str, x: f64) -> Option<&str> {
 /// `q = e + 1` and `|q| ≤ 25`. Most values of the reports (seventeen digits, a last place near
 /// 1e-11) have `e` near −36 and cannot be one.
 fn may_tie(x: f64) -> bool {
+    odd_binary(x).is_some_and(|(_, e)| (e + 1).unsigned_abs() <= 25)
+}
+
+/// `|x| = m·2^e` with `m` odd, for a finite nonzero `x` (`None` for zero).
+fn odd_binary(x: f64) -> Option<(u64, i32)> {
     let bits = x.abs().to_bits();
     let (exp_bits, fraction) = ((bits >> 52) as i32, bits & ((1u64 << 52) - 1));
     let (m, e) = if exp_bits == 0 { (fraction, -1074) } else { (fraction | (1u64 << 52), exp_bits - 1075) };
-    m != 0 && (e + m.trailing_zeros() as i32 + 1).unsigned_abs() <= 25
+    (m != 0).then(|| (m >> m.trailing_zeros(), e + m.trailing_zeros() as i32))
 }
 
 /// Whether `|x|` is exactly `(D + ½)·10^q`, `D` the integer of `digits`: the midpoint between
@@ -109,15 +114,7 @@ fn may_tie(x: f64) -> bool {
 /// `m = (2D + 1)·5^q` for `q > 0`). `D < 10^17`, so powers of 5 beyond 5^25 cannot match.
 fn midpoint_above(x: f64, digits: &str, q: i32) -> bool {
     let Ok(d) = digits.parse::<u64>() else { return false };
-    let bits = x.abs().to_bits();
-    let (exp_bits, fraction) = ((bits >> 52) as i32, bits & ((1u64 << 52) - 1));
-    let (mut m, mut e) = if exp_bits == 0 { (fraction, -1074) } else { (fraction | (1u64 << 52), exp_bits - 1075) };
-    if m == 0 {
-        return false;
-    }
-    let zeros = m.trailing_zeros();
-    m >>= zeros;
-    e += zeros as i32;
+    let Some((m, e)) = odd_binary(x) else { return false };
     if q != e + 1 || q.unsigned_abs() > 25 {
         return false;
     }
