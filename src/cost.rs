@@ -29,6 +29,8 @@ pub const DEFAULT_LIMIT_S: u64 = 600;
 
 /// Cost per rope element-step of the suspended ropes (trapezoidal rule, tridiagonal solve), ns.
 pub const ROPE_NS: f64 = 25.0;
+/// The part of a duty cycle's estimate its suspended ropes take.
+pub const SUSPENDED_ROPES: &str = "suspended ropes (level 4)";
 /// Cost per segment-increment at level 3 with the fast path (a tridiagonal solve), ns.
 pub const LEVEL3_FAST_NS: f64 = 100.0;
 /// Cost per segment-increment at level 3 with clarabel on every increment, ns.
@@ -107,6 +109,14 @@ impl Estimate {
     fn with_rows(level: Level, parts: Vec<Part>, drivers: Vec<String>, rows: f64) -> Self {
         let seconds = parts.iter().map(|p| p.seconds).sum();
         Self { level, parts, drivers, seconds, rows, memory_bytes: rows * ROW_BYTES }
+    }
+
+    /// The estimate of a scene whose suspended ropes continue from a start it shares with
+    /// other scenes of the run, `shared_fraction` of their steps integrated once for all of them
+    /// (s): what remains of its own work, by which a run orders its scenes.
+    pub fn seconds_after_shared_start(&self, shared_fraction: f64) -> f64 {
+        let ropes: f64 = self.parts.iter().filter(|p| p.what == SUSPENDED_ROPES).map(|p| p.seconds).sum();
+        self.seconds - shared_fraction.clamp(0.0, 1.0) * ropes
     }
 
     /// The parts as one line: "suspended ropes (level 4): 3.1e6 rope element-steps (…); …".
@@ -292,7 +302,7 @@ fn duty_cycle(
     let element_steps = |t_s: f64| 2.0 * level4::ELEMENTS_PER_SIDE as f64 * (t_s / cycle.time_step_s).ceil();
     let steps = (duration_s / cycle.time_step_s).ceil();
     let mut parts = vec![part(
-        "suspended ropes (level 4)",
+        SUSPENDED_ROPES,
         element_steps(duration_s),
         "rope element-steps",
         format!("2 sides × {} elements × {steps:.0} steps of time_step_s", level4::ELEMENTS_PER_SIDE),

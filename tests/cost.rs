@@ -84,6 +84,25 @@ fn level4_estimate_is_rope_elements_times_the_steps_taken() {
     assert_eq!(e.level, wrapcalc::planner::Level::Dynamic4);
 }
 
+/// A scene whose ropes continue from a start shared with other scenes costs, for the order a
+/// run takes its scenes in, what remains of its own work: the full estimate with nothing shared,
+/// the estimate less its ropes' part (2 × 12 elements × 64 030 steps × 25 ns = 38.4 ms) with all
+/// of them shared, half of that part off with half, and a fraction outside [0, 1] taken as the
+/// nearer end.
+#[test]
+fn a_shared_start_takes_its_share_of_the_ropes_off_the_estimate() {
+    let design = duty_mid(1e-3);
+    let e = estimate_of(&design, "duty-MID", Options::default());
+    let ropes_s = 24.0 * 64_030.0 * 25e-9;
+    let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * b.abs();
+    assert!(close(e.seconds_after_shared_start(0.0), e.seconds), "{e:?}");
+    assert!(close(e.seconds_after_shared_start(1.0), e.seconds - ropes_s), "{e:?}");
+    assert!(close(e.seconds_after_shared_start(0.5), e.seconds - 0.5 * ropes_s), "{e:?}");
+    assert!(close(e.seconds_after_shared_start(2.0), e.seconds - ropes_s), "{e:?}");
+    assert!(close(e.seconds_after_shared_start(-1.0), e.seconds), "{e:?}");
+    assert!(e.seconds_after_shared_start(1.0) > 0.0, "the wrap's work remains: {e:?}");
+}
+
 /// Level 3's measure is segments × increments. Its count of the increments agrees with what
 /// the model reports having taken (summary `solver.increments`), within 20 % (the estimate
 /// rounds travel per interval, the model per pitch of the lattice), plus the 1.5 wrap lengths

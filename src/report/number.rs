@@ -1,8 +1,9 @@
 //! Numbers in the CSV reports, written as Rust's `Display` writes an `f64` (the shortest digits
-//! that read back to the same value, never in exponent notation), by way of the `ryu` crate's
-//! shortest digits: the same text at a fraction of the cost, which matters for the hundreds of
-//! thousands of values a sheet's histories write. The two differ only where two shortest
-//! candidates are equally near the value, which is then written as the standard library does.
+//! that read back to the same value, never in exponent notation), by way of the `zmij` crate's
+//! shortest digits (Schubfach, correctly rounded): the same text at a fraction of the cost,
+//! which matters for the hundreds of thousands of values a sheet's histories write. Where two
+//! shortest candidates are equally near the value the value is written as the standard library
+//! writes it, whichever of the two the digits came as.
 
 /// `x` as `format!("{x}")` writes it: `NaN`, `inf`, `-inf`, `-0`, `0.001`, `1000`, `1.5`.
 pub fn display(x: f64) -> String {
@@ -17,7 +18,7 @@ pub fn write(x: f64, out: &mut String) {
         out.push_str(&x.to_string());
         return;
     }
-    let mut buffer = ryu::Buffer::new();
+    let mut buffer = zmij::Buffer::new();
     let text = buffer.format_finite(x);
     if let Some(plain) = plain(text, x) {
         out.push_str(plain);
@@ -49,8 +50,8 @@ pub fn write(x: f64, out: &mut String) {
         return;
     }
     let n = digits.len() as i32;
-    // Two shortest candidates can lie equally near the value: `ryu` then takes the even last
-    // digit and the standard library the one away from zero.
+    // Two shortest candidates can lie equally near the value: the standard library takes the
+    // one away from zero; digits that came as the even one of the two are moved to it.
     let rounded_up;
     // A tie needs a last place finer than the value's ulp: fifteen digits or more.
     let digits =
@@ -75,7 +76,7 @@ pub fn write(x: f64, out: &mut String) {
     }
 }
 
-/// `ryu`'s text where it is already the standard library's: no exponent, its `.0` dropped, and
+/// The shortest digits' text where it is already the standard library's: no exponent, its `.0` dropped, and
 /// too few digits for a tie between two shortest candidates (below fifteen, or an odd last
 /// digit, or a value that cannot be a midpoint at all, [`may_tie`]); `None` sends the value
 /// through the general path.

@@ -365,7 +365,7 @@ fn run_shared(
         Start(usize),
         Scene(usize, Option<RopePrefix>),
     }
-    let grouped: Vec<usize> = groups.iter().flat_map(|g| g.members.iter().map(|(i, _)| *i)).collect();
+    let grouped: Vec<usize> = groups.iter().flat_map(|g| g.members.iter().map(|m| m.index)).collect();
     let mut initial: Vec<(f64, Task)> = (0..groups.len()).map(|g| (f64::INFINITY, Task::Start(g))).collect();
     initial.extend(
         (0..estimates.len()).filter(|i| !grouped.contains(i)).map(|i| (estimates[i].seconds, Task::Scene(i, None))),
@@ -374,7 +374,7 @@ fn run_shared(
     schedule::run(initial, rayon::current_num_threads(), |task, push| match task {
         Task::Start(g) => {
             let group = &groups[g];
-            let forks: Vec<usize> = group.members.iter().map(|(_, k)| *k).collect();
+            let forks: Vec<usize> = group.members.iter().map(|m| m.fork_step).collect();
             // A start that cannot be integrated leaves each scene to run (and fail) on its own;
             // after a failure, when no scene starts, it is not integrated.
             let prefixes = if failed.load(Ordering::Relaxed) {
@@ -383,8 +383,11 @@ fn run_shared(
                 level4::shared::prefixes(&group.leader, &forks).unwrap_or_default()
             };
             let mut prefixes = prefixes.into_iter();
-            for (i, _) in &group.members {
-                push(estimates[*i].seconds, Task::Scene(*i, prefixes.next().flatten()));
+            // A member costs what it does beyond the shared start: the cheapest run last.
+            for m in &group.members {
+                let prefix = prefixes.next().flatten();
+                let shared = if prefix.is_some() { m.shared_fraction } else { 0.0 };
+                push(estimates[m.index].seconds_after_shared_start(shared), Task::Scene(m.index, prefix));
             }
         }
         Task::Scene(i, prefix) => {

@@ -17,9 +17,20 @@ use crate::planner::{self, Level};
 pub(super) struct Group {
     /// The leader's ropes: the start is integrated along them.
     pub leader: RopePlan,
-    /// Each member (the leader too) as its index among the run's scenes and the step it
-    /// continues from.
-    pub members: Vec<(usize, usize)>,
+    /// Each member (the leader too).
+    pub members: Vec<Member>,
+}
+
+/// A scene of a [`Group`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct Member {
+    /// Its index among the run's scenes.
+    pub index: usize,
+    /// The step it continues from.
+    pub fork_step: usize,
+    /// The share of its own steps integrated once for the group (`fork_step` over its steps):
+    /// the rest of its ropes' work is its own.
+    pub shared_fraction: f64,
 }
 
 /// The groups of `scenes`; a scene in none runs alone.
@@ -37,14 +48,15 @@ pub(super) fn groups(design: &Design, scenes: &[&Scene], options: Options) -> Ve
         let mut members = Vec::new();
         candidates.retain(|(i, plan)| match leader.fork_step(plan) {
             Some(k) => {
-                members.push((*i, k));
+                members.push(Member { index: *i, fork_step: k, shared_fraction: k as f64 / plan.steps() as f64 });
                 false
             }
             None => true,
         });
-        if let Some(last) = members.iter().map(|(_, k)| *k).max() {
-            members.push((leader_index, last));
-            members.sort_unstable();
+        if let Some(last) = members.iter().map(|m| m.fork_step).max() {
+            let shared_fraction = last as f64 / leader.steps() as f64;
+            members.push(Member { index: leader_index, fork_step: last, shared_fraction });
+            members.sort_unstable_by_key(|m| m.index);
             out.push(Group { leader, members });
         }
     }

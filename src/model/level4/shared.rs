@@ -41,7 +41,7 @@ impl RopePlan {
     }
 
     /// Steps of the whole run (the last shortened to end at the profile's end).
-    fn steps(&self) -> usize {
+    pub fn steps(&self) -> usize {
         (self.profile.duration_s() / self.options.dt_s).ceil() as usize
     }
 
