@@ -42,18 +42,16 @@ pub const DISTRIBUTION_HEADER: [&str; 9] = [
 
 /// distribution.csv: one block of rows per reported time.
 pub fn write_distribution<W: Write>(out: W, blocks: &[&Distribution]) -> csv::Result<()> {
-    let mut w = writer(out);
-    w.write_record(DISTRIBUTION_HEADER)?;
-    let mut row = Row::default();
+    let mut row = Rows::new(out);
+    row.header(&DISTRIBUTION_HEADER)?;
     for d in blocks {
         for s in &d.samples {
             row.num(d.t_s).num(s.theta_deg).num(s.tension_n).num(s.normal_n_per_rad).num(s.friction_n_per_rad);
             row.num(s.utilization).text(s.state.as_str()).opt(s.slip_velocity_m_s).flag(s.sliding());
-            row.write(&mut w)?;
+            row.end()?;
         }
     }
-    w.flush()?;
-    Ok(())
+    row.finish()
 }
 
 /// history.csv: one row per reported time (docs/interface.md's columns), then the extension columns
@@ -65,25 +63,23 @@ pub fn write_history<W: Write>(
     anchors_n: &[[f64; 2]],
     midpoints_n: &[[f64; 2]],
 ) -> csv::Result<()> {
-    let mut w = writer(out);
-    w.write_record(HISTORY_COLUMNS.map(|(name, _)| name))?;
-    let mut row = Row::default();
+    let mut row = Rows::new(out);
+    row.header(&HISTORY_COLUMNS.map(|(name, _)| name))?;
     for (i, r) in rows.iter().enumerate() {
         let anchors = anchors_n.get(i);
         let mids = midpoints_n.get(i);
         row.num(r.t_s).num(r.t1_n).num(r.t2_n).num(r.speed_m_s).num(r.accel_m_s2).opt(r.jdp_deg);
         row.num(r.positive_arc_deg).num(r.reverse_arc_deg).num(r.max_utilization).opt(r.safety_factor);
         row.flag(r.gross_slip).opt(anchors.map(|a| a[0])).opt(anchors.map(|a| a[1]));
-        row.opt(mids.map(|a| a[0])).opt(mids.map(|a| a[1])).write(&mut w)?;
+        row.opt(mids.map(|a| a[0])).opt(mids.map(|a| a[1])).end()?;
     }
-    w.flush()?;
-    Ok(())
+    row.finish()
 }
 
 /// track.csv: one row per element and reported time while the element is on the pulley.
 pub fn write_tracks<W: Write>(out: W, tracks: &[crate::model::track::Track]) -> csv::Result<()> {
-    let mut w = writer(out);
-    w.write_record([
+    let mut row = Rows::new(out);
+    row.header(&[
         "element",
         "t_s",
         "theta_deg",
@@ -96,32 +92,42 @@ pub fn write_tracks<W: Write>(out: W, tracks: &[crate::model::track::Track]) -> 
         "friction_force_n",
         "impulse_n_s",
     ])?;
-    let mut row = Row::default();
     for track in tracks {
         for r in &track.rows {
             row.text(&track.label).num(r.t_s).num(r.theta_deg).num(r.tension_n).num(r.normal_n_per_rad);
             row.num(r.friction_n_per_rad).num(r.utilization).text(r.state.as_str()).num(r.contact_force_n);
-            row.num(r.friction_force_n).num(r.impulse_n_s).write(&mut w)?;
+            row.num(r.friction_force_n).num(r.impulse_n_s).end()?;
         }
     }
-    w.flush()?;
-    Ok(())
+    row.finish()
 }
 
-/// A row of a CSV report built field by field into one reused record: numbers are written as
-/// [`number::display`] writes them, without an allocation per field.
-#[derive(Default)]
-struct Row {
-    record: csv::ByteRecord,
-    scratch: String,
+/// The rows of a CSV report written straight into a buffer of [`BUFFER_BYTES`], field by
+/// field, as the `csv` crate writes them: fields separated by `,`, rows ended by `\n`, a text
+/// field quoted (its quotes doubled) only where it holds `,`, `"`, `\r` or `\n`, numbers as
+/// [`number::display`] writes them (never quoted: digits, `.`, `-`, `inf`, `NaN`).
+struct Rows<W: Write> {
+    out: std::io::BufWriter<W>,
+    line: Vec<u8>,
+    fields: usize,
 }
 
-impl Row {
+impl<W: Write> Rows<W> {
+    fn new(out: W) -> Self {
+        Self { out: std::io::BufWriter::with_capacity(BUFFER_BYTES, out), line: Vec::with_capacity(256), fields: 0 }
+    }
+
+    fn separate(&mut self) {
+        if self.fields > 0 {
+            self.line.push(b',');
+        }
+        self.fields += 1;
+    }
+
     /// A number.
     fn num(&mut self, x: f64) -> &mut Self {
-        self.scratch.clear();
-        number::write(x, &mut self.scratch);
-        self.record.push_field(self.scratch.as_bytes());
+        self.separate();
+        number::write(x, &mut self.line);
         self
     }
 
@@ -138,16 +144,79 @@ impl Row {
         self.text(if b { "true" } else { "false" })
     }
 
-    /// A text field (quoted by the writer where it needs it).
+    /// A text field, quoted where it needs it.
     fn text(&mut self, s: &str) -> &mut Self {
-        self.record.push_field(s.as_bytes());
+        self.separate();
+        if s.bytes().any(|b| matches!(b, b',' | b'"' | b'\r' | b'\n')) {
+            self.line.push(b'"');
+            for b in s.bytes() {
+                if b == b'"' {
+                    self.line.push(b'"');
+                }
+                self.line.push(b);
+            }
+            self.line.push(b'"');
+        } else {
+            self.line.extend_from_slice(s.as_bytes());
+        }
         self
     }
 
-    /// Writes the row and starts the next.
-    fn write<W: Write>(&mut self, w: &mut csv::Writer<W>) -> csv::Result<()> {
-        w.write_byte_record(&self.record)?;
-        self.record.clear();
+    /// A row of text fields (a header).
+    fn header(&mut self, names: &[&str]) -> csv::Result<()> {
+        for name in names {
+            self.text(name);
+        }
+        self.end()
+    }
+
+    /// Ends the row (a row of one empty field is written `""`, as the `csv` crate does, so
+    /// that it reads back as a row).
+    fn end(&mut self) -> csv::Result<()> {
+        if self.fields == 1 && self.line.is_empty() {
+            self.line.extend_from_slice(b"\"\"");
+        }
+        self.line.push(b'\n');
+        self.out.write_all(&self.line)?;
+        self.line.clear();
+        self.fields = 0;
         Ok(())
+    }
+
+    fn finish(mut self) -> csv::Result<()> {
+        self.out.flush()?;
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Rows;
+
+    /// The rows are written byte for byte as the `csv` crate writes the same records: plain
+    /// fields as they are, text holding a delimiter, a quote or a line break quoted with its
+    /// quotes doubled, empty fields empty, numbers as the standard library displays them.
+    #[test]
+    fn rows_are_written_as_the_csv_crate_writes_them() {
+        let texts = ["stick", "", "a,b", "say \"hi\"", "two\nlines", "cr\rhere", "plain-name_1.2"];
+        let numbers = [0.0, -0.0, 1.5, -207670.75386600045, 1e-7, 1e21, f64::NAN, f64::INFINITY];
+        let mut ours = Vec::new();
+        let mut rows = Rows::new(&mut ours);
+        rows.header(&["t_s", "name", "value", "flag"]).expect("header");
+        for (i, t) in texts.iter().enumerate() {
+            rows.num(numbers[i % numbers.len()]).text(t).opt((i % 2 == 0).then_some(0.25)).flag(i % 3 == 0);
+            rows.end().expect("row");
+        }
+        rows.finish().expect("flush");
+        let mut theirs = csv::Writer::from_writer(Vec::new());
+        theirs.write_record(["t_s", "name", "value", "flag"]).expect("header");
+        for (i, t) in texts.iter().enumerate() {
+            let x = numbers[i % numbers.len()];
+            let opt = if i % 2 == 0 { "0.25".to_string() } else { String::new() };
+            let flag = if i % 3 == 0 { "true" } else { "false" };
+            theirs.write_record([format!("{x}").as_str(), t, opt.as_str(), flag]).expect("row");
+        }
+        let theirs = theirs.into_inner().expect("flush");
+        assert_eq!(String::from_utf8_lossy(&ours), String::from_utf8_lossy(&theirs));
     }
 }

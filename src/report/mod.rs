@@ -33,7 +33,7 @@ use crate::run::{RunResult, SceneResult};
 use rayon::prelude::*;
 use std::fs::{self, File};
 use std::io::BufWriter;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use summary::Summary;
 pub use target::ReportKind;
 
@@ -282,10 +282,24 @@ fn swap_into_place(staging: tempfile::TempDir, dir: &Path, parent: &Path) -> Res
         let _ = fs::remove_dir_all(&staged);
         return Err(io(dir)(e));
     }
-    if let Some((aside_path, _)) = old {
+    if let Some((aside_path, old_path)) = old {
+        remove_in_parallel(&old_path);
         let _ = fs::remove_dir_all(aside_path);
     }
     Ok(())
+}
+
+/// Removes what a replaced report held, its folders side by side (most of the time goes to
+/// freeing the pages of its CSV files); what cannot be removed is left for the caller's
+/// `remove_dir_all`.
+fn remove_in_parallel(old: &Path) {
+    let Ok(entries) = fs::read_dir(old) else { return };
+    let paths: Vec<PathBuf> = entries.filter_map(|e| e.ok().map(|e| e.path())).collect();
+    paths.par_iter().for_each(|path| {
+        // A link is removed, never followed.
+        let folder = fs::symlink_metadata(path).is_ok_and(|m| m.file_type().is_dir());
+        let _ = if folder { fs::remove_dir_all(path) } else { fs::remove_file(path) };
+    });
 }
 
 /// A testing aid: a pause (ms, from `WRAPCALC_SWAP_PAUSE_MS`) between moving the old report

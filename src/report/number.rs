@@ -7,21 +7,22 @@
 
 /// `x` as `format!("{x}")` writes it: `NaN`, `inf`, `-inf`, `-0`, `0.001`, `1000`, `1.5`.
 pub fn display(x: f64) -> String {
-    let mut out = String::with_capacity(24);
+    let mut out = Vec::with_capacity(24);
     write(x, &mut out);
-    out
+    // Every byte written is ASCII.
+    String::from_utf8(out).unwrap_or_default()
 }
 
 /// [`display`], appended to `out`.
-pub fn write(x: f64, out: &mut String) {
+pub fn write(x: f64, out: &mut Vec<u8>) {
     if !x.is_finite() {
-        out.push_str(&x.to_string());
+        out.extend_from_slice(x.to_string().as_bytes());
         return;
     }
     let mut buffer = zmij::Buffer::new();
     let text = buffer.format_finite(x);
     if let Some(plain) = plain(text, x) {
-        out.push_str(plain);
+        out.extend_from_slice(plain.as_bytes());
         return;
     }
     let (negative, text) = match text.strip_prefix('-') {
@@ -43,10 +44,10 @@ pub fn write(x: f64, out: &mut String) {
     let digits = std::str::from_utf8(&joined[leading..joined.len() - trailing]).unwrap_or("");
     let point = whole.len() as i32 - leading as i32 + exponent;
     if negative {
-        out.push('-');
+        out.push(b'-');
     }
     if digits.is_empty() {
-        out.push('0');
+        out.push(b'0');
         return;
     }
     let n = digits.len() as i32;
@@ -62,35 +63,38 @@ pub fn write(x: f64, out: &mut String) {
             digits
         };
     if point <= 0 {
-        out.push_str("0.");
-        out.extend(std::iter::repeat_n('0', (-point) as usize));
-        out.push_str(digits);
+        out.extend_from_slice(b"0.");
+        out.resize(out.len() + (-point) as usize, b'0');
+        out.extend_from_slice(digits.as_bytes());
     } else if point >= n {
-        out.push_str(digits);
-        out.extend(std::iter::repeat_n('0', (point - n) as usize));
+        out.extend_from_slice(digits.as_bytes());
+        out.resize(out.len() + (point - n) as usize, b'0');
     } else {
         let (a, b) = digits.split_at(point as usize);
-        out.push_str(a);
-        out.push('.');
-        out.push_str(b);
+        out.extend_from_slice(a.as_bytes());
+        out.push(b'.');
+        out.extend_from_slice(b.as_bytes());
     }
 }
 
-/// The shortest digits' text where it is already the standard library's: no exponent, its `.0` dropped, and
-/// too few digits for a tie between two shortest candidates (below fifteen, or an odd last
-/// digit, or a value that cannot be a midpoint at all, [`may_tie`]); `None` sends the value
-/// through the general path.
+/// The shortest digits' text where it is already the standard library's: no exponent, its
+/// `.0` dropped, and a value that cannot be a midpoint at all ([`may_tie`], checked first: most
+/// values of the reports) or too few digits for a tie between two shortest candidates (below
+/// fifteen, or an odd last digit); `None` sends the value through the general path.
 fn plain(text: &str, x: f64) -> Option<&str> {
     let bytes = text.as_bytes();
     if bytes.contains(&b'e') {
         return None;
     }
     let text = text.strip_suffix(".0").unwrap_or(text);
+    if !may_tie(x) {
+        return Some(text);
+    }
     let digits = text.bytes().filter(u8::is_ascii_digit);
     let leading = digits.clone().take_while(|&d| d == b'0').count();
     let significant = digits.count() - leading;
     let even_last = text.bytes().last().is_some_and(|d| matches!(d, b'0' | b'2' | b'4' | b'6' | b'8'));
-    (significant < 15 || !even_last || !may_tie(x)).then_some(text)
+    (significant < 15 || !even_last).then_some(text)
 }
 
 /// Whether `x` can be a midpoint `(D + ½)·10^q` at all (the necessary condition of

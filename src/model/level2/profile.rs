@@ -65,10 +65,13 @@ impl Profile {
         self.mu
     }
 
-    /// The m'v² at which piece `i` first reaches the Coulomb limit somewhere
-    /// ([`limit_centrifugal_n`], a lower bound).
-    pub fn limit_n(&self, i: usize) -> f64 {
-        *self.beside[i].limit_n.get_or_init(|| limit_centrifugal_n(&self.pieces[i], self.mu))
+    /// The first piece from `from` on whose m'v² of first reaching the Coulomb limit somewhere
+    /// ([`limit_centrifugal_n`], a lower bound) is below `c` (the number of pieces if none is):
+    /// where a rise of m'v² to `c` may put stuck rope beyond the limit.
+    pub fn next_below_limit(&self, from: usize, c: f64) -> usize {
+        let (mu, len) = (self.mu, self.pieces.len());
+        let mut rest = self.pieces.range(from.min(len)..).zip(self.beside.range(from.min(len)..));
+        rest.position(|(p, b)| *b.limit_n.get_or_init(|| limit_centrifugal_n(p, mu)) < c).map_or(len, |k| from + k)
     }
 
     /// Wrap angle α the profile spans (rad).

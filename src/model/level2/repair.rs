@@ -90,10 +90,10 @@ fn stretches(profile: &Profile, law: &ContactLaw, stats: &mut RootStats) -> Vec<
     let (c, last) = (law.centrifugal_n, profile.len());
     let mut found = Vec::new();
     let mut i = 0;
-    while i < last {
-        if profile.limit_n(i) >= c {
-            i += 1;
-            continue;
+    loop {
+        i = profile.next_below_limit(i, c);
+        if i >= last {
+            break;
         }
         let Some((p, sign)) = violated_start(&profile.piece(i), law, stats) else {
             i += 1;
