@@ -11,6 +11,7 @@ mod loads;
 mod pipelined;
 mod schedule;
 mod share;
+mod shared_run;
 mod time;
 pub mod track;
 mod trip;
@@ -21,7 +22,9 @@ pub use trip::ROPE_DYNAMICS_CHECK;
 
 use derive::{derive_answers, ensure_finite};
 use loads::run_loads;
+use shared_run::run_shared;
 use time::{run_duty_cycle, run_history};
+use wrap_run::{WrapCheckpoint, WrapShare};
 
 use crate::cost::{self, Estimate};
 use crate::derived::WrapSummary;
@@ -32,14 +35,13 @@ use crate::model::history::{HistoryRow, SolverReport};
 use crate::model::level0::{Classical, EndState};
 use crate::model::level2::{Level2Error, Params, Solver};
 use crate::model::level3::{Level3Error, Level3Stats};
+use crate::model::level4::Level4Error;
 use crate::model::level4::shared::RopePrefix;
-use crate::model::level4::{self, Level4Error};
 use crate::model::stop::{SlipOnset, StopReport};
 use crate::planner::{self, Level, Plan, PlanError, Request};
 use crate::roots::RootError;
 use crate::wrap::Distribution;
 use rayon::prelude::*;
-use std::sync::Mutex;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
 
@@ -317,13 +319,16 @@ pub fn run_with_progress(
     // not start last and run alone), reported in the sheet's order. After a failure no further
     // scene starts; the error reported is the first in the sheet's order.
     let failed = AtomicBool::new(false);
-    let one = |i: usize, e: Estimate, prefix: Option<&RopePrefix>| {
+    let one = |i: usize, e: Estimate, prefix: Option<&RopePrefix>, wrap: WrapShare| {
         let seconds = e.seconds;
-        let context = SceneContext { parallel_sides, prefix };
-        let result = run_scene(design, scenes[i], options, context).map(|r| SceneResult { cost: Some(e), ..r });
+        let context = SceneContext { parallel_sides, prefix, wrap };
+        let (result, kept) = match run_scene(design, scenes[i], options, context) {
+            Ok((r, kept)) => (Ok(SceneResult { cost: Some(e), ..r }), kept),
+            Err(e) => (Err(e), None),
+        };
         failed.fetch_or(result.is_err(), Ordering::Relaxed);
         progress(seconds);
-        (i, result)
+        ((i, result), kept)
     };
     // Scenes that share the start of their trip ([`share`]) wait for it, integrated once; a
     // run that is one of many in parallel, or whose scenes each have cores to spare, has none.
@@ -339,7 +344,7 @@ pub fn run_with_progress(
             .into_iter()
             .par_bridge()
             .filter(|_| !failed.load(Ordering::Relaxed))
-            .map(|(i, e)| one(i, e, None))
+            .map(|(i, e)| one(i, e, None, WrapShare::default()).0)
             .collect()
     } else {
         run_shared(&groups, estimates, &failed, &one)
@@ -347,57 +352,6 @@ pub fn run_with_progress(
     done.sort_by_key(|(i, _)| *i);
     let scenes = done.into_iter().map(|(_, r)| r).collect::<Result<Vec<_>, _>>()?;
     Ok(RunResult { scenes, design: None, runtime_ms: start.elapsed().as_secs_f64() * 1e3 })
-}
-
-/// A scene's result with its index among the run's scenes.
-type Done = (usize, Result<SceneResult, RunError>);
-
-/// The scenes of a run with `groups` sharing the start of their trip: each group's start is a
-/// task that makes its scenes ready when done ([`schedule`]); a scene starts only while none
-/// has failed.
-fn run_shared(
-    groups: &[share::Group],
-    estimates: Vec<Estimate>,
-    failed: &AtomicBool,
-    one: &(dyn Fn(usize, Estimate, Option<&RopePrefix>) -> Done + Sync),
-) -> Vec<Done> {
-    enum Task {
-        Start(usize),
-        Scene(usize, Option<RopePrefix>),
-    }
-    let grouped: Vec<usize> = groups.iter().flat_map(|g| g.members.iter().map(|m| m.index)).collect();
-    let mut initial: Vec<(f64, Task)> = (0..groups.len()).map(|g| (f64::INFINITY, Task::Start(g))).collect();
-    initial.extend(
-        (0..estimates.len()).filter(|i| !grouped.contains(i)).map(|i| (estimates[i].seconds, Task::Scene(i, None))),
-    );
-    let done = Mutex::new(Vec::with_capacity(estimates.len()));
-    schedule::run(initial, rayon::current_num_threads(), |task, push| match task {
-        Task::Start(g) => {
-            let group = &groups[g];
-            let forks: Vec<usize> = group.members.iter().map(|m| m.fork_step).collect();
-            // A start that cannot be integrated leaves each scene to run (and fail) on its own;
-            // after a failure, when no scene starts, it is not integrated.
-            let prefixes = if failed.load(Ordering::Relaxed) {
-                Vec::new()
-            } else {
-                level4::shared::prefixes(&group.leader, &forks).unwrap_or_default()
-            };
-            let mut prefixes = prefixes.into_iter();
-            // A member costs what it does beyond the shared start: the cheapest run last.
-            for m in &group.members {
-                let prefix = prefixes.next().flatten();
-                let shared = if prefix.is_some() { m.shared_fraction } else { 0.0 };
-                push(estimates[m.index].seconds_after_shared_start(shared), Task::Scene(m.index, prefix));
-            }
-        }
-        Task::Scene(i, prefix) => {
-            if !failed.load(Ordering::Relaxed) {
-                let result = one(i, estimates[i].clone(), prefix.as_ref());
-                done.lock().unwrap_or_else(|poisoned| poisoned.into_inner()).push(result);
-            }
-        }
-    });
-    done.into_inner().unwrap_or_else(|poisoned| poisoned.into_inner())
 }
 
 /// [`run`], then the design as a whole: the load-case matrix of `[load_cases]` (with its level-4
@@ -434,22 +388,32 @@ struct SceneContext<'a> {
     /// The start of the trip the scene's suspended ropes share with others of the run
     /// ([`share`]), to continue from.
     prefix: Option<&'a RopePrefix>,
+    /// What the scene's wrap run shares with another scene's ([`share`]).
+    wrap: WrapShare<'a>,
 }
 
-/// Runs one scene.
-fn run_scene(design: &Design, scene: &Scene, options: Options, context: SceneContext) -> Result<SceneResult, RunError> {
+/// Runs one scene; returns with it the wrap's state it kept for another scene, if any.
+fn run_scene(
+    design: &Design,
+    scene: &Scene,
+    options: Options,
+    context: SceneContext,
+) -> Result<(SceneResult, Option<WrapCheckpoint>), RunError> {
     let start = Instant::now();
     let plan = planner::plan_with_lining(scene, options.request, design.lining.is_some())?;
     let spare_core = context.parallel_sides;
-    let (mut result, ropes) = match &scene.kind {
-        SceneKind::Loads(loads) => (run_loads(design, scene, loads, plan, options)?, None),
-        SceneKind::History(history) => (run_history(design, scene, history, plan, options, spare_core)?, None),
-        SceneKind::DutyCycle(cycle) => run_duty_cycle(design, scene, cycle, plan, options, context)?,
+    let (mut result, ropes, kept) = match &scene.kind {
+        SceneKind::Loads(loads) => (run_loads(design, scene, loads, plan, options)?, None, None),
+        SceneKind::History(history) => (run_history(design, scene, history, plan, options, spare_core)?, None, None),
+        SceneKind::DutyCycle(cycle) => {
+            let run = run_duty_cycle(design, scene, cycle, plan, options, context)?;
+            (run.result, run.ropes, run.kept)
+        }
     };
     derive_answers(design, scene, &mut result, ropes)?;
     result.runtime_ms = start.elapsed().as_secs_f64() * 1e3;
     ensure_finite(&result)?;
-    Ok(result)
+    Ok((result, kept))
 }
 
 fn empty(scene: &Scene, plan: Plan, classical: Classical) -> SceneResult {

@@ -4,7 +4,7 @@
 
 use super::pipelined;
 use super::trip::{self, Trip};
-use super::wrap_run::{Initial, rolling_initial, run_model, wrap_model};
+use super::wrap_run::{Initial, ModelRun, WrapCheckpoint, WrapShare, rolling_initial, run_model, wrap_model};
 use super::{HistoryOutput, Options, RunError, SceneContext, SceneResult, WrapResult, empty};
 use crate::check;
 use crate::design::{Design, Direction, DutyCycleScene, HistorySample, HistoryScene, Hoist, Scene};
@@ -44,8 +44,9 @@ pub(super) fn run_history(
         output,
         spare_core,
         made_beside: None,
+        share: WrapShare::default(),
     };
-    run_samples(design, scene, input, plan, options)
+    run_samples(design, scene, input, plan, options).map(|(result, _)| result)
 }
 
 /// A duty cycle: the suspended ropes give the end tensions, which then run as a history. The
@@ -63,7 +64,7 @@ pub(super) fn run_duty_cycle(
     plan: Plan,
     options: Options,
     context: SceneContext,
-) -> Result<(SceneResult, Option<RopeRun>), RunError> {
+) -> Result<DutyCycleRun, RunError> {
     let parallel_sides = context.parallel_sides;
     let err = |source| RunError::Level4 { scene: scene.name.clone(), source };
     let Some(hoist) = &design.hoist else {
@@ -105,8 +106,9 @@ pub(super) fn run_duty_cycle(
         output,
         spare_core: parallel_sides,
         made_beside,
+        share: context.wrap,
     };
-    let mut result = run_samples(design, scene, input, plan, options)?;
+    let (mut result, kept) = run_samples(design, scene, input, plan, options)?;
     if let Some((ropes, rigid)) = &dynamics {
         let dynamics = &ropes.samples;
         let code = trip::code_classical(design, rigid);
@@ -124,7 +126,15 @@ pub(super) fn run_duty_cycle(
     if let Some(stop) = &result.stop {
         trip::push_stop_checks(design, &mut result.classical, stop, &trip, &scene.name);
     }
-    Ok((result, dynamics.map(|(ropes, _)| ropes)))
+    Ok(DutyCycleRun { result, ropes: dynamics.map(|(ropes, _)| ropes), kept })
+}
+
+/// A duty cycle's result, its suspended ropes' run (the emergency margins continue from it)
+/// and the wrap's state kept for another scene ([`WrapShare::keep_at_s`]).
+pub(super) struct DutyCycleRun {
+    pub result: SceneResult,
+    pub ropes: Option<RopeRun>,
+    pub kept: Option<WrapCheckpoint>,
 }
 
 /// The suspended ropes of a level-4 duty cycle, with the wrap's run beside them where it can be
@@ -141,7 +151,7 @@ fn ropes<R: Send>(
     also: impl FnOnce() -> R + Send,
 ) -> (Result<(RopeRun, Option<pipelined::Unconfirmed>), Level4Error>, R) {
     let Some(hoist) = &design.hoist else { return (Err(Level4Error::NoHoist), also()) };
-    let SceneContext { parallel_sides, prefix } = context;
+    let SceneContext { parallel_sides, prefix, .. } = context;
     let profile = match level4::motion_profile(hoist, cycle) {
         Ok(profile) if prefix.is_none() && pipelined::applies(design, scene, cycle, plan, parallel_sides) => profile,
         _ => {
@@ -207,17 +217,20 @@ struct Samples<'a> {
     spare_core: bool,
     /// The wrap's run through these samples, made beside the ropes ([`pipelined`]), if any.
     made_beside: Option<history::HistoryRun>,
+    /// What the wrap's run shares with another scene's.
+    share: WrapShare<'a>,
 }
 
 /// A scene given as end tensions and speed over time (history and duty-cycle scenes): level 0
-/// over every sample, then (level ≥ 2) the discrete model through them.
+/// over every sample, then (level ≥ 2) the discrete model through them; with the wrap's state
+/// kept for another scene, if asked for and made.
 fn run_samples(
     design: &Design,
     scene: &Scene,
     input: Samples,
     plan: Plan,
     options: Options,
-) -> Result<SceneResult, RunError> {
+) -> Result<(SceneResult, Option<WrapCheckpoint>), RunError> {
     let Samples {
         samples,
         accel_m_s2,
@@ -227,6 +240,7 @@ fn run_samples(
         output,
         spare_core,
         made_beside,
+        share,
     } = input;
     let states: Vec<(f64, EndState)> = samples
         .iter()
@@ -250,23 +264,23 @@ fn run_samples(
         if scene.tracks.is_some() {
             return Err(RunError::TracksBelowLevel2 { scene: scene.name.clone(), level: result.plan.level });
         }
-        return Ok(result);
+        return Ok((result, None));
     }
     let first = states[0].1;
     // Uniform rope when the history starts balanced, else the steady rolling state of its first loads.
     let rolling = rolling_initial(design, &first, direction);
     let initial = Initial::of(&rolling, first, direction);
-    let (run, level3, for_tracks) = match made_beside {
-        Some(run) => (run, None, None),
+    let (done, for_tracks) = match made_beside {
+        Some(run) => (ModelRun { run, level3: None, kept: None, reused_increments: 0 }, None),
         None => {
             let model = wrap_model(design, scene, &result.plan, samples, initial, options)?;
             // The tracks follow the same model from the same start.
             let for_tracks = scene.tracks.as_ref().map(|_| model.clone());
-            let (run, level3) = run_model(model, scene, samples, output, options, spare_core)?;
-            (run, level3, for_tracks)
+            (run_model(model, scene, samples, (output, options, spare_core), share)?, for_tracks)
         }
     };
-    crate::tally::add_increments(run.stats.increments);
+    let ModelRun { run, level3, kept, reused_increments } = done;
+    crate::tally::add_increments(run.stats.increments - reused_increments);
     result.level3 = level3;
     let mut snapshots: Vec<history::Snapshot> = run.snapshots;
     let last = snapshots.pop();
@@ -295,5 +309,5 @@ fn run_samples(
         let out = super::track::run(design, scene, tracks, samples, model, travel, side1_length_m)?;
         result.tracks = Some(out);
     }
-    Ok(result)
+    Ok((result, kept))
 }

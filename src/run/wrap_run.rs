@@ -142,28 +142,70 @@ pub(super) fn wrap_history(
     options: Options,
 ) -> Result<(HistoryRun, Option<level3::Level3Stats>), RunError> {
     let model = wrap_model(design, scene, plan, samples, initial, options)?;
-    run_model(model, scene, samples, output, options, false)
+    let done = run_model(model, scene, samples, (output, options, false), WrapShare::default())?;
+    Ok((done.run, done.level3))
+}
+
+/// A level-2 run's state kept on its way, for another scene whose history agrees with its own
+/// up to that instant ([`super::share`]).
+pub(super) type WrapCheckpoint = history::Checkpoint<level2::Simulation<'static>>;
+
+/// What a scene's wrap run shares with another scene's: a state to keep for it on the way
+/// (at that instant, s), or one kept by it to go on from.
+#[derive(Debug, Clone, Copy, Default)]
+pub(super) struct WrapShare<'a> {
+    /// Keep the state at this instant (a sample's).
+    pub keep_at_s: Option<f64>,
+    /// Go on from this state when it fits the scene's history ([`history::Checkpoint::fits`])
+    /// and its model started alike.
+    pub from: Option<&'a WrapCheckpoint>,
+}
+
+/// A wrap run's result: its history, level 3's counters, the state kept on the way and the
+/// increments not computed because the run went on from another's state.
+pub(super) struct ModelRun {
+    pub run: HistoryRun,
+    pub level3: Option<level3::Level3Stats>,
+    pub kept: Option<WrapCheckpoint>,
+    pub reused_increments: u64,
 }
 
 /// Runs `model` through `samples` with the one history runner ([`history::run_with`]; with
-/// `parallel_rows` the rows' summaries run on other threads of the pool).
+/// `parallel_rows` the rows' summaries run on other threads of the pool); at level 2 it keeps
+/// a state on the way, or goes on from one, as `share` says.
 pub(super) fn run_model(
     model: Model,
     scene: &Scene,
     samples: &[HistorySample],
-    output: Output,
-    options: Options,
-    parallel_rows: bool,
-) -> Result<(HistoryRun, Option<level3::Level3Stats>), RunError> {
-    match model {
+    (output, options, parallel_rows): (Output, Options, bool),
+    share: WrapShare,
+) -> Result<ModelRun, RunError> {
+    let done = |run, level3| ModelRun { run, level3, kept: None, reused_increments: 0 };
+    let sim = match model {
         Model::Elastic(sim, mut stats) => {
             let (run, run_stats) = history::run_with(*sim, samples, output, options.nodes, parallel_rows)
                 .map_err(|source| RunError::Level3 { scene: scene.name.clone(), source })?;
             stats.add(&run_stats);
-            Ok((run, Some(stats)))
+            return Ok(done(run, Some(stats)));
         }
-        Model::Rigid(sim) => history::run_with(*sim, samples, output, options.nodes, parallel_rows)
-            .map(|(run, _)| (run, None))
-            .map_err(|source| RunError::Level2 { scene: scene.name.clone(), source }),
+        Model::Rigid(sim) => *sim,
+    };
+    let err = |source| RunError::Level2 { scene: scene.name.clone(), source };
+    let layout = (output, options.nodes);
+    if let Some(from) = share.from.filter(|cp| cp.start.starts_as(&sim) && cp.fits(samples, &output)) {
+        let model = from.model.clone().attached(samples);
+        let (run, _) = history::run_from(from, model, samples, layout, parallel_rows).map_err(err)?;
+        return Ok(ModelRun { reused_increments: from.model.stats.increments, ..done(run, None) });
+    }
+    match share.keep_at_s {
+        Some(at_s) => {
+            let (run, _, kept) =
+                history::run_keeping(sim, samples, layout, parallel_rows, at_s, level2::Simulation::detached)
+                    .map_err(err)?;
+            Ok(ModelRun { kept, ..done(run, None) })
+        }
+        None => history::run_with(sim, samples, output, options.nodes, parallel_rows)
+            .map(|(run, _)| done(run, None))
+            .map_err(err),
     }
 }

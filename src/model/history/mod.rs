@@ -5,11 +5,13 @@
 
 pub mod output;
 pub mod report;
+mod resume;
 mod rows;
 pub mod sample;
 
 pub use output::{HistoryRow, HistoryRun, MAP_COLUMNS, Output, Snapshot};
 pub use report::SolverReport;
+pub use resume::{Checkpoint, run_from, run_keeping};
 pub use sample::HistorySample;
 
 use crate::contact::NodeState;
@@ -120,7 +122,9 @@ pub fn run_with<M: WrapModel>(
 ) -> Result<(HistoryRun, M::Counters), M::Error> {
     let times = output.times(samples);
     model.settle()?;
-    let run = rows::run_rows(&mut model, &mut rows::Whole(samples), &times, output, output_nodes, parallel_rows)?;
+    let empty = HistoryRun::with_capacity(times.len());
+    let layout = (&times[..], output, output_nodes);
+    let (run, _) = rows::run_rows(&mut model, &mut rows::Whole(samples), layout, parallel_rows, empty, None)?;
     Ok(finished(&model, run))
 }
 
@@ -159,6 +163,8 @@ pub fn run_growing<M: WrapModel + Growing>(
     // The first interval's end, for the settling.
     rows::RowSamples::at(&mut source, &mut model, t0_s);
     model.settle()?;
-    let run = rows::run_rows(&mut model, &mut source, &times, output, output_nodes, parallel_rows)?;
+    let empty = HistoryRun::with_capacity(times.len());
+    let layout = (&times[..], output, output_nodes);
+    let (run, _) = rows::run_rows(&mut model, &mut source, layout, parallel_rows, empty, None)?;
     Ok(finished(&model, run))
 }

@@ -5,7 +5,7 @@ use super::sample::{interpolate, speed_slope};
 use super::{HistoryRun, HistorySample, Output, Snapshot, WrapModel};
 use crate::derived::WrapSummary;
 use crate::model::level0::{EndState, euler_limit};
-use crate::roots::RootError;
+use crate::roots::{RootError, RootStats};
 use std::sync::OnceLock;
 
 /// Where the rows take the history from.
@@ -47,40 +47,56 @@ fn inputs(samples: &[HistorySample], t_s: f64) -> (HistorySample, f64, bool) {
     (interpolate(samples, t_s), speed_slope(samples, t_s), last)
 }
 
-/// Steps the settled `model` through `times`, a row at each; with `parallel_rows` the rows'
-/// summaries (but a snapshot's) are jobs on other threads of the pool. A summary that failed
-/// before the row where stepping failed is the first error.
+/// A state to keep on the way: the model at `at_s` (a sample's instant, between two rows) is
+/// handed to `keep` with the number of rows before it, when the run passes that instant.
+pub(super) struct Keep<'k, M> {
+    pub at_s: f64,
+    pub keep: &'k mut dyn FnMut(&M, usize),
+}
+
+/// Steps the settled `model` through `times`, a row at each, appending to `run` (empty, or the
+/// rows of the run the model comes from); with `parallel_rows` the rows' summaries (but a
+/// snapshot's) are jobs on other threads of the pool. A summary that failed before the row
+/// where stepping failed is the first error. With `keep`, also returns the root searches of
+/// the rows before the kept state.
 pub(super) fn run_rows<M: WrapModel, S: RowSamples<M>>(
     model: &mut M,
     source: &mut S,
-    times: &[f64],
-    output: Output,
-    output_nodes: usize,
+    (times, output, output_nodes): (&[f64], Output, usize),
     parallel_rows: bool,
-) -> Result<HistoryRun, M::Error> {
+    mut run: HistoryRun,
+    mut keep: Option<Keep<'_, M>>,
+) -> Result<(HistoryRun, Option<RootStats>), M::Error> {
     let wrap = model.wrap();
     let limit = euler_limit(wrap.mu, wrap.wrap_angle_rad);
-    let mut run = HistoryRun::with_capacity(times.len());
     let slots: Vec<Slot> = times.iter().map(|_| OnceLock::new()).collect();
     let mut rows = Rows { times, slots: &slots, ends: Vec::with_capacity(times.len()), run: &mut run };
     let mut batch = Vec::with_capacity(JOBS_PER_TASK);
+    let mut kept_after = None;
     let stepped = if parallel_rows {
         rayon::in_place_scope(|scope| {
-            let stepped = step_rows(model, source, &output, output_nodes, &mut rows, (Some(scope), &mut batch));
+            let jobs = (Some(scope), &mut batch);
+            let stepped =
+                step_rows(model, source, (&output, output_nodes), &mut rows, jobs, (&mut keep, &mut kept_after));
             // The rows before a failure keep their summaries.
             spawn_batch(scope, std::mem::take(&mut batch));
             stepped
         })
     } else {
-        step_rows(model, source, &output, output_nodes, &mut rows, (None, &mut batch))
+        let jobs = (None, &mut batch);
+        step_rows(model, source, (&output, output_nodes), &mut rows, jobs, (&mut keep, &mut kept_after))
     };
     let ends = std::mem::take(&mut rows.ends);
-    for ((t, end, gross_slip), slot) in ends.into_iter().zip(slots) {
+    let mut roots_before = None;
+    for (k, ((t, end, gross_slip), slot)) in ends.into_iter().zip(slots).enumerate() {
+        if kept_after == Some(k) {
+            roots_before = Some(run.roots);
+        }
         let summary = slot.into_inner().expect("every row's summary was made")?;
         run.push_row(t, &end, &summary, limit, gross_slip);
     }
     stepped?;
-    Ok(run)
+    Ok((run, roots_before))
 }
 
 /// A row's summary, made in place or by a job.
@@ -101,13 +117,20 @@ struct Rows<'a, 's> {
 fn step_rows<'s, M: WrapModel, S: RowSamples<M>>(
     model: &mut M,
     source: &mut S,
-    output: &Output,
-    output_nodes: usize,
+    (output, output_nodes): (&Output, usize),
     rows: &mut Rows<'_, 's>,
     (scope, batch): (Option<&rayon::Scope<'s>>, &mut Vec<(&'s Slot, super::SummaryJob)>),
+    (keep, kept_after): (&mut Option<Keep<'_, M>>, &mut Option<usize>),
 ) -> Result<(), M::Error> {
     let mass_per_m_kg = model.wrap().mass_per_m_kg;
     for (&t, slot) in rows.times.iter().zip(rows.slots) {
+        if let Some(k) = keep.take_if(|k| t > k.at_s) {
+            // The state at a sample's instant: stepping there and on is stepping past it.
+            source.at(model, k.at_s);
+            model.advance_to(k.at_s)?;
+            (k.keep)(model, rows.ends.len());
+            *kept_after = Some(rows.ends.len());
+        }
         let (sample, slope, last) = source.at(model, t);
         model.advance_to(t)?;
         let end = EndState::of_sample(&sample, slope, mass_per_m_kg);

@@ -161,6 +161,56 @@ impl<'a> Simulation<'a> {
         &self.samples
     }
 
+    /// The state without its history, to go on through another history that agrees with this
+    /// one up to [`Self::t_s`] ([`Self::attached`]).
+    pub fn detached(&self) -> Simulation<'static> {
+        Simulation {
+            params: self.params,
+            samples: Cow::Owned(Vec::new()),
+            t_s: self.t_s,
+            profile: self.profile.clone(),
+            gross_slip: self.gross_slip,
+            centrifugal_n: self.centrifugal_n,
+            centrifugal_step_n: self.centrifugal_step_n,
+            numerics: self.numerics,
+            stats: self.stats,
+            roots: self.roots,
+            last: self.last,
+            scratch: clamp::Scratch::default(),
+        }
+    }
+
+    /// The state going on through `samples` (which must agree with the history it came from up
+    /// to [`Self::t_s`]: the steps after it read only the samples from there on).
+    pub fn attached<'b>(self, samples: &'b [HistorySample]) -> Simulation<'b> {
+        Simulation {
+            params: self.params,
+            samples: Cow::Borrowed(samples),
+            t_s: self.t_s,
+            profile: self.profile,
+            gross_slip: self.gross_slip,
+            centrifugal_n: self.centrifugal_n,
+            centrifugal_step_n: self.centrifugal_step_n,
+            numerics: self.numerics,
+            stats: self.stats,
+            roots: self.roots,
+            last: self.last,
+            scratch: self.scratch,
+        }
+    }
+
+    /// Whether two runs start alike: the same parameters, step sizes, m'v² lattice and state,
+    /// before any step (so that through the same samples they step alike to the last bit).
+    pub fn starts_as(&self, other: &Simulation) -> bool {
+        self.params == other.params
+            && self.numerics == other.numerics
+            && self.t_s.to_bits() == other.t_s.to_bits()
+            && self.centrifugal_n.to_bits() == other.centrifugal_n.to_bits()
+            && self.centrifugal_step_n.to_bits() == other.centrifugal_step_n.to_bits()
+            && self.gross_slip == other.gross_slip
+            && self.profile == other.profile
+    }
+
     /// Applies the first sample's ends without motion.
     pub fn settle(&mut self) -> Result<(), SimError> {
         let k = segment(&self.samples, self.t_s);

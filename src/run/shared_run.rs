@@ -1,0 +1,100 @@
+//! The scenes of a run that share the start of their trip ([`super::share`]), in the order the
+//! scheduler ([`super::schedule`]) takes them: each group's start first, then its scenes by what
+//! remains of their own work, a scene whose wrap others go on from before them.
+
+use super::wrap_run::{WrapCheckpoint, WrapShare};
+use super::{RunError, SceneResult, schedule, share};
+use crate::cost::Estimate;
+use crate::model::level4::{self, shared::RopePrefix};
+use std::sync::Mutex;
+use std::sync::atomic::{AtomicBool, Ordering};
+
+/// A scene's result with its index among the run's scenes.
+pub(super) type Done = (usize, Result<SceneResult, RunError>);
+
+/// A scene run with the wrap's state it kept for another.
+pub(super) type OneScene<'a> =
+    dyn Fn(usize, Estimate, Option<&RopePrefix>, WrapShare) -> (Done, Option<WrapCheckpoint>) + Sync + 'a;
+
+/// The scenes of a run with `groups` sharing the start of their trip: each group's start is a
+/// task that makes its scenes ready when done ([`schedule`]), but those whose wrap goes on from
+/// another's, which that one makes ready when done with the state it kept for them; a scene
+/// starts only while none has failed.
+pub(super) fn run_shared(
+    groups: &[share::Group],
+    estimates: Vec<Estimate>,
+    failed: &AtomicBool,
+    one: &OneScene,
+) -> Vec<Done> {
+    /// A scene with its ropes' start, the wrap's state it goes on from, and the scenes whose
+    /// wrap goes on from its own (with their ropes' start and the instant their state is kept at).
+    struct SceneTask {
+        index: usize,
+        prefix: Option<RopePrefix>,
+        from: Option<WrapCheckpoint>,
+        then: Vec<(usize, Option<RopePrefix>, f64)>,
+        keep_at_s: Option<f64>,
+    }
+    enum Task {
+        Start(usize),
+        Scene(Box<SceneTask>),
+    }
+    let grouped: Vec<usize> = groups.iter().flat_map(|g| g.members.iter().map(|m| m.index)).collect();
+    let mut initial: Vec<(f64, Task)> = (0..groups.len()).map(|g| (f64::INFINITY, Task::Start(g))).collect();
+    initial.extend((0..estimates.len()).filter(|i| !grouped.contains(i)).map(|i| {
+        let task = SceneTask { index: i, prefix: None, from: None, then: Vec::new(), keep_at_s: None };
+        (estimates[i].seconds, Task::Scene(Box::new(task)))
+    }));
+    let done = Mutex::new(Vec::with_capacity(estimates.len()));
+    schedule::run(initial, rayon::current_num_threads(), |task, push| match task {
+        Task::Start(g) => {
+            let group = &groups[g];
+            let forks: Vec<usize> = group.members.iter().map(|m| m.fork_step).collect();
+            // A start that cannot be integrated leaves each scene to run (and fail) on its own;
+            // after a failure, when no scene starts, it is not integrated.
+            let prefixes = if failed.load(Ordering::Relaxed) {
+                Vec::new()
+            } else {
+                level4::shared::prefixes(&group.leader, &forks).unwrap_or_default()
+            };
+            let mut prefixes: Vec<Option<RopePrefix>> = prefixes;
+            prefixes.resize(group.members.len(), None);
+            let prefix_of =
+                |i: usize| group.members.iter().position(|m| m.index == i).and_then(|k| prefixes[k].clone());
+            // A member costs what it does beyond the shared start: the cheapest run last.
+            let remaining = |i: usize| {
+                let m = group.members.iter().find(|m| m.index == i);
+                let shared = m.filter(|_| prefix_of(i).is_some()).map_or(0.0, |m| m.shared_fraction);
+                estimates[i].seconds_after_shared_start(shared)
+            };
+            for m in &group.members {
+                let i = m.index;
+                if group.wraps.iter().any(|w| w.consumer == i) {
+                    continue;
+                }
+                let consumers = group.wraps.iter().filter(|w| w.provider == i);
+                let then: Vec<_> =
+                    consumers.clone().map(|w| (w.consumer, prefix_of(w.consumer), remaining(w.consumer))).collect();
+                let keep_at_s = consumers.map(|w| w.at_s).next();
+                // A scene whose state others wait for counts their work too: it starts first.
+                let waiting: f64 = then.iter().map(|(_, _, s)| s).sum();
+                let task = SceneTask { index: i, prefix: prefix_of(i), from: None, then, keep_at_s };
+                push(remaining(i) + waiting, Task::Scene(Box::new(task)));
+            }
+        }
+        Task::Scene(task) => {
+            let mut kept = None;
+            if !failed.load(Ordering::Relaxed) {
+                let wrap = WrapShare { keep_at_s: task.keep_at_s, from: task.from.as_ref() };
+                let (result, state) = one(task.index, estimates[task.index].clone(), task.prefix.as_ref(), wrap);
+                kept = state;
+                done.lock().unwrap_or_else(|poisoned| poisoned.into_inner()).push(result);
+            }
+            for (index, prefix, priority) in task.then {
+                let next = SceneTask { index, prefix, from: kept.clone(), then: Vec::new(), keep_at_s: None };
+                push(priority, Task::Scene(Box::new(next)));
+            }
+        }
+    });
+    done.into_inner().unwrap_or_else(|poisoned| poisoned.into_inner())
+}
