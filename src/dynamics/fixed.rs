@@ -1,7 +1,8 @@
 //! [`super::sweep`]'s two passes for a mesh whose size `N` is known when compiled (the usual
 //! 12 elements per side, and 24): the state of the `K` sides stepped together is read into
-//! arrays once, the pivots of every row are formed before the elimination (they depend on the
-//! coefficients only), and the passes run over fixed ranges, so that no index is checked and
+//! arrays once, each row's pivot is formed as the elimination reaches it (from the
+//! coefficients only: its division does not wait for the row above, and the pivots need no
+//! array of their own), and the passes run over fixed ranges, so that no index is checked and
 //! the compiler lays the rows out one after the other.
 //!
 //! The operations and their order are those of [`super::sweep::sweep_nodes`] row by row, so
@@ -24,7 +25,6 @@ pub(super) fn sweep<const N: usize, const K: usize>(sides: [(&mut SideState, &Co
     let mut mid_q = [[0.0; K]; N];
     let mut mid_v = [[0.0; K]; N];
     let mut y = [[0.0; K]; N];
-    let mut inv = [[0.0; K]; N];
     let mut factor = [[0.0; K]; N];
     let coeffs: [&Coeffs; K] = std::array::from_fn(|k| sides[k].1);
     let pivots: [Pivots; K] = std::array::from_fn(|k| sides[k].2);
@@ -38,29 +38,24 @@ pub(super) fn sweep<const N: usize, const K: usize>(sides: [(&mut SideState, &Co
             y[i][k] = qp + c.beta_s * vp;
         }
     }
-    for (k, p) in pivots.iter().enumerate() {
-        let mut power = p.rho;
-        for row in inv.iter_mut().take(N - 1) {
-            row[k] = if power <= SETTLED {
-                p.settled_inv
-            } else {
-                let x = (1.0 - power) / (p.lambda * (1.0 - power * p.rho));
-                power *= p.rho;
-                x
-            };
-        }
-        for i in 0..N - 1 {
-            factor[i][k] = p.off * inv[i][k];
-        }
-        inv[N - 1][k] = 1.0 / (p.last - p.off * factor[N - 2][k]);
-        factor[N - 1][k] = p.off * inv[N - 1][k];
-    }
-    // Forward: the eliminated right-hand sides.
+    // Forward: each row's pivot, then its eliminated right-hand side.
     let mut r = [0.0; K];
     let mut rhs = [[0.0; K]; N];
+    let mut power: [f64; K] = std::array::from_fn(|k| pivots[k].rho);
     for i in 0..N {
         for k in 0..K {
-            let c = coeffs[k];
+            let (c, p) = (coeffs[k], &pivots[k]);
+            let inv = if i + 1 == N {
+                1.0 / (p.last - p.off * factor[N - 2][k])
+            } else if power[k] <= SETTLED {
+                p.settled_inv
+            } else {
+                let x = (1.0 - power[k]) / (p.lambda * (1.0 - power[k] * p.rho));
+                power[k] *= p.rho;
+                x
+            };
+            let f = p.off * inv;
+            factor[i][k] = f;
             let left = if i == 0 { 0.0 } else { y[i - 1][k] };
             let here = y[i][k];
             let b = if i + 1 < N {
@@ -68,7 +63,7 @@ pub(super) fn sweep<const N: usize, const K: usize>(sides: [(&mut SideState, &Co
             } else {
                 0.5 * c.w_n + c.end_load_n - c.ke * (here - left)
             };
-            r[k] = if i == 0 { b * inv[i][k] } else { b * inv[i][k] - factor[i][k] * r[k] };
+            r[k] = if i == 0 { b * inv } else { b * inv - f * r[k] };
             rhs[i][k] = r[k];
         }
     }
