@@ -164,28 +164,26 @@ impl<'a> Simulation<'a> {
     /// The state without its history, to go on through another history that agrees with this
     /// one up to [`Self::t_s`] ([`Self::attached`]).
     pub fn detached(&self) -> Simulation<'static> {
-        Simulation {
-            params: self.params,
-            samples: Cow::Owned(Vec::new()),
-            t_s: self.t_s,
+        let copy = Simulation {
+            samples: Cow::Borrowed(&[]),
             profile: self.profile.clone(),
-            gross_slip: self.gross_slip,
-            centrifugal_n: self.centrifugal_n,
-            centrifugal_step_n: self.centrifugal_step_n,
-            numerics: self.numerics,
-            stats: self.stats,
-            roots: self.roots,
-            last: self.last,
             scratch: clamp::Scratch::default(),
-        }
+            ..*self
+        };
+        copy.with_samples(Cow::Owned(Vec::new()))
     }
 
     /// The state going on through `samples` (which must agree with the history it came from up
     /// to [`Self::t_s`]: the steps after it read only the samples from there on).
     pub fn attached<'b>(self, samples: &'b [HistorySample]) -> Simulation<'b> {
+        self.with_samples(Cow::Borrowed(samples))
+    }
+
+    /// The state with another history.
+    fn with_samples<'b>(self, samples: Cow<'b, [HistorySample]>) -> Simulation<'b> {
         Simulation {
             params: self.params,
-            samples: Cow::Borrowed(samples),
+            samples,
             t_s: self.t_s,
             profile: self.profile,
             gross_slip: self.gross_slip,
