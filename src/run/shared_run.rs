@@ -59,12 +59,12 @@ pub(super) fn run_shared(
             };
             let mut prefixes: Vec<Option<RopePrefix>> = prefixes;
             prefixes.resize(group.members.len(), None);
-            let prefix_of =
-                |i: usize| group.members.iter().position(|m| m.index == i).and_then(|k| prefixes[k].clone());
+            let member = |i: usize| group.members.iter().position(|m| m.index == i);
+            let prefix_of = |i: usize| member(i).and_then(|k| prefixes[k].clone());
             // A member costs what it does beyond the shared start: the cheapest run last.
             let remaining = |i: usize| {
-                let m = group.members.iter().find(|m| m.index == i);
-                let shared = m.filter(|_| prefix_of(i).is_some()).map_or(0.0, |m| m.shared_fraction);
+                let shared =
+                    member(i).filter(|&k| prefixes[k].is_some()).map_or(0.0, |k| group.members[k].shared_fraction);
                 estimates[i].seconds_after_shared_start(shared)
             };
             for m in &group.members {
