@@ -11,6 +11,9 @@ use wrapcalc::model::level4::shared::RopePlan;
 use wrapcalc::run::{self, Options, SceneResult};
 use wrapcalc::{sheet, tally};
 
+/// The increment tally is process-wide: tests that read it take turns.
+static TALLY: std::sync::Mutex<()> = std::sync::Mutex::new(());
+
 fn design() -> Design {
     sheet::load(Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/tables/guo2020.toml")))
         .expect("the bundled sheet loads")
@@ -56,6 +59,7 @@ fn timeless(mut r: SceneResult) -> SceneResult {
 
 #[test]
 fn scenes_sharing_a_start_give_what_each_gives_alone() {
+    let _turn = TALLY.lock().unwrap_or_else(|e| e.into_inner());
     // Two threads whatever the machine: six scenes on two threads have no core to spare, and
     // those that share a start share it.
     let _ = rayon::ThreadPoolBuilder::new().num_threads(2).build_global();
@@ -86,4 +90,51 @@ fn scenes_sharing_a_start_give_what_each_gives_alone() {
     let lift_wrap = tally::increments() - before - 64_030;
     let saved = separate - shared;
     assert!(saved > saved_steps && saved <= saved_steps + lift_wrap, "{saved} against {saved_steps} + {lift_wrap}");
+}
+
+/// The reference sheet's hoist with `scenes` (TOML) as its only scenes.
+fn with_scenes(scenes: &str) -> Design {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/tables/guo2020.toml");
+    let text = std::fs::read_to_string(path).expect("the bundled sheet");
+    let head = &text[..text.find("[[scene]]").expect("scenes")];
+    sheet::parse("guo2020.toml", &format!("{head}{scenes}")).expect("valid")
+}
+
+/// The mirror of the lift and its round trip: a lowering trip and the round trip that lowers,
+/// rests and lifts back. Run together, the round trip's wrap goes on from the lowering trip's
+/// state where they part, and each result is still the one of the scene run alone, to the last
+/// bit; with the round trip reporting at another interval (its rows sampled differently) it
+/// cannot go on from it, and its results are again its own.
+#[test]
+fn a_lowering_trip_and_its_round_trip_share_their_wrap_as_the_lift_does() {
+    let _turn = TALLY.lock().unwrap_or_else(|e| e.into_inner());
+    let _ = rayon::ThreadPoolBuilder::new().num_threads(2).build_global();
+    let options = Options { nodes: 90, utilization_map: false, ..Options::default() };
+    for (round_step_s, continues) in [(0.05, true), (0.04, false)] {
+        let d = with_scenes(&format!(
+            "[[scene]]\nname = \"down\"\nkind = \"duty-cycle\"\npayload_kg = 30000.0\ndirection = \"lower\"\n\
+             output_step_s = 0.05\n\n[[scene]]\nname = \"down-and-up\"\nkind = \"duty-cycle\"\npayload_kg = 30000.0\n\
+             direction = \"lower\"\nreturn_after_s = 10.0\noutput_step_s = {round_step_s}\n"
+        ));
+        let scenes: Vec<_> = d.scenes.iter().collect();
+        let before = tally::increments();
+        let together = run::run(&d, &scenes, options).expect("runs").scenes;
+        let shared = tally::increments() - before;
+        let before = tally::increments();
+        let alone: Vec<SceneResult> =
+            scenes.iter().map(|s| run::run(&d, &[*s], options).expect("runs").scenes.remove(0)).collect();
+        let separate = tally::increments() - before;
+        for (a, b) in together.into_iter().zip(alone) {
+            let name = a.name.clone();
+            assert_eq!(timeless(a), timeless(b), "{name}, round trip rows every {round_step_s} s");
+        }
+        // The ropes share the lowering trip up to its last recorded step before its end (64 025
+        // of 1 ms, as for the lift); the wrap shares some of its increments only where it goes on.
+        let saved = separate - shared;
+        if continues {
+            assert!(saved > 64_025, "the wrap's increments saved too: {saved}");
+        } else {
+            assert_eq!(saved, 64_025, "only the ropes' shared steps");
+        }
+    }
 }
