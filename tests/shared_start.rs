@@ -57,6 +57,23 @@ fn timeless(mut r: SceneResult) -> SceneResult {
     r
 }
 
+/// Runs `scenes` together, then each alone, asserts that each result is the same to the last
+/// bit (`context` names the case) and returns the increments the run together saved.
+fn same_together_as_alone(d: &Design, scenes: &[&wrapcalc::design::Scene], options: Options, context: &str) -> u64 {
+    let before = tally::increments();
+    let together = run::run(d, scenes, options).expect("runs").scenes;
+    let shared = tally::increments() - before;
+    let before = tally::increments();
+    let alone: Vec<SceneResult> =
+        scenes.iter().map(|s| run::run(d, &[*s], options).expect("runs").scenes.remove(0)).collect();
+    let separate = tally::increments() - before;
+    for (a, b) in together.into_iter().zip(alone) {
+        let name = a.name.clone();
+        assert_eq!(timeless(a), timeless(b), "{name}{context}");
+    }
+    separate - shared
+}
+
 #[test]
 fn scenes_sharing_a_start_give_what_each_gives_alone() {
     let _turn = TALLY.lock().unwrap_or_else(|e| e.into_inner());
@@ -67,16 +84,7 @@ fn scenes_sharing_a_start_give_what_each_gives_alone() {
     let names = ["duty-MID", "emergency-MID", "brake-MID", "round-trip-MID", "duty-MAX-lower", "emergency-MAX-lower"];
     let scenes: Vec<_> = names.iter().map(|n| d.scenes.iter().find(|s| s.name == *n).expect("in the sheet")).collect();
     let options = Options { nodes: 90, utilization_map: false, ..Options::default() };
-    let before = tally::increments();
-    let together = run::run(&d, &scenes, options).expect("runs").scenes;
-    let shared = tally::increments() - before;
-    let before = tally::increments();
-    let alone: Vec<SceneResult> =
-        scenes.iter().map(|s| run::run(&d, &[*s], options).expect("runs").scenes.remove(0)).collect();
-    let separate = tally::increments() - before;
-    for (name, (a, b)) in names.iter().zip(together.into_iter().zip(alone)) {
-        assert_eq!(timeless(a), timeless(b), "{name}");
-    }
+    let saved = same_together_as_alone(&d, &scenes, options, "");
     // Integrated once instead of once per scene: the MID lift's start up to 64 025 (the lift,
     // the round trip) and 29 995 (the emergency stop, the brake trip); the lowering MAX trip's
     // up to 29 995 (itself, its emergency stop).
@@ -88,7 +96,6 @@ fn scenes_sharing_a_start_give_what_each_gives_alone() {
     let before = tally::increments();
     run::run(&d, lift, options).expect("runs");
     let lift_wrap = tally::increments() - before - 64_030;
-    let saved = separate - shared;
     assert!(saved > saved_steps && saved <= saved_steps + lift_wrap, "{saved} against {saved_steps} + {lift_wrap}");
 }
 
@@ -117,20 +124,9 @@ fn a_lowering_trip_and_its_round_trip_share_their_wrap_as_the_lift_does() {
              direction = \"lower\"\nreturn_after_s = 10.0\noutput_step_s = {round_step_s}\n"
         ));
         let scenes: Vec<_> = d.scenes.iter().collect();
-        let before = tally::increments();
-        let together = run::run(&d, &scenes, options).expect("runs").scenes;
-        let shared = tally::increments() - before;
-        let before = tally::increments();
-        let alone: Vec<SceneResult> =
-            scenes.iter().map(|s| run::run(&d, &[*s], options).expect("runs").scenes.remove(0)).collect();
-        let separate = tally::increments() - before;
-        for (a, b) in together.into_iter().zip(alone) {
-            let name = a.name.clone();
-            assert_eq!(timeless(a), timeless(b), "{name}, round trip rows every {round_step_s} s");
-        }
+        let saved = same_together_as_alone(&d, &scenes, options, &format!(", round trip rows every {round_step_s} s"));
         // The ropes share the lowering trip up to its last recorded step before its end (64 025
         // of 1 ms, as for the lift); the wrap shares some of its increments only where it goes on.
-        let saved = separate - shared;
         if continues {
             assert!(saved > 64_025, "the wrap's increments saved too: {saved}");
         } else {
