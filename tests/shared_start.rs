@@ -3,7 +3,8 @@
 //! start once, and each continues from its own last shared step: every result is the one of the
 //! scene run alone, to the last bit, lifting and lowering, for an imposed emergency stop, a
 //! stop by the `[brake]` and a round trip; and the steps saved are exactly those shared (with
-//! some of the lift's wrap increments, where the round trip's wrap goes on from the lift's).
+//! some of the lift's wrap increments, where the wrap of the round trip or of the emergency
+//! stop goes on from the lift's, even when it reports at another interval).
 
 use std::path::Path;
 use wrapcalc::design::{Design, DutyCycleScene, SceneKind};
@@ -89,14 +90,40 @@ fn scenes_sharing_a_start_give_what_each_gives_alone() {
     // the round trip) and 29 995 (the emergency stop, the brake trip); the lowering MAX trip's
     // up to 29 995 (itself, its emergency stop).
     let saved_steps = (64_025 + 64_025 + 29_995 + 29_995 - 64_025) + (29_995 + 29_995 - 29_995);
-    // The round trip's wrap goes on from the state the lift's own wrap kept at 64.025 s: it
-    // saves some of the lift's wrap increments, at most all of them (the lift alone counts its
-    // 64 030 rope steps of 1 ms and its wrap's increments).
-    let lift = &scenes[..1];
-    let before = tally::increments();
-    run::run(&d, lift, options).expect("runs");
-    let lift_wrap = tally::increments() - before - 64_030;
-    assert!(saved > saved_steps && saved <= saved_steps + lift_wrap, "{saved} against {saved_steps} + {lift_wrap}");
+    // The wraps of the round trip and of the emergency stop go on from the states the lift's
+    // own wrap kept at 64.025 s and 29.995 s, and the lowering emergency stop's from the
+    // lowering trip's at 29.995 s: each saves some of its provider's wrap increments, at most
+    // all of them (a trip alone counts its 64 030 rope steps of 1 ms and its wrap's increments).
+    let wrap_of = |scene: &[&wrapcalc::design::Scene]| {
+        let before = tally::increments();
+        run::run(&d, scene, options).expect("runs");
+        tally::increments() - before - 64_030
+    };
+    let (lift_wrap, lower_wrap) = (wrap_of(&scenes[..1]), wrap_of(&scenes[4..5]));
+    let most = saved_steps + 2 * lift_wrap + lower_wrap;
+    assert!(saved > saved_steps && saved <= most, "{saved} against {saved_steps} … {most}");
+}
+
+/// An emergency stop whose rows come every 0.02 s goes on from the wrap of the trip it stops,
+/// whose rows come every 0.05 s: both fall on the instants of the ropes' samples, so the trip's
+/// run makes the stop's rows before the brake on its way, and each result is the one of the
+/// scene run alone, to the last bit; lifting and lowering. The saving is the ropes' start up to
+/// 29 995 steps and some of the trip's wrap increments up to 29.995 s, at most all of them.
+#[test]
+fn an_emergency_stop_goes_on_from_its_trip_s_wrap_at_another_row_interval() {
+    let _turn = TALLY.lock().unwrap_or_else(|e| e.into_inner());
+    let _ = rayon::ThreadPoolBuilder::new().num_threads(2).build_global();
+    let d = design();
+    let options = Options { nodes: 90, utilization_map: false, ..Options::default() };
+    for (trip, stop) in [("duty-MID", "emergency-MID"), ("duty-MAX-lower", "emergency-MAX-lower")] {
+        let scenes: Vec<_> = [trip, stop].iter().map(|n| d.scenes.iter().find(|s| s.name == *n).unwrap()).collect();
+        assert_eq!((cycle(&d, trip).output_step_s, cycle(&d, stop).output_step_s), (0.05, 0.02));
+        let saved = same_together_as_alone(&d, &scenes, options, &format!(" ({trip} with {stop})"));
+        let before = tally::increments();
+        run::run(&d, &scenes[..1], options).expect("runs");
+        let trip_wrap = tally::increments() - before - 64_030;
+        assert!(saved > 29_995 && saved <= 29_995 + trip_wrap, "{trip}: {saved} against 29 995 + {trip_wrap}");
+    }
 }
 
 /// The reference sheet's hoist with `scenes` (TOML) as its only scenes.
@@ -110,14 +137,15 @@ fn with_scenes(scenes: &str) -> Design {
 /// The mirror of the lift and its round trip: a lowering trip and the round trip that lowers,
 /// rests and lifts back. Run together, the round trip's wrap goes on from the lowering trip's
 /// state where they part, and each result is still the one of the scene run alone, to the last
-/// bit; with the round trip reporting at another interval (its rows sampled differently) it
-/// cannot go on from it, and its results are again its own.
+/// bit, also with the round trip reporting every 0.04 s (rows on the ropes' samples, every
+/// 5 ms); with its rows every 0.013 s, between the samples, it cannot go on from it, and its
+/// results are again its own.
 #[test]
 fn a_lowering_trip_and_its_round_trip_share_their_wrap_as_the_lift_does() {
     let _turn = TALLY.lock().unwrap_or_else(|e| e.into_inner());
     let _ = rayon::ThreadPoolBuilder::new().num_threads(2).build_global();
     let options = Options { nodes: 90, utilization_map: false, ..Options::default() };
-    for (round_step_s, continues) in [(0.05, true), (0.04, false)] {
+    for (round_step_s, continues) in [(0.05, true), (0.04, true), (0.013, false)] {
         let d = with_scenes(&format!(
             "[[scene]]\nname = \"down\"\nkind = \"duty-cycle\"\npayload_kg = 30000.0\ndirection = \"lower\"\n\
              output_step_s = 0.05\n\n[[scene]]\nname = \"down-and-up\"\nkind = \"duty-cycle\"\npayload_kg = 30000.0\n\
@@ -131,6 +159,33 @@ fn a_lowering_trip_and_its_round_trip_share_their_wrap_as_the_lift_does() {
             assert!(saved > 64_025, "the wrap's increments saved too: {saved}");
         } else {
             assert_eq!(saved, 64_025, "only the ropes' shared steps");
+        }
+    }
+}
+
+/// A duty cycle's rows fall on the instants of the ropes' samples (every 5 ms), however their
+/// interval is written: the same trip reported every 0.05 s and every 0.02 s gives the same
+/// rows at the instants both report (every 0.1 s), to the last bit, lifting and lowering (a
+/// row 1 ulp beside a sample would cut its interval and move the results in their last bits).
+#[test]
+fn a_trip_reported_at_two_intervals_agrees_where_both_report() {
+    let options = Options { nodes: 90, utilization_map: false, ..Options::default() };
+    for direction in ["lift", "lower"] {
+        let rows = |step_s: f64| {
+            let d = with_scenes(&format!(
+                "[[scene]]\nname = \"trip\"\nkind = \"duty-cycle\"\npayload_kg = 30000.0\ndirection = \"{direction}\"\n\
+                 output_step_s = {step_s}\n"
+            ));
+            let scenes: Vec<_> = d.scenes.iter().collect();
+            run::run(&d, &scenes, options).expect("runs").scenes.remove(0).history.expect("a history").rows
+        };
+        let (coarse, fine) = (rows(0.05), rows(0.02));
+        let common: Vec<_> = coarse.iter().filter(|r| fine.iter().any(|f| f.t_s == r.t_s)).collect();
+        // 64.03 s: a row every 0.1 s from 0 (the rows at the start and the end too).
+        assert!(common.len() >= 640, "{direction}: {} rows in common", common.len());
+        for r in common {
+            let f = fine.iter().find(|f| f.t_s == r.t_s).expect("in both");
+            assert_eq!(r, f, "{direction} at {} s", r.t_s);
         }
     }
 }

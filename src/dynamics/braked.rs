@@ -82,7 +82,7 @@ pub fn braked_stop(
     refresh(&mut st.sides, a_trip)?;
     st.kin.accel_m_s2 = a_trip;
     let every = opt.record_every.max(1);
-    let mut out = vec![sample_of(p, st.t_s, st.kin, &st.sides, st.work_j, st.dissipated_j)];
+    let mut out = vec![sample_of(p, st.t_s, st.kin, &st.sides, (st.work_j, st.dissipated_j), opt.energy)];
     let max_steps = (body.max_stop_s / dt).ceil() as usize;
     let mut scratch = (st.sides.clone(), st.sides.clone());
     for step in 1..=max_steps {
@@ -100,7 +100,7 @@ pub fn braked_stop(
             st.kin.speed_m_s = 0.0;
         }
         if stopped || step % every == 0 {
-            out.push(sample_of(p, st.t_s, st.kin, &st.sides, st.work_j, st.dissipated_j));
+            out.push(sample_of(p, st.t_s, st.kin, &st.sides, (st.work_j, st.dissipated_j), opt.energy));
         }
         if stopped {
             return Ok(out);

@@ -22,7 +22,8 @@ pub struct SimOptions {
     /// side 2), m, with the static shape of an extra end force (linear along the rope): starts
     /// a free vibration. Zero for the usual start in static equilibrium.
     pub initial_offset_m: [f64; 2],
-    /// Whether to keep the energy balance (`work_j`, `dissipated_j` of the samples; 0 without).
+    /// Whether to keep the energy balance (`energy_j`, `work_j`, `dissipated_j` of the samples; 0
+    /// without).
     pub energy: bool,
     /// Whether to step the two sides on two threads (without the energy balance only): the
     /// same numbers, in about half the time when a second core is idle.
@@ -67,7 +68,8 @@ pub struct DynSample {
     pub stretch2_m: f64,
     /// Mechanical energy of the motion relative to the rigid (pulley-driven) motion, both sides:
     /// `Σ ½vᵀMv + ½qᵀKq − Fᵀq` (kinetic, strain, and the potential of the weight and the
-    /// inertial load of the prescribed acceleration), J.
+    /// inertial load of the prescribed acceleration), J. 0 in a run without the energy balance
+    /// ([`SimOptions::energy`] false), as `work_j` and `dissipated_j` are.
     pub energy_j: f64,
     /// Work done on the relative motion since the start by the prescribed motion: the changing
     /// length (rope entering or leaving a side changes M and K) and the changing loads (jerk,
@@ -198,7 +200,7 @@ pub fn simulate_streamed(
         return Ok(run);
     }
     let mut out = Vec::with_capacity((steps + 1 - first_step) / every + 2);
-    out.push(sample_of(p, t_prev, profile.at(t_prev), &sides, work_j, dissipated_j));
+    out.push(sample_of(p, t_prev, profile.at(t_prev), &sides, (work_j, dissipated_j), opt.energy));
     let mut run = Stepping { sides, work_j, dissipated_j, t_prev };
     let mut kept = (keep_step == Some(first_step - 1)).then(|| run.checkpoint(first_step - 1, opt));
     let mut sent = 0;
@@ -234,7 +236,7 @@ pub fn simulate_prefix(
     let last = keep_steps.iter().copied().filter(|k| *k < steps).max().unwrap_or(0);
     let sides = initial_sides(p, profile, opt)?;
     let mut out = Vec::with_capacity(last / opt.record_every.max(1) + 2);
-    out.push(sample_of(p, 0.0, profile.at(0.0), &sides, 0.0, 0.0));
+    out.push(sample_of(p, 0.0, profile.at(0.0), &sides, (0.0, 0.0), opt.energy));
     let mut run = Stepping { sides, work_j: 0.0, dissipated_j: 0.0, t_prev: 0.0 };
     let mut kept: Vec<Checkpoint> = keep_steps.contains(&0).then(|| run.checkpoint(0, opt)).into_iter().collect();
     run.steps(p, profile, opt, (1..=last, steps), &mut out, &mut |step, run, _| {
@@ -294,7 +296,7 @@ impl Stepping {
             self.dissipated_j += d;
             self.t_prev = t;
             if step % every == 0 || step == steps {
-                out.push(sample_of(p, t, kin, &self.sides, self.work_j, self.dissipated_j));
+                out.push(sample_of(p, t, kin, &self.sides, (self.work_j, self.dissipated_j), opt.energy));
             }
             after(step, self, out);
         }
@@ -390,16 +392,18 @@ fn keep_step(keep_at_s: f64, total_s: f64, dt: f64, steps: usize) -> Option<usiz
     Some(k)
 }
 
-/// The recorded sample of the sides' state at `t_s` with the pulley's kinematics `k`.
+/// The recorded sample of the sides' state at `t_s` with the pulley's kinematics `k` and the
+/// run's `(work_j, dissipated_j)`; its energy only where the run keeps the energy balance
+/// (`energy`), 0 elsewhere as the balance's other terms are.
 pub(super) fn sample_of(
     p: &HoistParams,
     t_s: f64,
     k: super::Kinematics,
     sides: &[Side2],
-    work_j: f64,
-    dissipated_j: f64,
+    (work_j, dissipated_j): (f64, f64),
+    energy: bool,
 ) -> DynSample {
-    sample_from(p, t_s, k, [SideSample::of(&sides[0]), SideSample::of(&sides[1])], work_j, dissipated_j)
+    sample_from(p, t_s, k, [SideSample::of(&sides[0], energy), SideSample::of(&sides[1], energy)], work_j, dissipated_j)
 }
 
 /// What a sample takes from one side's state (totals of all its ropes).
@@ -413,13 +417,15 @@ pub(super) struct SideSample {
 }
 
 impl SideSample {
-    pub(super) fn of(s: &Side2) -> Self {
+    /// The side's totals; its energy only with `energy` (0 without, as the work and the
+    /// dissipation of a run without the energy balance are).
+    pub(super) fn of(s: &Side2, energy: bool) -> Self {
         Self {
             top_n: s.state.top_tension_n(&s.coeffs),
             anchor_n: s.state.anchor_tension_n(&s.coeffs),
             mid_n: s.state.mid_tension_n(&s.coeffs),
             stretch_m: s.state.end_stretch_m(),
-            energy_j: s.coeffs.energy_j(&s.state.q, &s.state.v),
+            energy_j: if energy { s.coeffs.energy_j(&s.state.q, &s.state.v) } else { 0.0 },
         }
     }
 }

@@ -62,7 +62,7 @@ pub(super) fn run(
     let t0 = plan.t_prev_s;
     let mut out = Vec::with_capacity(a.records.len() + 1);
     let mut motion = profile.cursor();
-    out.push(sample_of(p, t0, motion.at(t0), &initial, plan.work_j, plan.dissipated_j));
+    out.push(sample_of(p, t0, motion.at(t0), &initial, (plan.work_j, plan.dissipated_j), opt.energy));
     for ((t, sa), (_, sb)) in a.records.into_iter().zip(b.records) {
         out.push(sample_from(p, t, motion.at(t), [sa, sb], plan.work_j, plan.dissipated_j));
     }
@@ -131,7 +131,7 @@ fn run_side(p: &HoistParams, profile: &MotionProfile, opt: &SimOptions, mut side
                 return run;
             }
             if a.step % every == 0 || a.step == plan.steps {
-                run.records.push((a.t_s, SideSample::of(&side)));
+                run.records.push((a.t_s, SideSample::of(&side, opt.energy)));
             }
             if plan.keep_step == Some(a.step) {
                 run.kept = Some((a.t_s, side.clone()));

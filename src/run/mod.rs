@@ -24,7 +24,7 @@ use derive::{derive_answers, ensure_finite};
 use loads::run_loads;
 use shared_run::run_shared;
 use time::{run_duty_cycle, run_history};
-use wrap_run::{WrapCheckpoint, WrapShare};
+use wrap_run::{Kept, WrapShare};
 
 use crate::cost::{self, Estimate};
 use crate::derived::WrapSummary;
@@ -324,7 +324,7 @@ pub fn run_with_progress(
         let context = SceneContext { parallel_sides, prefix, wrap };
         let (result, kept) = match run_scene(design, scenes[i], options, context) {
             Ok((r, kept)) => (Ok(SceneResult { cost: Some(e), ..r }), kept),
-            Err(e) => (Err(e), None),
+            Err(e) => (Err(e), Vec::new()),
         };
         failed.fetch_or(result.is_err(), Ordering::Relaxed);
         progress(seconds);
@@ -392,19 +392,21 @@ struct SceneContext<'a> {
     wrap: WrapShare<'a>,
 }
 
-/// Runs one scene; returns with it the wrap's state it kept for another scene, if any.
+/// Runs one scene; returns with it the wrap's states it kept for other scenes.
 fn run_scene(
     design: &Design,
     scene: &Scene,
     options: Options,
     context: SceneContext,
-) -> Result<(SceneResult, Option<WrapCheckpoint>), RunError> {
+) -> Result<(SceneResult, Kept), RunError> {
     let start = Instant::now();
     let plan = planner::plan_with_lining(scene, options.request, design.lining.is_some())?;
     let spare_core = context.parallel_sides;
     let (mut result, ropes, kept) = match &scene.kind {
-        SceneKind::Loads(loads) => (run_loads(design, scene, loads, plan, options)?, None, None),
-        SceneKind::History(history) => (run_history(design, scene, history, plan, options, spare_core)?, None, None),
+        SceneKind::Loads(loads) => (run_loads(design, scene, loads, plan, options)?, None, Vec::new()),
+        SceneKind::History(history) => {
+            (run_history(design, scene, history, plan, options, spare_core)?, None, Vec::new())
+        }
         SceneKind::DutyCycle(cycle) => {
             let run = run_duty_cycle(design, scene, cycle, plan, options, context)?;
             (run.result, run.ropes, run.kept)

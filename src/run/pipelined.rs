@@ -97,9 +97,11 @@ pub(super) fn run<R: Send>(
             drop(tx);
             (ropes, also())
         });
-        // The lattice spacing is worked out while the ropes make their first samples.
-        let centrifugal_step_n = spacing_from_profile(design, cycle, profile);
-        let lattice = (centrifugal_step_n, profile.duration_s());
+        // The samples' instants and the lattice spacing are worked out while the ropes make
+        // their first samples.
+        let instants = sample_instants(cycle, profile);
+        let centrifugal_step_n = spacing_from_profile(design, profile, &instants);
+        let lattice = (centrifugal_step_n, profile.duration_s(), &instants[..]);
         let wrap_run = wrap_beside(design, &rx, direction_before, lattice, options, output);
         drop(rx);
         (producer.join(), (wrap_run, centrifugal_step_n))
@@ -119,7 +121,7 @@ fn wrap_beside(
     design: &Design,
     rx: &mpsc::Receiver<Vec<DynSample>>,
     direction_before: Direction,
-    (centrifugal_step_n, t_end_s): (f64, f64),
+    (centrifugal_step_n, t_end_s, instants): (f64, f64, &[f64]),
     options: Options,
     output: Output,
 ) -> Option<(HistoryRun, usize)> {
@@ -136,22 +138,27 @@ fn wrap_beside(
         fed += chunk.len();
         Some(level4::end_history(&chunk))
     };
-    let range = (s0.t_s, t_end_s);
+    let range = (s0.t_s, t_end_s, instants);
     // The ropes hold the other core: the rows' summaries are made in place.
     let (run, _) = history::run_growing(sim, &mut next, range, output, options.nodes, false).ok()?;
     Some((run, fed))
 }
 
-/// The m'v² lattice spacing of the samples the ropes will make, from the motion profile at
-/// their instants (those of [`dynamics::simulate_streamed`]: the start, every `record_every`-th
-/// step and the end), with the tensions' share left out.
-fn spacing_from_profile(design: &Design, cycle: &DutyCycleScene, profile: &MotionProfile) -> f64 {
+/// The instants of the samples the ropes will make (those of [`dynamics::simulate_streamed`]:
+/// the start, every `record_every`-th step and the end).
+fn sample_instants(cycle: &DutyCycleScene, profile: &MotionProfile) -> Vec<f64> {
     let every = ((level4::WRAP_SAMPLE_S / cycle.time_step_s).round() as usize).max(1);
     let opt = SimOptions { record_every: every, ..SimOptions::new(cycle.time_step_s, level4::ELEMENTS_PER_SIDE) };
+    dynamics::recorded_times(profile.duration_s(), &opt)
+}
+
+/// The m'v² lattice spacing of the samples the ropes will make, from the motion profile at
+/// their `instants`, with the tensions' share left out.
+fn spacing_from_profile(design: &Design, profile: &MotionProfile, instants: &[f64]) -> f64 {
     let m = design.rope.mass_per_m_kg;
-    let c_max = dynamics::recorded_times(profile.duration_s(), &opt)
-        .into_iter()
-        .map(|t| {
+    let c_max = instants
+        .iter()
+        .map(|&t| {
             let v = level4::at_rest_snapped(profile.at(t).speed_m_s);
             m * v * v
         })

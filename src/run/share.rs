@@ -8,6 +8,7 @@
 //! bit, with the shared stretch integrated once.
 
 use super::Options;
+use super::wrap_run::WrapKeep;
 use crate::design::{Design, Scene, SceneKind};
 use crate::model::level4::shared::RopePlan;
 use crate::planner::{self, Level};
@@ -36,17 +37,18 @@ pub(super) struct Member {
 }
 
 /// A member's wrap run that goes on from another's state: both run the wrap at level 2 (no
-/// rope elements to follow) and report rows at the same interval, and their trips agree up to
-/// `at_s`, a recorded step's instant. The consumer still checks, before it goes on, that the
-/// samples, rows and start agree ([`crate::model::history::Checkpoint::fits`]).
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// rope elements to follow) and their trips agree up to `at_s`, a recorded step's instant; the
+/// provider makes the consumer's rows before it on the way ([`WrapKeep`]). The consumer still
+/// checks, before it goes on, that the samples, rows and start agree
+/// ([`crate::model::history::Checkpoint::fits`]).
+#[derive(Debug, Clone, PartialEq)]
 pub(super) struct WrapPair {
     /// The member that keeps its state at `at_s` (its index among the run's scenes).
     pub provider: usize,
     /// The member that goes on from it.
     pub consumer: usize,
-    /// The instant the state is kept at (s).
-    pub at_s: f64,
+    /// The state to keep: at `at_s`, with when the consumer reports.
+    pub keep: WrapKeep,
 }
 
 /// The groups of `scenes`; a scene in none runs alone.
@@ -89,12 +91,10 @@ fn rope_plan(design: &Design, scene: &Scene, options: Options) -> Option<RopePla
     RopePlan::of(design, design.hoist.as_ref()?, cycle).ok()
 }
 
-/// The members of a group whose wrap goes on from another's: from the shortest trip to the
-/// longest, each goes on from the first member before it that keeps a state for no other, runs
-/// the wrap at level 2, reports rows at the same interval and makes every snapshot it asks for
-/// before their trips part, if they share a recorded step; else it may keep one for a later
-/// member. (The state kept is at the end of the shorter trip or before it, whose snapshots are
-/// its own.)
+/// The members of a group whose wrap goes on from another's: all from one provider, the
+/// member whose trip the others share the most of (the sum of the instants they part at; of
+/// equal ones the shortest trip, which is done first), each that shares a recorded step with
+/// it and asks for no snapshot before they part that the provider does not make.
 fn wrap_pairs(
     design: &Design,
     scenes: &[&Scene],
@@ -103,28 +103,32 @@ fn wrap_pairs(
     members: &[Member],
 ) -> Vec<WrapPair> {
     let plan_of = |i: usize| plans.iter().find(|(j, _)| *j == i).map(|(_, p)| p);
-    let rows_of = |i: usize| wrap_rows(design, scenes[i], options);
-    let mut order: Vec<(usize, &RopePlan, Rows)> =
-        members.iter().filter_map(|m| Some((m.index, plan_of(m.index)?, rows_of(m.index)?))).collect();
-    order.sort_by(|a, b| a.1.profile.duration_s().total_cmp(&b.1.profile.duration_s()).then(a.0.cmp(&b.0)));
-    let mut free: Vec<(usize, &RopePlan, Rows)> = Vec::new();
-    let mut pairs = Vec::new();
-    for (i, plan, rows) in order {
-        let shared = free.iter().enumerate().find_map(|(k, (p, provider, made))| {
-            let at_s = provider.fork_step(plan)? as f64 * plan.options.dt_s;
-            let same_step = made.step_s.to_bits() == rows.step_s.to_bits();
-            let snapshots = rows.snapshots_s.iter().filter(|t| **t <= at_s).all(|t| made.snapshots_s.contains(t));
-            (same_step && snapshots).then_some((k, *p, at_s))
-        });
-        match shared {
-            Some((k, provider, at_s)) => {
-                free.remove(k);
-                pairs.push(WrapPair { provider, consumer: i, at_s });
-            }
-            None => free.push((i, plan, rows)),
-        }
-    }
-    pairs
+    let eligible: Vec<(usize, &RopePlan, Rows)> = members
+        .iter()
+        .filter_map(|m| Some((m.index, plan_of(m.index)?, wrap_rows(design, scenes[m.index], options)?)))
+        .collect();
+    let parts_at = |p: &RopePlan, c: &RopePlan| p.fork_step(c).map(|k| k as f64 * c.options.dt_s);
+    // The pairs with `provider` as the provider.
+    let pairs_of = |(provider, plan, made): &(usize, &RopePlan, Rows)| -> Vec<WrapPair> {
+        eligible
+            .iter()
+            .filter(|(i, _, _)| i != provider)
+            .filter_map(|(i, c, rows)| {
+                let at_s = parts_at(plan, c)?;
+                let snapshots = rows.snapshots_s.iter().filter(|t| **t <= at_s).all(|t| made.snapshots_s.contains(t));
+                let keep = WrapKeep { at_s, step_s: rows.step_s, snapshots_s: rows.snapshots_s.clone() };
+                snapshots.then_some(WrapPair { provider: *provider, consumer: *i, keep })
+            })
+            .collect()
+    };
+    let shared = |pairs: &[WrapPair]| pairs.iter().map(|p| p.keep.at_s).sum::<f64>();
+    let candidates = eligible.iter().map(|e| (e, pairs_of(e)));
+    let best = candidates.max_by(|(a, pa), (b, pb)| {
+        let by_share = shared(pa).total_cmp(&shared(pb));
+        let by_length = b.1.profile.duration_s().total_cmp(&a.1.profile.duration_s());
+        by_share.then(by_length).then(b.0.cmp(&a.0))
+    });
+    best.map(|(_, pairs)| pairs).unwrap_or_default()
 }
 
 /// When a duty cycle's wrap reports (the interval of its rows and its snapshots, s).
@@ -134,12 +138,14 @@ struct Rows {
     snapshots_s: Vec<f64>,
 }
 
-/// When a duty cycle's wrap reports, if it runs at level 2 with no rope elements to follow
-/// (those whose wrap can go on from another's).
+/// When a duty cycle's wrap reports, if it runs at level 2 with no rope elements to follow and
+/// is not stopped by the `[brake]` (those whose wrap can go on from another's: after a brake
+/// trips, the pulley's speed is the stop's own, and so is the m'v² lattice its wrap is spaced
+/// by, known only from its run).
 fn wrap_rows(design: &Design, scene: &Scene, options: Options) -> Option<Rows> {
     let SceneKind::DutyCycle(cycle) = &scene.kind else { return None };
     let plan = planner::plan_with_lining(scene, options.request, design.lining.is_some()).ok()?;
     let rigid = design.lining.is_none() && planner::wrap_level(&plan, false) == Level::Rigid2;
     let rows = Rows { step_s: cycle.output_step_s, snapshots_s: cycle.snapshots_s.clone() };
-    (rigid && scene.tracks.is_none()).then_some(rows)
+    (rigid && scene.tracks.is_none() && cycle.brake_stop_s.is_none()).then_some(rows)
 }

@@ -2,7 +2,7 @@
 //! scheduler ([`super::schedule`]) takes them: each group's start first, then its scenes by what
 //! remains of their own work, a scene whose wrap others go on from before them.
 
-use super::wrap_run::{WrapCheckpoint, WrapShare};
+use super::wrap_run::{Kept, WrapCheckpoint, WrapKeep, WrapShare};
 use super::{RunError, SceneResult, schedule, share};
 use crate::cost::Estimate;
 use crate::model::level4::{self, shared::RopePrefix};
@@ -12,9 +12,8 @@ use std::sync::atomic::{AtomicBool, Ordering};
 /// A scene's result with its index among the run's scenes.
 pub(super) type Done = (usize, Result<SceneResult, RunError>);
 
-/// A scene run with the wrap's state it kept for another.
-pub(super) type OneScene<'a> =
-    dyn Fn(usize, Estimate, Option<&RopePrefix>, WrapShare) -> (Done, Option<WrapCheckpoint>) + Sync + 'a;
+/// A scene run with the wrap's states it kept for others.
+pub(super) type OneScene<'a> = dyn Fn(usize, Estimate, Option<&RopePrefix>, WrapShare) -> (Done, Kept) + Sync + 'a;
 
 /// The scenes of a run with `groups` sharing the start of their trip: each group's start is a
 /// task that makes its scenes ready when done ([`schedule`]), but those whose wrap goes on from
@@ -27,13 +26,14 @@ pub(super) fn run_shared(
     one: &OneScene,
 ) -> Vec<Done> {
     /// A scene with its ropes' start, the wrap's state it goes on from, and the scenes whose
-    /// wrap goes on from its own (with their ropes' start and the instant their state is kept at).
+    /// wrap goes on from its own (with their ropes' start and priority), with the states to
+    /// keep for them.
     struct SceneTask {
         index: usize,
         prefix: Option<RopePrefix>,
         from: Option<WrapCheckpoint>,
         then: Vec<(usize, Option<RopePrefix>, f64)>,
-        keep_at_s: Option<f64>,
+        keep: Vec<WrapKeep>,
     }
     enum Task {
         Start(usize),
@@ -42,7 +42,7 @@ pub(super) fn run_shared(
     let grouped: Vec<usize> = groups.iter().flat_map(|g| g.members.iter().map(|m| m.index)).collect();
     let mut initial: Vec<(f64, Task)> = (0..groups.len()).map(|g| (f64::INFINITY, Task::Start(g))).collect();
     initial.extend((0..estimates.len()).filter(|i| !grouped.contains(i)).map(|i| {
-        let task = SceneTask { index: i, prefix: None, from: None, then: Vec::new(), keep_at_s: None };
+        let task = SceneTask { index: i, prefix: None, from: None, then: Vec::new(), keep: Vec::new() };
         (estimates[i].seconds, Task::Scene(Box::new(task)))
     }));
     let done = Mutex::new(Vec::with_capacity(estimates.len()));
@@ -75,23 +75,24 @@ pub(super) fn run_shared(
                 let consumers = group.wraps.iter().filter(|w| w.provider == i);
                 let then: Vec<_> =
                     consumers.clone().map(|w| (w.consumer, prefix_of(w.consumer), remaining(w.consumer))).collect();
-                let keep_at_s = consumers.map(|w| w.at_s).next();
+                let keep = consumers.map(|w| w.keep.clone()).collect();
                 // A scene whose state others wait for counts their work too: it starts first.
                 let waiting: f64 = then.iter().map(|(_, _, s)| s).sum();
-                let task = SceneTask { index: i, prefix: prefix_of(i), from: None, then, keep_at_s };
+                let task = SceneTask { index: i, prefix: prefix_of(i), from: None, then, keep };
                 push(remaining(i) + waiting, Task::Scene(Box::new(task)));
             }
         }
         Task::Scene(task) => {
-            let mut kept = None;
+            let mut kept = Vec::new();
             if !failed.load(Ordering::Relaxed) {
-                let wrap = WrapShare { keep_at_s: task.keep_at_s, from: task.from.as_ref() };
-                let (result, state) = one(task.index, estimates[task.index].clone(), task.prefix.as_ref(), wrap);
-                kept = state;
+                let wrap = WrapShare { keep: &task.keep, from: task.from.as_ref() };
+                let (result, states) = one(task.index, estimates[task.index].clone(), task.prefix.as_ref(), wrap);
+                kept = states;
                 done.lock().unwrap_or_else(|poisoned| poisoned.into_inner()).push(result);
             }
-            for (index, prefix, priority) in task.then {
-                let next = SceneTask { index, prefix, from: kept.clone(), then: Vec::new(), keep_at_s: None };
+            kept.resize(task.then.len(), None);
+            for ((index, prefix, priority), from) in task.then.into_iter().zip(kept) {
+                let next = SceneTask { index, prefix, from, then: Vec::new(), keep: Vec::new() };
                 push(priority, Task::Scene(Box::new(next)));
             }
         }

@@ -4,7 +4,7 @@
 
 use super::pipelined;
 use super::trip::{self, Trip};
-use super::wrap_run::{Initial, ModelRun, WrapCheckpoint, WrapShare, rolling_initial, run_model, wrap_model};
+use super::wrap_run::{Initial, Kept, ModelRun, WrapShare, rolling_initial, run_model, wrap_model};
 use super::{HistoryOutput, Options, RunError, SceneContext, SceneResult, WrapResult, empty};
 use crate::check;
 use crate::design::{Design, Direction, DutyCycleScene, HistorySample, HistoryScene, Hoist, Scene};
@@ -130,11 +130,11 @@ pub(super) fn run_duty_cycle(
 }
 
 /// A duty cycle's result, its suspended ropes' run (the emergency margins continue from it)
-/// and the wrap's state kept for another scene ([`WrapShare::keep_at_s`]).
+/// and the wrap's states kept for other scenes ([`WrapShare::keep`]).
 pub(super) struct DutyCycleRun {
     pub result: SceneResult,
     pub ropes: Option<RopeRun>,
-    pub kept: Option<WrapCheckpoint>,
+    pub kept: Kept,
 }
 
 /// The suspended ropes of a level-4 duty cycle, with the wrap's run beside them where it can be
@@ -223,14 +223,14 @@ struct Samples<'a> {
 
 /// A scene given as end tensions and speed over time (history and duty-cycle scenes): level 0
 /// over every sample, then (level ≥ 2) the discrete model through them; with the wrap's state
-/// kept for another scene, if asked for and made.
+/// kept for other scenes, as asked for and made.
 fn run_samples(
     design: &Design,
     scene: &Scene,
     input: Samples,
     plan: Plan,
     options: Options,
-) -> Result<(SceneResult, Option<WrapCheckpoint>), RunError> {
+) -> Result<(SceneResult, Kept), RunError> {
     let Samples {
         samples,
         accel_m_s2,
@@ -264,14 +264,14 @@ fn run_samples(
         if scene.tracks.is_some() {
             return Err(RunError::TracksBelowLevel2 { scene: scene.name.clone(), level: result.plan.level });
         }
-        return Ok((result, None));
+        return Ok((result, Vec::new()));
     }
     let first = states[0].1;
     // Uniform rope when the history starts balanced, else the steady rolling state of its first loads.
     let rolling = rolling_initial(design, &first, direction);
     let initial = Initial::of(&rolling, first, direction);
     let (done, for_tracks) = match made_beside {
-        Some(run) => (ModelRun { run, level3: None, kept: None, reused_increments: 0 }, None),
+        Some(run) => (ModelRun { run, level3: None, kept: Vec::new(), reused_increments: 0 }, None),
         None => {
             let model = wrap_model(design, scene, &result.plan, samples, initial, options)?;
             // The tracks follow the same model from the same start.

@@ -150,23 +150,40 @@ pub(super) fn wrap_history(
 /// up to that instant ([`super::share`]).
 pub(super) type WrapCheckpoint = history::Checkpoint<level2::Simulation<'static>>;
 
-/// What a scene's wrap run shares with another scene's: a state to keep for it on the way
-/// (at that instant, s), or one kept by it to go on from.
+/// The states a wrap run kept for other scenes, one per [`WrapKeep`] it was asked for (`None`
+/// where it could not keep it).
+pub(super) type Kept = Vec<Option<WrapCheckpoint>>;
+
+/// A state for another scene to keep on the way: at `at_s` (a sample's instant), for a duty
+/// cycle whose rows come every `step_s` and at `snapshots_s` (its rows before `at_s` are made
+/// on the way too).
+#[derive(Debug, Clone, PartialEq)]
+pub(super) struct WrapKeep {
+    /// The instant (s).
+    pub at_s: f64,
+    /// The other scene's `output_step_s` (s).
+    pub step_s: f64,
+    /// The other scene's snapshots (s).
+    pub snapshots_s: Vec<f64>,
+}
+
+/// What a scene's wrap run shares with other scenes': states to keep for them on the way, or
+/// one kept by another to go on from.
 #[derive(Debug, Clone, Copy, Default)]
 pub(super) struct WrapShare<'a> {
-    /// Keep the state at this instant (a sample's).
-    pub keep_at_s: Option<f64>,
+    /// Keep these states.
+    pub keep: &'a [WrapKeep],
     /// Go on from this state when it fits the scene's history ([`history::Checkpoint::fits`])
     /// and its model started alike.
     pub from: Option<&'a WrapCheckpoint>,
 }
 
-/// A wrap run's result: its history, level 3's counters, the state kept on the way and the
+/// A wrap run's result: its history, level 3's counters, the states kept on the way and the
 /// increments not computed because the run went on from another's state.
 pub(super) struct ModelRun {
     pub run: HistoryRun,
     pub level3: Option<level3::Level3Stats>,
-    pub kept: Option<WrapCheckpoint>,
+    pub kept: Kept,
     pub reused_increments: u64,
 }
 
@@ -180,7 +197,7 @@ pub(super) fn run_model(
     (output, options, parallel_rows): (Output, Options, bool),
     share: WrapShare,
 ) -> Result<ModelRun, RunError> {
-    let done = |run, level3| ModelRun { run, level3, kept: None, reused_increments: 0 };
+    let done = |run, level3| ModelRun { run, level3, kept: Vec::new(), reused_increments: 0 };
     let sim = match model {
         Model::Elastic(sim, mut stats) => {
             let (run, run_stats) = history::run_with(*sim, samples, output, options.nodes, parallel_rows)
@@ -197,15 +214,20 @@ pub(super) fn run_model(
         let (run, _) = history::run_from(from, model, samples, layout, parallel_rows).map_err(err)?;
         return Ok(ModelRun { reused_increments: from.model.stats.increments, ..done(run, None) });
     }
-    match share.keep_at_s {
-        Some(at_s) => {
-            let (run, _, kept) =
-                history::run_keeping(sim, samples, layout, parallel_rows, at_s, level2::Simulation::detached)
-                    .map_err(err)?;
-            Ok(ModelRun { kept, ..done(run, None) })
-        }
-        None => history::run_with(sim, samples, output, options.nodes, parallel_rows)
+    if share.keep.is_empty() {
+        return history::run_with(sim, samples, output, options.nodes, parallel_rows)
             .map(|(run, _)| done(run, None))
-            .map_err(err),
+            .map_err(err);
     }
+    let keeps: Vec<history::KeepFor> = share
+        .keep
+        .iter()
+        .map(|k| history::KeepFor {
+            at_s: k.at_s,
+            output: Output { snapshots_s: &k.snapshots_s, step_s: Some(k.step_s), ..output },
+        })
+        .collect();
+    let (run, _, kept) =
+        history::run_keeping(sim, samples, layout, parallel_rows, &keeps, level2::Simulation::detached).map_err(err)?;
+    Ok(ModelRun { kept, ..done(run, None) })
 }

@@ -11,7 +11,7 @@ pub mod sample;
 
 pub use output::{HistoryRow, HistoryRun, MAP_COLUMNS, Output, Snapshot};
 pub use report::SolverReport;
-pub use resume::{Checkpoint, run_from, run_keeping};
+pub use resume::{Checkpoint, KeepFor, run_from, run_keeping};
 pub use sample::HistorySample;
 
 use crate::contact::NodeState;
@@ -124,8 +124,9 @@ pub fn run_with<M: WrapModel>(
     model.settle()?;
     let empty = HistoryRun::with_capacity(times.len());
     let layout = (&times[..], output, output_nodes);
-    let (run, _) = rows::run_rows(&mut model, &mut rows::Whole(samples), layout, parallel_rows, empty, None)?;
-    Ok(finished(&model, run))
+    let runs =
+        rows::run_rows(&mut model, &mut rows::Whole(samples), layout, parallel_rows, (vec![empty], None), Vec::new())?;
+    Ok(finished(&model, runs.into_iter().next().expect("the run's rows")))
 }
 
 /// The run with the model's solver report and root searches, and the model's counters.
@@ -148,23 +149,24 @@ pub trait Growing {
 /// [`run_with`] through a history that is still being made: `next` gives its next samples in
 /// order (`None` once it is complete), and the model is handed them as the rows need them, so
 /// that it never steps to a time the history has not passed. The history runs from `t0_s` to
-/// `t_end_s`; without `output.sample_rows` the rows, and all else, are those of [`run_with`]
-/// on the whole history, to the last bit.
+/// `t_end_s` with its samples at `instants` (known before they are made); without
+/// `output.sample_rows` the rows, and all else, are those of [`run_with`] on the whole history,
+/// to the last bit.
 pub fn run_growing<M: WrapModel + Growing>(
     mut model: M,
     next: &mut dyn FnMut() -> Option<Vec<HistorySample>>,
-    (t0_s, t_end_s): (f64, f64),
+    (t0_s, t_end_s, instants): (f64, f64, &[f64]),
     output: Output,
     output_nodes: usize,
     parallel_rows: bool,
 ) -> Result<(HistoryRun, M::Counters), M::Error> {
-    let times = output.times_between(t0_s, t_end_s, std::iter::empty());
+    let times = output.times_between(t0_s, t_end_s, instants.iter().copied());
     let mut source = rows::Fed { next, done: false };
     // The first interval's end, for the settling.
     rows::RowSamples::at(&mut source, &mut model, t0_s);
     model.settle()?;
     let empty = HistoryRun::with_capacity(times.len());
     let layout = (&times[..], output, output_nodes);
-    let (run, _) = rows::run_rows(&mut model, &mut source, layout, parallel_rows, empty, None)?;
-    Ok(finished(&model, run))
+    let runs = rows::run_rows(&mut model, &mut source, layout, parallel_rows, (vec![empty], None), Vec::new())?;
+    Ok(finished(&model, runs.into_iter().next().expect("the run's rows")))
 }

@@ -124,12 +124,19 @@ impl Output<'_> {
         self.times_between(t0, t_end, samples.iter().map(|s| s.t_s))
     }
 
-    /// [`Self::times`] of a history from `t0` to `t_end` (s) whose sample times are `sample_times`
-    /// (taken only with `sample_rows`).
+    /// [`Self::times`] of a history from `t0` to `t_end` (s) whose samples are at the instants
+    /// `sample_times` (ascending; rows themselves only with `sample_rows`). A regular row within
+    /// round-off of a sample's instant ([`on_sample`]) is put on it: `t0 + k·step` computed in
+    /// floating point often misses the instant it stands for by an ulp, and a row beside a
+    /// sample would cut that sample's interval, so that the same trip reported at another
+    /// interval would differ in its last bits.
     pub fn times_between(&self, t0: f64, t_end: f64, sample_times: impl Iterator<Item = f64>) -> Vec<f64> {
+        let instants: Vec<f64> = sample_times.collect();
         let steps = self.step_s.filter(|s| *s > 0.0).map_or(0, |s| ((t_end - t0) / s).floor() as usize);
-        let regular = (1..=steps).map(|k| t0 + k as f64 * self.step_s.unwrap_or(0.0)).filter(|t| *t < t_end);
-        let at_samples = sample_times.filter(|_| self.sample_rows);
+        let regular = (1..=steps)
+            .map(|k| on_sample(t0 + k as f64 * self.step_s.unwrap_or(0.0), &instants))
+            .filter(|t| *t < t_end);
+        let at_samples = instants.iter().copied().filter(|_| self.sample_rows);
         let mut times: Vec<f64> =
             at_samples.chain(self.snapshots_s.iter().copied()).chain(regular).chain([t0, t_end]).collect();
         times.sort_by(f64::total_cmp);
@@ -144,9 +151,41 @@ impl Output<'_> {
     }
 }
 
+/// `t_s`, or the instant of `instants` (ascending) it misses by round-off only: by at most
+/// [`ON_SAMPLE_REL`] of its magnitude (at least 1 s).
+pub fn on_sample(t_s: f64, instants: &[f64]) -> f64 {
+    let i = instants.partition_point(|s| *s < t_s);
+    let tol = ON_SAMPLE_REL * t_s.abs().max(1.0);
+    let near = [i.checked_sub(1), Some(i)].into_iter().flatten().filter_map(|j| instants.get(j).copied());
+    near.filter(|s| (s - t_s).abs() <= tol).min_by(|a, b| (a - t_s).abs().total_cmp(&(b - t_s).abs())).unwrap_or(t_s)
+}
+
+/// How far a row may be from a sample's instant to be put on it, relative to the time (at least
+/// 1 s): a few hundred ulps, far below any interval a history is sampled or reported at.
+pub const ON_SAMPLE_REL: f64 = 1e-13;
+
 impl Default for Output<'_> {
     /// A row at every sample, no snapshots.
     fn default() -> Self {
         Self { snapshots_s: &[], step_s: None, sample_rows: true, utilization_map: true }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// 3 × 0.05 is 0.15000000000000002 in floating point, the ropes' sample at step 150 of
+    /// 1 ms is 0.15: the row goes on the sample. A time between two samples (0.1525), or before
+    /// the first and after the last, stays where it is.
+    #[test]
+    fn a_row_within_round_off_of_a_sample_goes_on_it() {
+        let instants: Vec<f64> = (0..=60).map(|k| (5 * k) as f64 * 1e-3).collect();
+        let row = 3.0 * 0.05;
+        assert_ne!(row, 0.15);
+        assert_eq!(on_sample(row, &instants), 150.0 * 1e-3);
+        assert_eq!(on_sample(0.1525, &instants), 0.1525);
+        assert_eq!(on_sample(-1.0, &instants), -1.0);
+        assert_eq!(on_sample(1.0, &instants), 1.0);
     }
 }

@@ -5,7 +5,7 @@ use super::sample::{interpolate, speed_slope};
 use super::{HistoryRun, HistorySample, Output, Snapshot, WrapModel};
 use crate::derived::WrapSummary;
 use crate::model::level0::{EndState, euler_limit};
-use crate::roots::{RootError, RootStats};
+use crate::roots::RootError;
 use std::sync::OnceLock;
 
 /// Where the rows take the history from.
@@ -48,95 +48,113 @@ fn inputs(samples: &[HistorySample], t_s: f64) -> (HistorySample, f64, bool) {
 }
 
 /// A state to keep on the way: the model at `at_s` (a sample's instant, between two rows) is
-/// handed to `keep` with the number of rows before it, when the run passes that instant.
+/// handed to `keep` when the run passes that instant.
 pub(super) struct Keep<'k, M> {
     pub at_s: f64,
-    pub keep: &'k mut dyn FnMut(&M, usize),
+    pub keep: &'k mut dyn FnMut(&M),
 }
 
-/// Steps the settled `model` through `times`, a row at each, appending to `run` (empty, or the
-/// rows of the run the model comes from); with `parallel_rows` the rows' summaries (but a
-/// snapshot's) are jobs on other threads of the pool. A summary that failed before the row
-/// where stepping failed is the first error. With `keep`, also returns the root searches of
-/// the rows before the kept state.
+/// Which runs the rows go to: all to the first (`None`), or row `k` to each run whose bit is
+/// set in `targets[k]` (bit 0 the run's own; another run's rows are those a later run of
+/// another history reports before it goes on from a kept state).
+pub(super) type Targets<'t> = Option<&'t [u32]>;
+
+/// Steps the settled `model` through `times`, a row at each, appending each row to the runs of
+/// `runs` that `targets` names (empty, or the rows of the run the model comes from); with
+/// `parallel_rows` the rows' summaries (but a snapshot's) are jobs on other threads of the pool.
+/// Snapshots go to the first run. A summary that failed before the row where stepping failed is
+/// the first error. `keeps` (ascending in time) are handed the model as the run passes them.
 pub(super) fn run_rows<M: WrapModel, S: RowSamples<M>>(
     model: &mut M,
     source: &mut S,
     (times, output, output_nodes): (&[f64], Output, usize),
     parallel_rows: bool,
-    mut run: HistoryRun,
-    mut keep: Option<Keep<'_, M>>,
-) -> Result<(HistoryRun, Option<RootStats>), M::Error> {
+    (mut runs, targets): (Vec<HistoryRun>, Targets),
+    mut keeps: Vec<Keep<'_, M>>,
+) -> Result<Vec<HistoryRun>, M::Error> {
     let wrap = model.wrap();
     let limit = euler_limit(wrap.mu, wrap.wrap_angle_rad);
     let slots: Vec<Slot> = times.iter().map(|_| OnceLock::new()).collect();
-    let mut rows = Rows { times, slots: &slots, ends: Vec::with_capacity(times.len()), run: &mut run };
+    let mut snapshots = Vec::new();
+    let mut rows = Rows {
+        times,
+        slots: &slots,
+        ends: Vec::with_capacity(times.len()),
+        map: Vec::new(),
+        snapshots: &mut snapshots,
+    };
     let mut batch = Vec::with_capacity(JOBS_PER_TASK);
-    let mut kept_after = None;
+    keeps.reverse();
     let stepped = if parallel_rows {
         rayon::in_place_scope(|scope| {
             let jobs = (Some(scope), &mut batch);
-            let stepped =
-                step_rows(model, source, (&output, output_nodes), &mut rows, jobs, (&mut keep, &mut kept_after));
+            let stepped = step_rows(model, source, (&output, output_nodes), &mut rows, jobs, &mut keeps);
             // The rows before a failure keep their summaries.
             spawn_batch(scope, std::mem::take(&mut batch));
             stepped
         })
     } else {
         let jobs = (None, &mut batch);
-        step_rows(model, source, (&output, output_nodes), &mut rows, jobs, (&mut keep, &mut kept_after))
+        step_rows(model, source, (&output, output_nodes), &mut rows, jobs, &mut keeps)
     };
-    let ends = std::mem::take(&mut rows.ends);
-    let mut roots_before = None;
+    let (ends, mut map) = (std::mem::take(&mut rows.ends), std::mem::take(&mut rows.map).into_iter());
+    if let Some(own) = runs.first_mut() {
+        own.snapshots.append(&mut snapshots);
+    }
     for (k, ((t, end, gross_slip), slot)) in ends.into_iter().zip(slots).enumerate() {
-        if kept_after == Some(k) {
-            roots_before = Some(run.roots);
-        }
         let summary = slot.into_inner().expect("every row's summary was made")?;
-        run.push_row(t, &end, &summary, limit, gross_slip);
+        let to = targets.map_or(1, |t| t[k]);
+        let mut map_row = map.next();
+        let mut to_runs = runs.iter_mut().enumerate().filter(|(j, _)| to & (1 << j) != 0).peekable();
+        while let Some((_, run)) = to_runs.next() {
+            run.push_row(t, &end, &summary, limit, gross_slip);
+            let row = if to_runs.peek().is_some() { map_row.clone() } else { map_row.take() };
+            run.map.extend(row);
+        }
     }
     stepped?;
-    Ok((run, roots_before))
+    Ok(runs)
 }
 
 /// A row's summary, made in place or by a job.
 type Slot = OnceLock<Result<WrapSummary, RootError>>;
 
 /// What the rows of a run collect as the model steps: each row's time, end state and gross-slip
-/// flag, its summary's slot, and the map rows and snapshots (in the run).
+/// flag, its summary's slot, its map row and the snapshots.
 struct Rows<'a, 's> {
     times: &'a [f64],
     slots: &'s [Slot],
     ends: Vec<(f64, EndState, bool)>,
-    run: &'a mut HistoryRun,
+    map: Vec<Vec<f64>>,
+    snapshots: &'a mut Vec<Snapshot>,
 }
 
 /// Steps `model` through the rows' times; a row's summary is made in place, or (with a
 /// `scope`, but at a snapshot) by a job gathered in `batch` and spawned [`JOBS_PER_TASK`] at a
-/// time (the caller spawns what is left, after a failure too).
+/// time (the caller spawns what is left, after a failure too). `keeps` (the next one last) are
+/// handed the model at their instants.
 fn step_rows<'s, M: WrapModel, S: RowSamples<M>>(
     model: &mut M,
     source: &mut S,
     (output, output_nodes): (&Output, usize),
     rows: &mut Rows<'_, 's>,
     (scope, batch): (Option<&rayon::Scope<'s>>, &mut Vec<(&'s Slot, super::SummaryJob)>),
-    (keep, kept_after): (&mut Option<Keep<'_, M>>, &mut Option<usize>),
+    keeps: &mut Vec<Keep<'_, M>>,
 ) -> Result<(), M::Error> {
     let mass_per_m_kg = model.wrap().mass_per_m_kg;
     for (&t, slot) in rows.times.iter().zip(rows.slots) {
-        if let Some(k) = keep.take_if(|k| t > k.at_s) {
+        while let Some(k) = keeps.pop_if(|k| t > k.at_s) {
             // The state at a sample's instant: stepping there and on is stepping past it.
             source.at(model, k.at_s);
             model.advance_to(k.at_s)?;
-            (k.keep)(model, rows.ends.len());
-            *kept_after = Some(rows.ends.len());
+            (k.keep)(model);
         }
         let (sample, slope, last) = source.at(model, t);
         model.advance_to(t)?;
         let end = EndState::of_sample(&sample, slope, mass_per_m_kg);
         let snapshot = output.is_snapshot(t, last);
         if output.utilization_map {
-            rows.run.map.push(model.utilization_row());
+            rows.map.push(model.utilization_row());
         }
         match scope.filter(|_| !snapshot).and_then(|s| Some((s, model.summary_job()?))) {
             Some((scope, job)) => {
@@ -149,7 +167,7 @@ fn step_rows<'s, M: WrapModel, S: RowSamples<M>>(
                 let summary = model.summary(snapshot)?;
                 if snapshot {
                     let distribution = model.distribution(t, &summary, output_nodes);
-                    rows.run.snapshots.push(Snapshot { summary: summary.clone(), distribution });
+                    rows.snapshots.push(Snapshot { summary: summary.clone(), distribution });
                 }
                 let _ = slot.set(Ok(summary));
             }
