@@ -90,32 +90,37 @@ fn scenes_sharing_a_start_give_what_each_gives_alone() {
     // the round trip) and 29 995 (the emergency stop, the brake trip); the lowering MAX trip's
     // up to 29 995 (itself, its emergency stop).
     let saved_steps = (64_025 + 64_025 + 29_995 + 29_995 - 64_025) + (29_995 + 29_995 - 29_995);
-    // The wraps of the round trip and of the emergency stop go on from the states the lift's
-    // own wrap kept at 64.025 s and 29.995 s, and the lowering emergency stop's from the
-    // lowering trip's at 29.995 s: each saves some of its provider's wrap increments, at most
-    // all of them (a trip alone counts its 64 030 rope steps of 1 ms and its wrap's increments).
+    // The wraps of the round trip, of the emergency stop and of the brake trip go on from the
+    // states the lift's own wrap kept at 64.025 s and 29.995 s, and the lowering emergency
+    // stop's from the lowering trip's at 29.995 s: each saves some of its provider's wrap
+    // increments, at most all of them (a trip alone counts its 64 030 rope steps of 1 ms and
+    // its wrap's increments).
     let wrap_of = |scene: &[&wrapcalc::design::Scene]| {
         let before = tally::increments();
         run::run(&d, scene, options).expect("runs");
         tally::increments() - before - 64_030
     };
     let (lift_wrap, lower_wrap) = (wrap_of(&scenes[..1]), wrap_of(&scenes[4..5]));
-    let most = saved_steps + 2 * lift_wrap + lower_wrap;
+    let most = saved_steps + 3 * lift_wrap + lower_wrap;
     assert!(saved > saved_steps && saved <= most, "{saved} against {saved_steps} … {most}");
 }
 
-/// An emergency stop whose rows come every 0.02 s goes on from the wrap of the trip it stops,
-/// whose rows come every 0.05 s: both fall on the instants of the ropes' samples, so the trip's
-/// run makes the stop's rows before the brake on its way, and each result is the one of the
-/// scene run alone, to the last bit; lifting and lowering. The saving is the ropes' start up to
-/// 29 995 steps and some of the trip's wrap increments up to 29.995 s, at most all of them.
+/// An emergency stop, or a stop by the `[brake]`, whose rows come every 0.02 s goes on from the
+/// wrap of the trip it stops, whose rows come every 0.05 s: both fall on the instants of the
+/// ropes' samples, so the trip's run makes the stop's rows before the brake on its way, and
+/// each result is the one of the scene run alone, to the last bit; lifting and lowering. (The
+/// free pulley runs faster before the brake sets in than the trip ever does: the m'v² lattice
+/// is spaced by the motion profile's speeds, the same for both.) The saving is the ropes' start
+/// up to 29 995 steps and some of the trip's wrap increments up to 29.995 s, at most all.
 #[test]
-fn an_emergency_stop_goes_on_from_its_trip_s_wrap_at_another_row_interval() {
+fn a_stop_goes_on_from_its_trip_s_wrap_at_another_row_interval() {
     let _turn = TALLY.lock().unwrap_or_else(|e| e.into_inner());
     let _ = rayon::ThreadPoolBuilder::new().num_threads(2).build_global();
     let d = design();
     let options = Options { nodes: 90, utilization_map: false, ..Options::default() };
-    for (trip, stop) in [("duty-MID", "emergency-MID"), ("duty-MAX-lower", "emergency-MAX-lower")] {
+    for (trip, stop) in
+        [("duty-MID", "emergency-MID"), ("duty-MID", "brake-MID"), ("duty-MAX-lower", "emergency-MAX-lower")]
+    {
         let scenes: Vec<_> = [trip, stop].iter().map(|n| d.scenes.iter().find(|s| s.name == *n).unwrap()).collect();
         assert_eq!((cycle(&d, trip).output_step_s, cycle(&d, stop).output_step_s), (0.05, 0.02));
         let saved = same_together_as_alone(&d, &scenes, options, &format!(" ({trip} with {stop})"));

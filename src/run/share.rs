@@ -138,14 +138,12 @@ struct Rows {
     snapshots_s: Vec<f64>,
 }
 
-/// When a duty cycle's wrap reports, if it runs at level 2 with no rope elements to follow and
-/// is not stopped by the `[brake]` (those whose wrap can go on from another's: after a brake
-/// trips, the pulley's speed is the stop's own, and so is the m'v² lattice its wrap is spaced
-/// by, known only from its run).
+/// When a duty cycle's wrap reports, if it runs at level 2 with no rope elements to follow
+/// (those whose wrap can go on from another's).
 fn wrap_rows(design: &Design, scene: &Scene, options: Options) -> Option<Rows> {
     let SceneKind::DutyCycle(cycle) = &scene.kind else { return None };
     let plan = planner::plan_with_lining(scene, options.request, design.lining.is_some()).ok()?;
     let rigid = design.lining.is_none() && planner::wrap_level(&plan, false) == Level::Rigid2;
     let rows = Rows { step_s: cycle.output_step_s, snapshots_s: cycle.snapshots_s.clone() };
-    (rigid && scene.tracks.is_none() && cycle.brake_stop_s.is_none()).then_some(rows)
+    (rigid && scene.tracks.is_none()).then_some(rows)
 }

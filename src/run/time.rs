@@ -4,13 +4,14 @@
 
 use super::pipelined;
 use super::trip::{self, Trip};
-use super::wrap_run::{Initial, Kept, ModelRun, WrapShare, rolling_initial, run_model, wrap_model};
+use super::wrap_run::{Initial, Kept, Model, ModelRun, WrapShare, rolling_initial, run_model, wrap_model};
 use super::{HistoryOutput, Options, RunError, SceneContext, SceneResult, WrapResult, empty};
 use crate::check;
 use crate::design::{Design, Direction, DutyCycleScene, HistorySample, HistoryScene, Hoist, Scene};
 use crate::dynamics::Kinematics;
 use crate::model::history;
 use crate::model::level0::{self, EndState};
+use crate::model::level2::lattice;
 use crate::model::level4::{self, Level4Error, RopeRun};
 use crate::model::stop;
 use crate::planner::{Level, Plan};
@@ -45,6 +46,7 @@ pub(super) fn run_history(
         spare_core,
         made_beside: None,
         share: WrapShare::default(),
+        centrifugal_max_n: None,
     };
     run_samples(design, scene, input, plan, options).map(|(result, _)| result)
 }
@@ -107,6 +109,7 @@ pub(super) fn run_duty_cycle(
         spare_core: parallel_sides,
         made_beside,
         share: context.wrap,
+        centrifugal_max_n: centrifugal_max_n(design, hoist, cycle, &trip.samples),
     };
     let (mut result, kept) = run_samples(design, scene, input, plan, options)?;
     if let Some((ropes, rigid)) = &dynamics {
@@ -219,6 +222,25 @@ struct Samples<'a> {
     made_beside: Option<history::HistoryRun>,
     /// What the wrap's run shares with another scene's.
     share: WrapShare<'a>,
+    /// A duty cycle's largest m'v² of its motion profile (N), which spaces the wrap's m'v²
+    /// lattice ([`centrifugal_max_n`]).
+    centrifugal_max_n: Option<f64>,
+}
+
+/// The largest m'v² (N) of a duty cycle's motion profile at the instants of its end history's
+/// samples (after a stop by the `[brake]`, the profile's at the trip): it spaces the wrap's m'v²
+/// lattice ([`lattice::spacing_n`]), so that trips that agree up to an instant step alike up
+/// to it whatever speed their own stop reaches after it, e.g. the free pulley's before the
+/// brake sets in.
+fn centrifugal_max_n(design: &Design, hoist: &Hoist, cycle: &DutyCycleScene, samples: &[HistorySample]) -> Option<f64> {
+    let profile = level4::motion_profile(hoist, cycle).ok()?;
+    let m = design.rope.mass_per_m_kg;
+    let end = profile.duration_s();
+    let c = |t: f64| {
+        let v = level4::at_rest_snapped(profile.at(t.min(end)).speed_m_s);
+        m * v * v
+    };
+    Some(samples.iter().map(|s| c(s.t_s)).fold(0.0, f64::max))
 }
 
 /// A scene given as end tensions and speed over time (history and duty-cycle scenes): level 0
@@ -241,6 +263,7 @@ fn run_samples(
         spare_core,
         made_beside,
         share,
+        centrifugal_max_n,
     } = input;
     let states: Vec<(f64, EndState)> = samples
         .iter()
@@ -273,7 +296,13 @@ fn run_samples(
     let (done, for_tracks) = match made_beside {
         Some(run) => (ModelRun { run, level3: None, kept: Vec::new(), reused_increments: 0 }, None),
         None => {
-            let model = wrap_model(design, scene, &result.plan, samples, initial, options)?;
+            let model = match (wrap_model(design, scene, &result.plan, samples, initial, options)?, centrifugal_max_n) {
+                (Model::Rigid(sim), Some(c)) => {
+                    let step = lattice::spacing_n(samples, c, &sim.numerics);
+                    Model::Rigid(Box::new(sim.with_centrifugal_step_n(step)))
+                }
+                (model, _) => model,
+            };
             // The tracks follow the same model from the same start.
             let for_tracks = scene.tracks.as_ref().map(|_| model.clone());
             (run_model(model, scene, samples, (output, options, spare_core), share)?, for_tracks)

@@ -10,11 +10,17 @@ use crate::model::numerics::Numerics;
 /// [`Numerics::centrifugal_step_rel`] of the history's largest end tension and
 /// [`Numerics::centrifugal_step_of_range`] of its largest m'v².
 pub fn centrifugal_step_n(samples: &[HistorySample], mass_per_m_kg: f64, numerics: &Numerics) -> f64 {
-    let t_max = samples.iter().map(|s| s.t1_n.max(s.t2_n)).fold(0.0, f64::max);
     // |v| is largest at a sample (it is linear between them), so both maxima are the same
     // however the history is sampled.
     let c_max = samples.iter().map(|s| mass_per_m_kg * s.speed_m_s * s.speed_m_s).fold(0.0, f64::max);
-    (numerics.centrifugal_step_rel * t_max).max(numerics.centrifugal_step_of_range * c_max)
+    spacing_n(samples, c_max, numerics)
+}
+
+/// [`centrifugal_step_n`] with the largest m'v² given (N): a duty cycle's, from its motion
+/// profile rather than from the speed its own stop reaches.
+pub fn spacing_n(samples: &[HistorySample], c_max_n: f64, numerics: &Numerics) -> f64 {
+    let t_max = samples.iter().map(|s| s.t1_n.max(s.t2_n)).fold(0.0, f64::max);
+    (numerics.centrifugal_step_rel * t_max).max(numerics.centrifugal_step_of_range * c_max_n)
 }
 
 /// Steps of m'v² on its lattice through a history: the total variation of m'v² over the

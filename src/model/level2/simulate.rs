@@ -156,6 +156,12 @@ impl<'a> Simulation<'a> {
         Self { numerics, centrifugal_step_n, ..self }
     }
 
+    /// The same run with the m'v² lattice spaced by `centrifugal_step_n` (N) instead of
+    /// [`lattice::centrifugal_step_n`] of its history.
+    pub fn with_centrifugal_step_n(self, centrifugal_step_n: f64) -> Self {
+        Self { centrifugal_step_n, ..self }
+    }
+
     /// The history the run steps through (so far).
     pub fn samples(&self) -> &[HistorySample] {
         &self.samples
