@@ -31,6 +31,10 @@ pub const DEFAULT_LIMIT_S: u64 = 600;
 pub const ROPE_NS: f64 = 25.0;
 /// The part of a duty cycle's estimate its suspended ropes take.
 pub const SUSPENDED_ROPES: &str = "suspended ropes (level 4)";
+/// The part of the wrap on the rigid lining.
+pub const WRAP_LEVEL2: &str = "wrap (level 2)";
+/// The part of the wrap on the elastic lining.
+pub const WRAP_LEVEL3: &str = "wrap (level 3)";
 /// Cost per segment-increment at level 3 with the fast path (a tridiagonal solve), ns.
 pub const LEVEL3_FAST_NS: f64 = 100.0;
 /// Cost per segment-increment at level 3 with clarabel on every increment, ns.
@@ -76,6 +80,10 @@ pub struct Part {
     pub formula: String,
     /// Estimated run time on one core (s).
     pub seconds: f64,
+    /// The run time it usually takes (s): `seconds` but for the emergency margins, whose bound
+    /// counts [`MARGIN_TRIALS`] trials per margin where a few are usual ([`TYPICAL_TRIAL_STRETCHES`]).
+    /// The scenes of a run are ordered by it.
+    pub typical_seconds: f64,
 }
 
 /// A scene's estimated cost.
@@ -89,6 +97,8 @@ pub struct Estimate {
     pub drivers: Vec<String>,
     /// Estimated run time on one core (s).
     pub seconds: f64,
+    /// The run time it usually takes on one core (s; [`Part::typical_seconds`]).
+    pub typical_seconds: f64,
     /// History rows kept in memory until the report is written.
     pub rows: f64,
     /// Estimated memory of those rows (bytes), [`ROW_BYTES`] each.
@@ -108,15 +118,18 @@ impl Estimate {
 
     fn with_rows(level: Level, parts: Vec<Part>, drivers: Vec<String>, rows: f64) -> Self {
         let seconds = parts.iter().map(|p| p.seconds).sum();
-        Self { level, parts, drivers, seconds, rows, memory_bytes: rows * ROW_BYTES }
+        let typical_seconds = parts.iter().map(|p| p.typical_seconds).sum();
+        Self { level, parts, drivers, seconds, typical_seconds, rows, memory_bytes: rows * ROW_BYTES }
     }
 
-    /// The estimate of a scene whose suspended ropes continue from a start it shares with
-    /// other scenes of the run, `shared_fraction` of their steps integrated once for all of them
-    /// (s): what remains of its own work, by which a run orders its scenes.
-    pub fn seconds_after_shared_start(&self, shared_fraction: f64) -> f64 {
-        let ropes: f64 = self.parts.iter().filter(|p| p.what == SUSPENDED_ROPES).map(|p| p.seconds).sum();
-        self.seconds - shared_fraction.clamp(0.0, 1.0) * ropes
+    /// What usually remains of the run ([`Self::typical_seconds`]) when it continues from a
+    /// start shared with other scenes: `ropes_shared` of its suspended ropes' work and
+    /// `wrap_shared` of its wrap's (fractions, each clamped to [0, 1]) are done once for all.
+    pub fn typical_after_shared(&self, ropes_shared: f64, wrap_shared: f64) -> f64 {
+        let of = |what: &str| self.parts.iter().filter(|p| p.what == what).map(|p| p.typical_seconds).sum::<f64>();
+        self.typical_seconds
+            - ropes_shared.clamp(0.0, 1.0) * of(SUSPENDED_ROPES)
+            - wrap_shared.clamp(0.0, 1.0) * (of(WRAP_LEVEL2) + of(WRAP_LEVEL3))
     }
 
     /// The parts as one line: "suspended ropes (level 4): 3.1e6 rope element-steps (…); …".
@@ -138,7 +151,8 @@ pub fn human_duration(seconds: f64) -> String {
 }
 
 fn part(what: &'static str, work: f64, unit: &'static str, formula: String, ns_per_unit: f64) -> Part {
-    Part { what, work, unit, formula, seconds: work * ns_per_unit * 1e-9 }
+    let seconds = work * ns_per_unit * 1e-9;
+    Part { what, work, unit, formula, seconds, typical_seconds: seconds }
 }
 
 /// The cost of running `scene` as `plan` says, with `nodes` wrap nodes and `solver`.
@@ -171,7 +185,7 @@ pub fn estimate(design: &Design, scene: &Scene, plan: &Plan, nodes: usize, solve
 
 fn level2_part(samples: u64, reversals: u64, centrifugal_steps: u64, rows: u64) -> Part {
     part(
-        "wrap (level 2)",
+        WRAP_LEVEL2,
         level2_work(samples, reversals, centrifugal_steps, rows),
         "breakpoint updates",
         format!("{samples} samples, {reversals} load reversals, {centrifugal_steps} steps of m'v², {rows} report rows"),
@@ -181,7 +195,7 @@ fn level2_part(samples: u64, reversals: u64, centrifugal_steps: u64, rows: u64) 
 
 fn level3_part(work: f64, formula: String, solver: Solver) -> Part {
     let ns = if solver == Solver::Clarabel { LEVEL3_CLARABEL_NS } else { LEVEL3_FAST_NS };
-    part("wrap (level 3)", work, "segment-increments", formula, ns)
+    part(WRAP_LEVEL3, work, "segment-increments", formula, ns)
 }
 
 fn history(
@@ -272,8 +286,14 @@ fn level3_increments(design: &Design, samples: &[HistorySample], times: &[f64], 
         .sum()
 }
 
-/// Emergency margins: Brent's method evaluates about this many trial decelerations per margin.
-const MARGIN_TRIALS: f64 = 20.0;
+/// Emergency margins: Brent's method evaluates at most about this many trial decelerations per
+/// margin (the bound the estimate takes).
+pub const MARGIN_TRIALS: f64 = 20.0;
+
+/// Emergency margins: the trial runs both margins usually take together, in braking stretches:
+/// the two ends of the range (the gentlest deceleration runs about twice the stretch), then a
+/// few evaluations near each root (on the reference sheet 8 runs in all, about 7.5 stretches).
+pub const TYPICAL_TRIAL_STRETCHES: f64 = 8.0;
 
 fn duty_cycle(
     design: &Design,
@@ -314,7 +334,9 @@ fn duty_cycle(
         let (trials, stretch_s) = (2.0 * MARGIN_TRIALS, 1.5 * (duration_s - stop.at_s));
         let work = trials * element_steps(stretch_s);
         let formula = format!("{trials:.0} trial stops of about {stretch_s:.2} s");
-        parts.push(part("emergency margins (level 4)", work, "rope element-steps", formula, ROPE_NS));
+        let mut margins = part("emergency margins (level 4)", work, "rope element-steps", formula, ROPE_NS);
+        margins.typical_seconds = TYPICAL_TRIAL_STRETCHES * element_steps(duration_s - stop.at_s) * ROPE_NS * 1e-9;
+        parts.push(margins);
     }
     let samples = (duration_s / level4::WRAP_SAMPLE_S).ceil() + 1.0;
     if wrap == Level::Elastic3 {

@@ -84,23 +84,43 @@ fn level4_estimate_is_rope_elements_times_the_steps_taken() {
     assert_eq!(e.level, wrapcalc::planner::Level::Dynamic4);
 }
 
-/// A scene whose ropes continue from a start shared with other scenes costs, for the order a
-/// run takes its scenes in, what remains of its own work: the full estimate with nothing shared,
-/// the estimate less its ropes' part (2 × 12 elements × 64 030 steps × 25 ns = 38.4 ms) with all
-/// of them shared, half of that part off with half, and a fraction outside [0, 1] taken as the
-/// nearer end.
+/// A duty cycle that continues from a start shared with other scenes is ordered by what
+/// usually remains of its own work: the full typical estimate with nothing shared, less its
+/// ropes' part (2 × 12 elements × 64 030 steps × 25 ns = 38.4 ms) with all of them shared, half
+/// of that with half, a fraction outside [0, 1] taken as the nearer end; and less its wrap's part
+/// (level 2: breakpoint updates × 5 µs) as far as its wrap goes on from another's.
 #[test]
-fn a_shared_start_takes_its_share_of_the_ropes_off_the_estimate() {
+fn a_shared_start_takes_its_share_of_the_ropes_and_the_wrap_off_the_estimate() {
     let design = duty_mid(1e-3);
     let e = estimate_of(&design, "duty-MID", Options::default());
     let ropes_s = 24.0 * 64_030.0 * 25e-9;
+    let wrap = e.parts.iter().find(|p| p.what == cost::WRAP_LEVEL2).expect("a level-2 wrap");
+    assert!((wrap.seconds - wrap.work * 5e-6).abs() <= 1e-12 * wrap.seconds, "{wrap:?}");
     let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * b.abs();
-    assert!(close(e.seconds_after_shared_start(0.0), e.seconds), "{e:?}");
-    assert!(close(e.seconds_after_shared_start(1.0), e.seconds - ropes_s), "{e:?}");
-    assert!(close(e.seconds_after_shared_start(0.5), e.seconds - 0.5 * ropes_s), "{e:?}");
-    assert!(close(e.seconds_after_shared_start(2.0), e.seconds - ropes_s), "{e:?}");
-    assert!(close(e.seconds_after_shared_start(-1.0), e.seconds), "{e:?}");
-    assert!(e.seconds_after_shared_start(1.0) > 0.0, "the wrap's work remains: {e:?}");
+    // No emergency stop: the typical estimate is the bound.
+    assert_eq!(e.typical_seconds, e.seconds);
+    assert!(close(e.typical_after_shared(0.0, 0.0), e.seconds), "{e:?}");
+    assert!(close(e.typical_after_shared(1.0, 0.0), e.seconds - ropes_s), "{e:?}");
+    assert!(close(e.typical_after_shared(0.5, 0.0), e.seconds - 0.5 * ropes_s), "{e:?}");
+    assert!(close(e.typical_after_shared(2.0, 0.0), e.seconds - ropes_s), "{e:?}");
+    assert!(close(e.typical_after_shared(-1.0, 0.0), e.seconds), "{e:?}");
+    assert!(close(e.typical_after_shared(0.5, 0.5), e.seconds - 0.5 * (ropes_s + wrap.seconds)), "{e:?}");
+    assert!(e.typical_after_shared(1.0, 0.0) > 0.0, "the wrap's work remains: {e:?}");
+}
+
+/// An emergency stop's margins are bounded by 20 trials per margin of 1.5 braking stretches
+/// (the MID stop: 30 s to 36.63 s, 6 633 steps of 1 ms, 2 × 12 elements, 25 ns each); they
+/// usually take 8 runs of about one stretch, which orders the scenes.
+#[test]
+fn the_emergency_margins_usually_take_a_few_trials_of_their_bound() {
+    let (_, design) = bundled("guo2020.toml");
+    let e = estimate_of(&design, "emergency-MID", Options::default());
+    let margins = e.parts.iter().find(|p| p.what == "emergency margins (level 4)").expect("the margins' part");
+    let stretch_steps = |factor: f64| (factor * (36.632 - 30.0) / 1e-3_f64).ceil();
+    let close = |a: f64, b: f64| (a - b).abs() <= 1e-3 * b.abs();
+    assert!(close(margins.seconds, 40.0 * 24.0 * stretch_steps(1.5) * 25e-9), "{margins:?}");
+    assert!(close(margins.typical_seconds, 8.0 * 24.0 * stretch_steps(1.0) * 25e-9), "{margins:?}");
+    assert!(close(e.seconds - e.typical_seconds, margins.seconds - margins.typical_seconds), "{e:?}");
 }
 
 /// Level 3's measure is segments × increments. Its count of the increments agrees with what

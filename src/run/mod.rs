@@ -339,7 +339,7 @@ pub fn run_with_progress(
     };
     let mut done = if groups.is_empty() {
         let mut queue: Vec<(usize, Estimate)> = estimates.into_iter().enumerate().collect();
-        queue.sort_by(|a, b| b.1.seconds.total_cmp(&a.1.seconds));
+        queue.sort_by(|a, b| b.1.typical_seconds.total_cmp(&a.1.typical_seconds));
         queue
             .into_iter()
             .par_bridge()

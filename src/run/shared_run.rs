@@ -43,7 +43,7 @@ pub(super) fn run_shared(
     let mut initial: Vec<(f64, Task)> = (0..groups.len()).map(|g| (f64::INFINITY, Task::Start(g))).collect();
     initial.extend((0..estimates.len()).filter(|i| !grouped.contains(i)).map(|i| {
         let task = SceneTask { index: i, prefix: None, from: None, then: Vec::new(), keep: Vec::new() };
-        (estimates[i].seconds, Task::Scene(Box::new(task)))
+        (estimates[i].typical_seconds, Task::Scene(Box::new(task)))
     }));
     let done = Mutex::new(Vec::with_capacity(estimates.len()));
     schedule::run(initial, rayon::current_num_threads(), |task, push| match task {
@@ -61,11 +61,13 @@ pub(super) fn run_shared(
             prefixes.resize(group.members.len(), None);
             let member = |i: usize| group.members.iter().position(|m| m.index == i);
             let prefix_of = |i: usize| member(i).and_then(|k| prefixes[k].clone());
-            // A member costs what it does beyond the shared start: the cheapest run last.
+            // A member costs what it does beyond the shared start (its wrap's too, where it goes
+            // on from another's): the cheapest run last.
             let remaining = |i: usize| {
                 let shared =
                     member(i).filter(|&k| prefixes[k].is_some()).map_or(0.0, |k| group.members[k].shared_fraction);
-                estimates[i].seconds_after_shared_start(shared)
+                let wrap = group.wraps.iter().any(|w| w.consumer == i);
+                estimates[i].typical_after_shared(shared, if wrap { shared } else { 0.0 })
             };
             for m in &group.members {
                 let i = m.index;
