@@ -325,17 +325,41 @@ pub fn largest_holding(h: impl Fn(f64) -> f64, lo: f64, hi: f64, stats: &mut Roo
 /// which is costly (a simulation), where the last iterations of Brent's method, each one
 /// evaluation, would refine the root far below the accuracy of the criterion itself.
 pub fn largest_holding_to(h: impl Fn(f64) -> f64, lo: f64, hi: f64, rel_tol: f64, stats: &mut RootStats) -> Holding {
-    let (h_lo, h_hi) = (h(lo), h(hi));
-    if !(h_lo.is_finite() && h_hi.is_finite()) {
+    largest_holding_among(h, (lo, hi), &[], rel_tol, stats)
+}
+
+/// [`largest_holding_to`] with points of the range where `h` is known already (evaluating it
+/// there again costs nothing, e.g. a simulation made before): Brent's method starts from the
+/// first change of sign among them, searched from `lo` (a point where h is not finite is
+/// passed over), to the same x-tolerance, `rel_tol` of the whole range. A known point where h
+/// holds stands for `lo` (which is then not evaluated), one where it fails for `hi`. Where h
+/// changes sign once on the range, that is the root [`largest_holding_to`] finds, in fewer
+/// evaluations.
+pub fn largest_holding_among(
+    h: impl Fn(f64) -> f64,
+    (lo, hi): (f64, f64),
+    known: &[f64],
+    rel_tol: f64,
+    stats: &mut RootStats,
+) -> Holding {
+    let mut inside: Vec<(f64, f64)> =
+        known.iter().filter(|x| **x > lo && **x < hi).map(|&x| (x, h(x))).filter(|(_, v)| v.is_finite()).collect();
+    inside.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let fails = inside.iter().position(|(_, v)| *v < 0.0);
+    let holds = inside[..fails.unwrap_or(inside.len())].last().map(|(x, _)| *x);
+    let fails = fails.map(|i| inside[i].0);
+    let (h_lo, h_hi) = (holds.is_none().then(|| h(lo)), fails.is_none().then(|| h(hi)));
+    if h_lo.is_some_and(|v| !v.is_finite()) || h_hi.is_some_and(|v| !v.is_finite()) {
         return Holding::NotFinite;
     }
-    if h_lo < 0.0 {
+    if h_lo.is_some_and(|v| v < 0.0) {
         return Holding::NotAtStart;
     }
-    if h_hi >= 0.0 {
+    if h_hi.is_some_and(|v| v >= 0.0) {
         return Holding::Throughout;
     }
-    match brent(&h, lo, hi, rel_tol * (hi - lo), stats) {
+    let (a, b) = (holds.unwrap_or(lo), fails.unwrap_or(hi));
+    match brent(&h, a, b, rel_tol * (hi - lo), stats) {
         Ok(x) => Holding::Until(x),
         Err(RootError::NoBracket { .. }) => Holding::Throughout,
         Err(e) => Holding::Failed(e),
@@ -345,6 +369,37 @@ pub fn largest_holding_to(h: impl Fn(f64) -> f64, lo: f64, hi: f64, rel_tol: f64
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// h(x) = 2 − x holds up to x = 2 on [0, 10], h(x) = cos x − ½ up to π/3 on [0, 3]. With a
+    /// known point where h holds the search does not evaluate h at the range's start, with one
+    /// where it fails not at its end, and it finds the root to the tolerance (1e-9 of the
+    /// range). A range that fails at its start with no known point that holds is refused as
+    /// before, one that holds at its end with no known point that fails holds throughout.
+    #[test]
+    fn known_points_stand_for_the_ends_of_the_range() {
+        use std::cell::RefCell;
+        let mut stats = RootStats::default();
+        type Case<'a> = (&'a dyn Fn(f64) -> f64, (f64, f64), [f64; 2], f64);
+        let cases: [Case; 2] = [
+            (&|x| 2.0 - x, (0.0, 10.0), [1.0, 3.0], 2.0),
+            (&|x: f64| x.cos() - 0.5, (0.0, 3.0), [0.5, 2.0], std::f64::consts::FRAC_PI_3),
+        ];
+        for (f, (lo, hi), known, root) in cases {
+            let seen = RefCell::new(Vec::new());
+            let h = |x: f64| {
+                seen.borrow_mut().push(x);
+                f(x)
+            };
+            let Holding::Until(x) = largest_holding_among(h, (lo, hi), &known, 1e-9, &mut stats) else {
+                panic!("a root")
+            };
+            assert!((x - root).abs() <= 1e-9 * (hi - lo), "{x} against {root}");
+            let seen = seen.into_inner();
+            assert!(!seen.contains(&lo) && !seen.contains(&hi), "{seen:?}");
+        }
+        assert_eq!(largest_holding_among(|x| -1.0 - x, (0.0, 10.0), &[5.0], 1e-9, &mut stats), Holding::NotAtStart);
+        assert_eq!(largest_holding_among(|x| 20.0 - x, (0.0, 10.0), &[5.0], 1e-9, &mut stats), Holding::Throughout);
+    }
 
     #[test]
     fn bracketed_finds_the_roots_argmin_finds() {

@@ -138,6 +138,15 @@ pub(super) fn coeffs(
     Ok(Coeffs::new(p, n, length_m, end_mass_kg, p.g_m_s2 - a_s, damping_coefficient_s(p, length_m, end_mass_kg)))
 }
 
+/// [`coeffs`] at a travel between the extremes of a profile whose lengths there are checked
+/// ([`step_count`]): the lengths are linear in the travel, so they hold between, unchecked.
+fn coeffs_within(p: &HoistParams, side: Side, n: usize, x_m: f64, accel_m_s2: f64) -> Coeffs {
+    let (length_m, end_mass_kg) = (p.hanging_length_m(side, x_m), p.end_mass_kg(side, x_m));
+    debug_assert!(length_m > 0.0 && p.tail_length_m(side, x_m) >= 0.0, "a length beyond the profile's checks");
+    let a_s = side.down_sign() * accel_m_s2;
+    Coeffs::new(p, n, length_m, end_mass_kg, p.g_m_s2 - a_s, damping_coefficient_s(p, length_m, end_mass_kg))
+}
+
 /// Simulates the rope dynamics of both sides over the profile (model and scheme: see the module
 /// documentation). Starts in static equilibrium at `x = 0` (plus `initial_offset_m`) and steps
 /// the trapezoidal rule with `dt_s` to the end of the profile.
@@ -291,7 +300,10 @@ impl Stepping {
                 continue;
             }
             let kin = motion.at(t);
-            let (w, d) = step_sides(p, &mut self.sides, t, kin.x_m, kin.accel_m_s2, h, opt.energy)?;
+            // The travel stays between the profile's extremes, whose lengths `step_count` checked.
+            let c = [0, 1]
+                .map(|k| coeffs_within(p, self.sides[k].side, self.sides[k].state.q.len(), kin.x_m, kin.accel_m_s2));
+            let (w, d) = step_sides_to(&mut self.sides, c, t, h, opt.energy)?;
             self.work_j += w;
             self.dissipated_j += d;
             self.t_prev = t;
@@ -476,8 +488,21 @@ pub(super) fn step_sides(
         return Err(DynamicsError::NoElements);
     };
     let n = s0.state.q.len();
-    let c0 = coeffs(p, s0.side, n, t, x_m, accel_m_s2)?;
-    let c1 = coeffs(p, s1.side, n, t, x_m, accel_m_s2)?;
+    let c = [coeffs(p, s0.side, n, t, x_m, accel_m_s2)?, coeffs(p, s1.side, n, t, x_m, accel_m_s2)?];
+    step_sides_to(sides, c, t, h, energy)
+}
+
+/// [`step_sides`] to the coefficients `c` of the step's end at `t`.
+fn step_sides_to(
+    sides: &mut [Side2],
+    [c0, c1]: [Coeffs; 2],
+    t: f64,
+    h: f64,
+    energy: bool,
+) -> Result<(f64, f64), DynamicsError> {
+    let [s0, s1] = sides else {
+        return Err(DynamicsError::NoElements);
+    };
     let [(w0, d0), (w1, d1)] =
         super::rope::step_pair([(&mut s0.state, &s0.coeffs, &c0), (&mut s1.state, &s1.coeffs, &c1)], h, energy);
     (s0.coeffs, s1.coeffs) = (c0, c1);

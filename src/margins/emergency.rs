@@ -1,7 +1,7 @@
 //! The emergency-braking margins of a duty cycle with the ropes' dynamics: each trial
 //! deceleration runs the scene's suspended ropes (level 4's [`StopTrials`]).
 
-use super::{Margin, largest_holding_to, sf_residual, slip_residual};
+use super::{Margin, largest_holding_among, sf_residual, slip_residual};
 use crate::design::Design;
 use crate::dynamics::DynSample;
 use crate::model::level0::{EndState, euler_limit};
@@ -24,7 +24,10 @@ pub const TRIAL_REL_TOL: f64 = 1e-8;
 ///
 /// whose roots in d (Brent to [`TRIAL_REL_TOL`], on [d₀/2, 0.999 g], d₀ the scene's own
 /// deceleration: a much gentler brake would run the conveyance past the end of the shaft) are
-/// the margins, to slip and to the safety factor. A trial that cannot run (e.g. a hanging
+/// the margins, to slip and to the safety factor. Each search starts from the runs known
+/// before it ([`crate::roots::largest_holding_among`]): the scene's own stop at d₀ (where it
+/// holds, the gentler end d₀/2 is not run), and for the second every run the first made. A
+/// trial that cannot run (e.g. a hanging
 /// length reaching 0 during a long stop) is a failure of that margin's search, reported as its
 /// verdict.
 pub fn emergency(design: &Design, trials: &StopTrials, stats: &mut RootStats) -> (Margin, Margin) {
@@ -42,7 +45,11 @@ pub fn emergency(design: &Design, trials: &StopTrials, stats: &mut RootStats) ->
     let sf = |s: &DynSample| sf_residual(&state(s), limit, sf_min);
     let (slip_before, sf_before) = (trials.worst_before(&slip), trials.worst_before(&sf));
     let (lo, hi) = (0.5 * trials.decel_m_s2(), 0.999 * design.g_m_s2);
-    let to_slip = largest_holding_to(|d| trials.worst(d, &slip, slip_before), lo, hi, TRIAL_REL_TOL, stats);
-    let to_sf = largest_holding_to(|d| trials.worst(d, &sf, sf_before), lo, hi, TRIAL_REL_TOL, stats);
+    // The scene's own stop is a run at its own deceleration; the second search knows every run
+    // the first made.
+    let own = [trials.decel_m_s2()];
+    let to_slip = largest_holding_among(|d| trials.worst(d, &slip, slip_before), (lo, hi), &own, TRIAL_REL_TOL, stats);
+    let known = trials.decelerations_m_s2();
+    let to_sf = largest_holding_among(|d| trials.worst(d, &sf, sf_before), (lo, hi), &known, TRIAL_REL_TOL, stats);
     (to_slip, to_sf)
 }

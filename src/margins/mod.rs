@@ -128,8 +128,20 @@ pub fn largest_holding(h: impl Fn(f64) -> f64, lo: f64, hi: f64, stats: &mut Roo
 
 /// [`largest_holding`] to `rel_tol` of the range ([`roots::largest_holding_to`]).
 pub fn largest_holding_to(h: impl Fn(f64) -> f64, lo: f64, hi: f64, rel_tol: f64, stats: &mut RootStats) -> Margin {
+    largest_holding_among(h, (lo, hi), &[], rel_tol, stats)
+}
+
+/// [`largest_holding_to`] starting from points where `h` is known already
+/// ([`roots::largest_holding_among`]).
+pub fn largest_holding_among(
+    h: impl Fn(f64) -> f64,
+    (lo, hi): (f64, f64),
+    known: &[f64],
+    rel_tol: f64,
+    stats: &mut RootStats,
+) -> Margin {
     let searched = [lo, hi];
-    let (value, verdict) = match roots::largest_holding_to(h, lo, hi, rel_tol, stats) {
+    let (value, verdict) = match roots::largest_holding_among(h, (lo, hi), known, rel_tol, stats) {
         Holding::Until(x) => (Some(x), MarginVerdict::Found),
         Holding::Throughout => (None, MarginVerdict::NoSlipInRange),
         Holding::NotAtStart => (None, MarginVerdict::AlreadyBeyond),

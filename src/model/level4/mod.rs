@@ -412,7 +412,12 @@ impl<'a> StopTrials<'a> {
     pub fn from_run(design: &'a Design, hoist: &'a Hoist, scene: &'a DutyCycleScene, run: RopeRun) -> Option<Self> {
         let stop = scene.emergency?;
         let checkpoint = run.at_brake?;
-        Some(Self { design, hoist, scene, stop, before: run.samples, checkpoint, runs: RefCell::new(Vec::new()) })
+        // The scene's own run is the trial at its own deceleration (a trial goes on from the
+        // checkpoint as the run did, to the last bit).
+        let t = checkpoint.t_s();
+        let own: Vec<DynSample> = run.samples.iter().filter(|s| s.t_s > t).copied().collect();
+        let runs = RefCell::new(vec![(stop.decel_m_s2.to_bits(), Some(own))]);
+        Some(Self { design, hoist, scene, stop, before: run.samples, checkpoint, runs })
     }
 
     /// The scene's own emergency deceleration (m/s²).
@@ -426,7 +431,13 @@ impl<'a> StopTrials<'a> {
         self.before.iter().filter(|s| s.t_s <= t).map(residual).fold(f64::INFINITY, f64::min)
     }
 
-    /// The lowest `residual` over a run braking at `decel_m_s2` (from the brake on), at most
+    /// The decelerations run so far (m/s², the scene's own first).
+    pub fn decelerations_m_s2(&self) -> Vec<f64> {
+        self.runs.borrow().iter().map(|(bits, _)| f64::from_bits(*bits)).collect()
+    }
+
+    /// The lowest `residual` over a run braking at `decel_m_s2` (its samples after the last
+    /// step before the brake, which [`Self::worst_before`] covers), at most
     /// `before`; NaN when that run cannot be made (e.g. a hanging length reaching 0).
     pub fn worst(&self, decel_m_s2: f64, residual: &dyn Fn(&DynSample) -> f64, before: f64) -> f64 {
         let key = decel_m_s2.to_bits();
@@ -442,8 +453,9 @@ impl<'a> StopTrials<'a> {
                 runs.len() - 1
             }
         };
+        let t = self.checkpoint.t_s();
         match &runs[index].1 {
-            Some(samples) => samples.iter().map(residual).fold(before, f64::min),
+            Some(samples) => samples.iter().filter(|s| s.t_s > t).map(residual).fold(before, f64::min),
             None => f64::NAN,
         }
     }
