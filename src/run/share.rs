@@ -5,7 +5,10 @@
 //! its ropes are integrated once up to the last step another member shares with it, keeping a
 //! checkpoint at each member's fork ([`level4::shared::prefixes`]), and every member, the
 //! leader too, continues from its own ([`level4::scene_ropes_from`]): the same runs, to the last
-//! bit, with the shared stretch integrated once.
+//! bit, with the shared stretch integrated once. The wrap is shared alike: one member's wrap
+//! run keeps a state where each other's trip parts from it and makes their rows before that
+//! on its way (a duty cycle's rows fall on its samples' instants, so that the rows of one
+//! change nothing of the other's), and each goes on from its state ([`WrapPair`]).
 
 use super::Options;
 use super::wrap_run::WrapKeep;
