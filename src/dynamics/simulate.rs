@@ -301,8 +301,8 @@ impl Stepping {
             }
             let kin = motion.at(t);
             // The travel stays between the profile's extremes, whose lengths `step_count` checked.
-            let c = [0, 1]
-                .map(|k| coeffs_within(p, self.sides[k].side, self.sides[k].state.q.len(), kin.x_m, kin.accel_m_s2));
+            let [a, b] = &self.sides[..] else { return Err(DynamicsError::NoElements) };
+            let c = [a, b].map(|s| coeffs_within(p, s.side, s.state.q.len(), kin.x_m, kin.accel_m_s2));
             let (w, d) = step_sides_to(&mut self.sides, c, t, h, opt.energy)?;
             self.work_j += w;
             self.dissipated_j += d;
@@ -484,11 +484,9 @@ pub(super) fn step_sides(
     h: f64,
     energy: bool,
 ) -> Result<(f64, f64), DynamicsError> {
-    let [s0, s1] = sides else {
-        return Err(DynamicsError::NoElements);
-    };
-    let n = s0.state.q.len();
-    let c = [coeffs(p, s0.side, n, t, x_m, accel_m_s2)?, coeffs(p, s1.side, n, t, x_m, accel_m_s2)?];
+    let [a, b] = &sides[..] else { return Err(DynamicsError::NoElements) };
+    let n = a.state.q.len();
+    let c = [coeffs(p, a.side, n, t, x_m, accel_m_s2)?, coeffs(p, b.side, n, t, x_m, accel_m_s2)?];
     step_sides_to(sides, c, t, h, energy)
 }
 
