@@ -61,7 +61,9 @@ pub fn run_keeping<M: WrapModel, K: Clone>(
 ) -> Result<Kept<M, K>, M::Error> {
     let own = output.times(samples);
     let start = detach(&model);
-    let plans: Vec<Option<(usize, Vec<f64>)>> = keeps.iter().map(|k| keep_plan(k, samples, &own)).collect();
+    let mut plans: Vec<Option<(usize, Vec<f64>)>> = keeps.iter().map(|k| keep_plan(k, samples, &own)).collect();
+    // A row names its runs by the bits of a `u32`, this run's own the first.
+    plans.iter_mut().filter(|p| p.is_some()).skip(MOST_KEPT).for_each(|p| *p = None);
     let theirs: Vec<&[f64]> = plans.iter().flatten().map(|(_, t)| &t[..]).collect();
     let (times, targets) = union(&own, &theirs);
     model.settle()?;
@@ -115,6 +117,9 @@ pub fn run_keeping<M: WrapModel, K: Clone>(
         .collect();
     Ok((own_run, counters, kept))
 }
+
+/// Most states one run keeps for others (the rest are not kept: those runs start afresh).
+pub const MOST_KEPT: usize = 31;
 
 /// A state's instant and what keeps the model there.
 type Keeper<'a, M> = (f64, Box<dyn FnMut(&M) + 'a>);
@@ -204,4 +209,16 @@ pub fn run_from<M: WrapModel, K>(
         rows::run_rows(&mut model, &mut rows::Whole(samples), layout, parallel_rows, (vec![run], None), Vec::new())?;
     let run = runs.into_iter().next().expect("the run's rows");
     Ok(finished(&model, run))
+}
+
+#[cfg(test)]
+mod tests {
+    /// Rows at 1 and 2 s of the run's own, at 1.5 and 2 s of one other run and at 0.5 s of a
+    /// second: each time once, in order, with the runs it is a row of (bit 0 the own).
+    #[test]
+    fn the_union_of_the_rows_names_the_runs_of_each() {
+        let (times, targets) = super::union(&[1.0, 2.0], &[&[1.5, 2.0], &[0.5]]);
+        assert_eq!(times, vec![0.5, 1.0, 1.5, 2.0]);
+        assert_eq!(targets, vec![0b100, 0b001, 0b010, 0b011]);
+    }
 }
