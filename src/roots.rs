@@ -318,23 +318,18 @@ pub const HOLDING_REL_TOL: f64 = 1e-13;
 /// Largest x in `[lo, hi]` from which `h` (≥ 0: holds) still holds, as the root of h by
 /// [`brent`] to [`HOLDING_REL_TOL`] of the range in x.
 pub fn largest_holding(h: impl Fn(f64) -> f64, lo: f64, hi: f64, stats: &mut RootStats) -> Holding {
-    largest_holding_to(h, lo, hi, HOLDING_REL_TOL, stats)
+    largest_holding_among(h, (lo, hi), &[], HOLDING_REL_TOL, stats)
 }
 
-/// [`largest_holding`] to `rel_tol` of the range in x: for a criterion each evaluation of
-/// which is costly (a simulation), where the last iterations of Brent's method, each one
-/// evaluation, would refine the root far below the accuracy of the criterion itself.
-pub fn largest_holding_to(h: impl Fn(f64) -> f64, lo: f64, hi: f64, rel_tol: f64, stats: &mut RootStats) -> Holding {
-    largest_holding_among(h, (lo, hi), &[], rel_tol, stats)
-}
-
-/// [`largest_holding_to`] with points of the range where `h` is known already (evaluating it
-/// there again costs nothing, e.g. a simulation made before): Brent's method starts from the
-/// first change of sign among them, searched from `lo` (a point where h is not finite is
-/// passed over), to the same x-tolerance, `rel_tol` of the whole range. A known point where h
-/// holds stands for `lo` (which is then not evaluated), one where it fails for `hi`. Where h
-/// changes sign once on the range, that is the root [`largest_holding_to`] finds, in fewer
-/// evaluations.
+/// [`largest_holding`] to `rel_tol` of the range in x (for a criterion each evaluation of
+/// which is costly, a simulation, where the last iterations of Brent's method would refine the
+/// root far below the accuracy of the criterion itself), with points of the range where `h`
+/// is known already (evaluating it there again costs nothing, e.g. a simulation made before):
+/// Brent's method starts from the first change of sign among them, searched from `lo` (a point
+/// where h is not finite is passed over), to the same x-tolerance, `rel_tol` of the whole
+/// range. A known point where h holds stands for `lo` (which is then not evaluated), one where
+/// it fails for `hi`. Where h changes sign once on the range, that is the root found without
+/// known points, in fewer evaluations.
 pub fn largest_holding_among(
     h: impl Fn(f64) -> f64,
     (lo, hi): (f64, f64),

@@ -111,7 +111,8 @@ fn scenes_sharing_a_start_give_what_each_gives_alone() {
 /// each result is the one of the scene run alone, to the last bit; lifting and lowering. (The
 /// free pulley runs faster before the brake sets in than the trip ever does: the m'v² lattice
 /// is spaced by the motion profile's speeds, the same for both.) The saving is the ropes' start
-/// up to 29 995 steps and some of the trip's wrap increments up to 29.995 s, at most all.
+/// up to 29 995 steps and some of the trip's wrap increments up to 29.995 s, at most all. The
+/// brake trip's mirror is a lowering trip stopped by the brake.
 #[test]
 fn a_stop_goes_on_from_its_trip_s_wrap_at_another_row_interval() {
     let _turn = TALLY.lock().unwrap_or_else(|e| e.into_inner());
@@ -129,6 +130,19 @@ fn a_stop_goes_on_from_its_trip_s_wrap_at_another_row_interval() {
         let trip_wrap = tally::increments() - before - 64_030;
         assert!(saved > 29_995 && saved <= 29_995 + trip_wrap, "{trip}: {saved} against 29 995 + {trip_wrap}");
     }
+    // The mirror of the brake trip: the MID lowering trip stopped by the brake at 30 s.
+    let d = with_scenes(
+        "[[scene]]\nname = \"down\"\nkind = \"duty-cycle\"\npayload_kg = 30000.0\ndirection = \"lower\"\n\n\
+         [[scene]]\nname = \"down-braked\"\nkind = \"duty-cycle\"\npayload_kg = 30000.0\ndirection = \"lower\"\n\
+         emergency_stop_s = 30.0\noutput_step_s = 0.02\n",
+    );
+    assert!(cycle(&d, "down-braked").brake_stop_s.is_some(), "a stop by the brake");
+    let scenes: Vec<_> = d.scenes.iter().collect();
+    let saved = same_together_as_alone(&d, &scenes, options, " (lowering, stopped by the brake)");
+    let before = tally::increments();
+    run::run(&d, &scenes[..1], options).expect("runs");
+    let trip_wrap = tally::increments() - before - 64_030;
+    assert!(saved > 29_995 && saved <= 29_995 + trip_wrap, "lowering: {saved} against 29 995 + {trip_wrap}");
 }
 
 /// The reference sheet's hoist with `scenes` (TOML) as its only scenes.

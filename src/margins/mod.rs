@@ -123,16 +123,11 @@ pub struct Margins {
 
 /// Largest x in [lo, hi] from which the criterion `h` (≥ 0: holds) still holds, as the root of h.
 pub fn largest_holding(h: impl Fn(f64) -> f64, lo: f64, hi: f64, stats: &mut RootStats) -> Margin {
-    largest_holding_to(h, lo, hi, roots::HOLDING_REL_TOL, stats)
+    largest_holding_among(h, (lo, hi), &[], roots::HOLDING_REL_TOL, stats)
 }
 
-/// [`largest_holding`] to `rel_tol` of the range ([`roots::largest_holding_to`]).
-pub fn largest_holding_to(h: impl Fn(f64) -> f64, lo: f64, hi: f64, rel_tol: f64, stats: &mut RootStats) -> Margin {
-    largest_holding_among(h, (lo, hi), &[], rel_tol, stats)
-}
-
-/// [`largest_holding_to`] starting from points where `h` is known already
-/// ([`roots::largest_holding_among`]).
+/// [`largest_holding`] to `rel_tol` of the range, starting from points where `h` is known
+/// already ([`roots::largest_holding_among`]).
 pub fn largest_holding_among(
     h: impl Fn(f64) -> f64,
     (lo, hi): (f64, f64),

@@ -54,9 +54,11 @@ impl Unconfirmed {
     /// The wrap's run when the whole end history `samples` (the trip's valid part, from
     /// `ropes_len` samples of the ropes) confirms what it ran on: all of the ropes' samples (no
     /// gross slip ended the trip early; a slack rope is refused before) and the lattice spacing
-    /// of the whole history. It is then the run through `samples` to the last bit.
-    pub fn confirmed(self, samples: &[HistorySample], ropes_len: usize, mass_per_m_kg: f64) -> Option<HistoryRun> {
-        let spacing = lattice::centrifugal_step_n(samples, mass_per_m_kg, &Numerics::default());
+    /// of the whole history (from its largest end tension and the profile's largest m'v²,
+    /// `centrifugal_max_n`, as the run after the ropes spaces it). It is then the run through
+    /// `samples` to the last bit.
+    pub fn confirmed(self, samples: &[HistorySample], ropes_len: usize, centrifugal_max_n: f64) -> Option<HistoryRun> {
+        let spacing = lattice::spacing_n(samples, centrifugal_max_n, &Numerics::default());
         let whole = samples.len() == ropes_len && self.fed == samples.len();
         let kept = self.wrap.filter(|_| whole && spacing == self.centrifugal_step_n);
         if kept.is_some() {
@@ -155,13 +157,24 @@ fn sample_instants(cycle: &DutyCycleScene, profile: &MotionProfile) -> Vec<f64> 
 /// The m'v² lattice spacing of the samples the ropes will make, from the motion profile at
 /// their `instants`, with the tensions' share left out.
 fn spacing_from_profile(design: &Design, profile: &MotionProfile, instants: &[f64]) -> f64 {
-    let m = design.rope.mass_per_m_kg;
-    let c_max = instants
-        .iter()
-        .map(|&t| {
-            let v = level4::at_rest_snapped(profile.at(t).speed_m_s);
-            m * v * v
-        })
-        .fold(0.0, f64::max);
+    let c_max = profile_centrifugal_max_n(design.rope.mass_per_m_kg, profile, instants.iter().copied());
     Numerics::default().centrifugal_step_of_range * c_max
+}
+
+/// The largest m'v² (N) of a motion profile at `instants` (beyond its end, the profile's at
+/// its end: a stop by the `[brake]` goes on from there), speeds at rest snapped to 0 as the
+/// end history has them ([`level4::at_rest_snapped`]): it spaces a duty cycle's m'v² lattice,
+/// so that trips that agree up to an instant step alike up to it whatever speed their own
+/// stop reaches after it.
+pub(super) fn profile_centrifugal_max_n(
+    mass_per_m_kg: f64,
+    profile: &MotionProfile,
+    instants: impl Iterator<Item = f64>,
+) -> f64 {
+    let end = profile.duration_s();
+    let c = |t: f64| {
+        let v = level4::at_rest_snapped(profile.at(t.min(end)).speed_m_s);
+        mass_per_m_kg * v * v
+    };
+    instants.map(c).fold(0.0, f64::max)
 }

@@ -98,7 +98,8 @@ pub(super) fn run_duty_cycle(
     let snapshots_s = valid_snapshots(cycle, end_s);
     let output = cycle_output(cycle, &snapshots_s, options);
     let ropes_len = dynamics.as_ref().map_or(0, |(r, _)| r.samples.len());
-    let made_beside = unconfirmed.and_then(|u| u.confirmed(&trip.samples, ropes_len, design.rope.mass_per_m_kg));
+    let centrifugal_max_n = centrifugal_max_n(design, hoist, cycle, &trip.samples);
+    let made_beside = unconfirmed.zip(centrifugal_max_n).and_then(|(u, c)| u.confirmed(&trip.samples, ropes_len, c));
     let input = Samples {
         samples: &trip.samples,
         accel_m_s2: Some(&accel),
@@ -109,7 +110,7 @@ pub(super) fn run_duty_cycle(
         spare_core: parallel_sides,
         made_beside,
         share: context.wrap,
-        centrifugal_max_n: centrifugal_max_n(design, hoist, cycle, &trip.samples),
+        centrifugal_max_n,
     };
     let (mut result, kept) = run_samples(design, scene, input, plan, options)?;
     if let Some((ropes, rigid)) = &dynamics {
@@ -228,19 +229,12 @@ struct Samples<'a> {
 }
 
 /// The largest m'v² (N) of a duty cycle's motion profile at the instants of its end history's
-/// samples (after a stop by the `[brake]`, the profile's at the trip): it spaces the wrap's m'v²
-/// lattice ([`lattice::spacing_n`]), so that trips that agree up to an instant step alike up
-/// to it whatever speed their own stop reaches after it, e.g. the free pulley's before the
-/// brake sets in.
+/// samples ([`pipelined::profile_centrifugal_max_n`]), which spaces the wrap's m'v² lattice
+/// ([`lattice::spacing_n`]): after a stop by the `[brake]` the free pulley runs a little faster
+/// before the brake sets in than the trip ever does.
 fn centrifugal_max_n(design: &Design, hoist: &Hoist, cycle: &DutyCycleScene, samples: &[HistorySample]) -> Option<f64> {
     let profile = level4::motion_profile(hoist, cycle).ok()?;
-    let m = design.rope.mass_per_m_kg;
-    let end = profile.duration_s();
-    let c = |t: f64| {
-        let v = level4::at_rest_snapped(profile.at(t.min(end)).speed_m_s);
-        m * v * v
-    };
-    Some(samples.iter().map(|s| c(s.t_s)).fold(0.0, f64::max))
+    Some(pipelined::profile_centrifugal_max_n(design.rope.mass_per_m_kg, &profile, samples.iter().map(|s| s.t_s)))
 }
 
 /// A scene given as end tensions and speed over time (history and duty-cycle scenes): level 0
