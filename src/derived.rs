@@ -231,11 +231,11 @@ where
             gather.evaluate(&carried.piece(p, i), law, Evaluate { peak: true, arc: false, slip: false })?;
         }
     }
-    for (i, (p, screen)) in held.enumerate() {
+    held.enumerate().try_for_each(|(i, (p, screen))| {
         // Shifting a piece changes neither its shape nor the sign of its friction.
         if p.contact_exponential(c).is_some() {
             gather.exponential(&carried.piece(p, i), law);
-            continue;
+            return Ok(());
         }
         let positive = p.friction_positive();
         let (a, b) = carried.ends(p, i);
@@ -258,7 +258,8 @@ where
         if peak || arc || slip {
             gather.evaluate(&carried.piece(p, i), law, Evaluate { peak, arc, slip })?;
         }
-    }
+        Ok(())
+    })?;
     Ok(gather.summary())
 }
 
