@@ -12,7 +12,7 @@
 
 use crate::contact::{ARC_THRESHOLD, ContactLaw, NodeState, SLIP_UTILIZATION};
 use crate::roots::{RootError, RootStats, bracketed};
-use crate::screen::{Screen, Side};
+use crate::screen::{Held, Screen, Screens, Side};
 use crate::wrap::{Distribution, Piece, Sample, TensionField, Zone, output_grid_rad};
 
 /// Sign class of friction on a stretch of wrap.
@@ -204,62 +204,38 @@ impl Carried {
 /// is not evaluated against it, and the peak utilization is evaluated first on the piece of the
 /// largest bound, then only on the pieces whose bound exceeds the peak so far (on none where a
 /// slip zone at the Coulomb limit near an end is the peak, u = 1).
-pub fn summarize_screened<'a, I>(
-    held: I,
+pub fn summarize_screened<S: Screens>(
+    held: &Held<'_, S>,
     carried: Carried,
     law: &ContactLaw,
     zones: bool,
-) -> Result<WrapSummary, RootError>
-where
-    I: DoubleEndedIterator<Item = (&'a Piece, &'a Screen)> + Clone,
-{
+) -> Result<WrapSummary, RootError> {
     let (mu, c) = (law.mu, law.centrifugal_n);
     let mut gather = Gather::new(zones);
     // A slip zone at the Coulomb limit (most often at an end) is the peak, u = 1: no piece
     // needs evaluating for it.
-    let ends = held.clone().take(3).chain(held.clone().rev().take(3));
+    let ends = held.iter().take(3).chain(held.iter().rev().take(3));
     let at_limit =
         ends.into_iter().any(|(p, _)| p.contact_exponential(c).is_some_and(|(_, k)| contact_utilization(k, mu) >= 1.0));
     if !at_limit {
         let top = held
-            .clone()
+            .iter()
             .enumerate()
-            .filter(|(_, (p, _))| p.contact_exponential(c).is_none())
+            .filter(|(_, (_, s))| !s.contact_exponential(c))
             .map(|(i, (p, s))| (s.utilization_bound(mu, c), i, p))
             .max_by(|a, b| a.0.total_cmp(&b.0));
         if let Some((_, i, p)) = top {
             gather.evaluate(&carried.piece(p, i), law, Evaluate { peak: true, arc: false, slip: false })?;
         }
     }
-    held.enumerate().try_for_each(|(i, (p, screen))| {
-        // Shifting a piece changes neither its shape nor the sign of its friction.
-        if p.contact_exponential(c).is_some() {
-            gather.exponential(&carried.piece(p, i), law);
-            return Ok(());
+    let mut i = 0;
+    for &(pieces, screens) in held.runs() {
+        for (p, screen) in pieces.iter().zip(screens) {
+            let screen = screen.screen(p, held.mu());
+            gather.screened(p, screen, (i, &carried), law, at_limit)?;
+            i += 1;
         }
-        let positive = p.friction_positive();
-        let (a, b) = carried.ends(p, i);
-        let arc = match screen.arc.side(c) {
-            Side::Open => true,
-            side => {
-                gather.arcs.add(a, b, side == Side::Above, positive);
-                false
-            }
-        };
-        let slip = gather.zones
-            && match screen.slip.side(c) {
-                Side::Open => true,
-                side => {
-                    gather.states.push(a, b, state_of(side == Side::Above, positive));
-                    false
-                }
-            };
-        let peak = !at_limit && screen.may_exceed(mu, c, gather.max_utilization);
-        if peak || arc || slip {
-            gather.evaluate(&carried.piece(p, i), law, Evaluate { peak, arc, slip })?;
-        }
-        Ok(())
-    })?;
+    }
     Ok(gather.summary())
 }
 
@@ -317,6 +293,47 @@ impl Gather {
             self.states.push(piece.theta0_rad, piece.theta1_rad, state_of(u >= SLIP_UTILIZATION, positive));
         }
         true
+    }
+
+    /// Adds held piece `i` by its screen: what the screen decides without evaluating the piece,
+    /// the rest by [`Self::evaluate`] (the peak not sought when `at_limit`).
+    #[inline(always)]
+    fn screened(
+        &mut self,
+        p: &Piece,
+        screen: &Screen,
+        (i, carried): (usize, &Carried),
+        law: &ContactLaw,
+        at_limit: bool,
+    ) -> Result<(), RootError> {
+        let (mu, c) = (law.mu, law.centrifugal_n);
+        // Shifting a piece changes neither its shape nor the sign of its friction.
+        if screen.contact_exponential(c) {
+            self.exponential(&carried.piece(p, i), law);
+            return Ok(());
+        }
+        let positive = screen.positive();
+        let (a, b) = carried.ends(p, i);
+        let arc = match screen.arc.side(c) {
+            Side::Open => true,
+            side => {
+                self.arcs.add(a, b, side == Side::Above, positive);
+                false
+            }
+        };
+        let slip = self.zones
+            && match screen.slip.side(c) {
+                Side::Open => true,
+                side => {
+                    self.states.push(a, b, state_of(side == Side::Above, positive));
+                    false
+                }
+            };
+        let peak = !at_limit && screen.may_exceed(mu, c, self.max_utilization);
+        if peak || arc || slip {
+            self.evaluate(&carried.piece(p, i), law, Evaluate { peak, arc, slip })?;
+        }
+        Ok(())
     }
 
     /// Evaluates a piece part by part (each of monotone utilization): the peak at the parts'

@@ -71,6 +71,12 @@ pub struct Screen {
     tension_min_n: f64,
     /// Largest |q| over the piece (N/rad), plus the margin.
     friction_max_n_per_rad: f64,
+    /// The sign of the piece's friction ([`Piece::friction_positive`]).
+    positive: bool,
+    /// The constant part of a growing exponential (`T_base` of an [`Shape::Exp`] whose amplitude
+    /// is positive, N): at m'v² equal to it the piece is an exponential of the contact force
+    /// ([`Piece::contact_exponential`]); NaN for any other piece.
+    contact_base_n: f64,
 }
 
 impl Screen {
@@ -90,7 +96,23 @@ impl Screen {
             slip: widened(range_with_ends(piece, &ends, mu * SLIP_UTILIZATION)),
             tension_min_n: t_min - MARGIN * scale,
             friction_max_n_per_rad: q_max * (1.0 + MARGIN),
+            positive: piece.friction_positive(),
+            contact_base_n: match piece.shape {
+                Shape::Exp { base_n, amp_n, .. } if amp_n > 0.0 => base_n,
+                _ => f64::NAN,
+            },
         }
+    }
+
+    /// Whether the piece's friction is positive ([`Piece::friction_positive`]).
+    pub fn positive(&self) -> bool {
+        self.positive
+    }
+
+    /// Whether the piece is an exponential of the contact force at m'v² = `centrifugal_n`
+    /// ([`Piece::contact_exponential`] is `Some`).
+    pub fn contact_exponential(&self, centrifugal_n: f64) -> bool {
+        self.contact_base_n == centrifugal_n
     }
 
     /// An upper bound of the utilization over the piece at m'v² = `centrifugal_n` on a lining
@@ -105,6 +127,73 @@ impl Screen {
     pub fn may_exceed(&self, mu: f64, centrifugal_n: f64, peak: f64) -> bool {
         let capacity = mu * (self.tension_min_n - centrifugal_n);
         !(capacity > 0.0 && self.friction_max_n_per_rad <= peak * capacity)
+    }
+}
+
+/// What a state holds beside a piece that gives the piece's [`Screen`]: the screen itself, or a
+/// place that makes it when first asked for.
+pub trait Screens {
+    /// The screen of `piece` (the piece this stands beside) on a lining of friction coefficient
+    /// `mu`.
+    fn screen(&self, piece: &Piece, mu: f64) -> &Screen;
+}
+
+impl Screens for Screen {
+    #[inline]
+    fn screen(&self, _: &Piece, _: f64) -> &Screen {
+        self
+    }
+}
+
+/// Pieces in θ order, each beside what screens it, as up to three runs that lie contiguous in
+/// memory (a ring buffer's pieces and screens wrap around at different places): a summary
+/// reads them in plain loops.
+#[derive(Debug, Clone, Copy)]
+pub struct Held<'a, S> {
+    runs: [(&'a [Piece], &'a [S]); 3],
+    mu: f64,
+}
+
+impl<'a, S: Screens> Held<'a, S> {
+    /// Pieces and screens held in one run each (of the same length).
+    pub fn contiguous(pieces: &'a [Piece], screens: &'a [S], mu: f64) -> Self {
+        debug_assert_eq!(pieces.len(), screens.len());
+        Self { runs: [(pieces, screens), (&[], &[]), (&[], &[])], mu }
+    }
+
+    /// Pieces and screens each held as two runs (a ring buffer's), of the same total length:
+    /// cut where either run ends.
+    pub fn of_rings(pieces: (&'a [Piece], &'a [Piece]), screens: (&'a [S], &'a [S]), mu: f64) -> Self {
+        debug_assert_eq!(pieces.0.len() + pieces.1.len(), screens.0.len() + screens.1.len());
+        let ((p0, p1), (s0, s1)) = (pieces, screens);
+        let runs = if p0.len() <= s0.len() {
+            let (s_first, s_mid) = s0.split_at(p0.len());
+            let (p_mid, p_last) = p1.split_at(s_mid.len());
+            [(p0, s_first), (p_mid, s_mid), (p_last, s1)]
+        } else {
+            let (p_first, p_mid) = p0.split_at(s0.len());
+            let (s_mid, s_last) = s1.split_at(p_mid.len());
+            [(p_first, s0), (p_mid, s_mid), (p1, s_last)]
+        };
+        Self { runs, mu }
+    }
+
+    /// The runs, in θ order.
+    pub fn runs(&self) -> &[(&'a [Piece], &'a [S]); 3] {
+        &self.runs
+    }
+
+    /// The friction coefficient the screens are for.
+    pub fn mu(&self) -> f64 {
+        self.mu
+    }
+
+    /// The pieces with their screens, in θ order.
+    pub fn iter(&self) -> impl DoubleEndedIterator<Item = (&'a Piece, &'a Screen)> + Clone + 'a {
+        let mu = self.mu;
+        let [(p0, s0), (p1, s1), (p2, s2)] = self.runs;
+        let run = move |p: &'a [Piece], s: &'a [S]| p.iter().zip(s).map(move |(p, s)| (p, s.screen(p, mu)));
+        run(p0, s0).chain(run(p1, s1)).chain(run(p2, s2))
     }
 }
 

@@ -73,7 +73,7 @@ impl ModelRun {
             let law = ContactLaw::new(self.params.mu, sim.centrifugal_n);
             std::hint::black_box({
                 let (held, carried) = sim.profile.screened();
-                derived::summarize_screened(held, carried, &law, false)
+                derived::summarize_screened(&held, carried, &law, false)
             }?);
         }
         Ok((sim.stats.increments, sim.profile))

@@ -67,14 +67,14 @@ impl WrapModel for Simulation<'_> {
 
     fn summary(&self, zones: bool) -> Result<WrapSummary, RootError> {
         let (held, carried) = self.profile.screened();
-        derived::summarize_screened(held, carried, &self.law(), zones)
+        derived::summarize_screened(&held, carried, &self.law(), zones)
     }
 
     fn summary_job(&self) -> Option<history::SummaryJob> {
         let (frozen, law) = (self.profile.frozen(), self.law());
         Some(Box::new(move || {
             let (held, carried) = frozen.screened();
-            derived::summarize_screened(held, carried, &law, false)
+            derived::summarize_screened(&held, carried, &law, false)
         }))
     }
 

@@ -10,7 +10,7 @@
 //! [`crate::wrap::Shape`], so the state has no interpolation error.
 
 use crate::derived::Carried;
-use crate::screen::{Screen, limit_centrifugal_n};
+use crate::screen::{Held, Screen, Screens, limit_centrifugal_n};
 use crate::wrap::{Piece, Shape, TensionField};
 use std::cell::OnceCell;
 use std::collections::VecDeque;
@@ -41,9 +41,16 @@ pub struct Profile {
 /// reaches the Coulomb limit somewhere (a rise of m'v² past it calls for a repair), and its
 /// [`Screen`].
 #[derive(Debug, Clone, PartialEq, Default)]
-struct Beside {
+pub struct Beside {
     limit_n: OnceCell<f64>,
     screen: OnceCell<Screen>,
+}
+
+impl Screens for Beside {
+    #[inline]
+    fn screen(&self, piece: &Piece, mu: f64) -> &Screen {
+        self.screen.get_or_init(|| Screen::of(piece, mu))
+    }
 }
 
 impl Profile {
@@ -101,10 +108,8 @@ impl Profile {
     }
 
     /// The pieces as held, each with its [`Screen`], and how they are carried.
-    pub fn screened(&self) -> (impl DoubleEndedIterator<Item = (&Piece, &Screen)> + Clone + '_, Carried) {
-        let mu = self.mu;
-        let screened = self.pieces.iter().zip(self.beside.iter());
-        (screened.map(move |(p, b)| (p, b.screen.get_or_init(|| Screen::of(p, mu)))), self.carried())
+    pub fn screened(&self) -> (Held<'_, Beside>, Carried) {
+        (Held::of_rings(self.pieces.as_slices(), self.beside.as_slices(), self.mu), self.carried())
     }
 
     fn carried(&self) -> Carried {
@@ -117,9 +122,10 @@ impl Profile {
         let (front, back) = self.pieces.as_slices();
         Frozen {
             pieces: [front, back].concat(),
-            screens: self.screened().0.map(|(_, s)| *s).collect(),
+            screens: self.screened().0.iter().map(|(_, s)| *s).collect(),
             phi_rad: self.phi_rad,
             wrap_angle_rad: self.wrap_angle_rad,
+            mu: self.mu,
         }
     }
 
@@ -357,13 +363,14 @@ pub struct Frozen {
     screens: Vec<Screen>,
     phi_rad: f64,
     wrap_angle_rad: f64,
+    mu: f64,
 }
 
 impl Frozen {
     /// [`Profile::screened`] of the profile copied.
-    pub fn screened(&self) -> (impl DoubleEndedIterator<Item = (&Piece, &Screen)> + Clone + '_, Carried) {
+    pub fn screened(&self) -> (Held<'_, Screen>, Carried) {
         let carried = Carried { phi_rad: self.phi_rad, wrap_angle_rad: self.wrap_angle_rad, len: self.pieces.len() };
-        (self.pieces.iter().zip(self.screens.iter()), carried)
+        (Held::contiguous(&self.pieces, &self.screens, self.mu), carried)
     }
 }
 
