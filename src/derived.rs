@@ -229,6 +229,8 @@ pub fn summarize_screened<S: Screens>(
         }
     }
     let mut i = 0;
+    // Run by run in plain loops: an iterator chained over the runs costs about 3 % more of a
+    // duty cycle's instructions.
     for &(pieces, screens) in held.runs() {
         for (p, screen) in pieces.iter().zip(screens) {
             let screen = screen.screen(p, held.mu());

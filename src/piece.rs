@@ -186,9 +186,19 @@ impl Piece {
     /// `base` the given m'v² (its utilization is then `|k|/μ` everywhere).
     pub fn contact_exponential(&self, centrifugal_n: f64) -> Option<(f64, f64)> {
         match self.shape {
-            Shape::Exp { base_n, amp_n, rate_per_rad } if base_n == centrifugal_n && amp_n > 0.0 => {
+            Shape::Exp { amp_n, rate_per_rad, .. } if self.contact_base_n() == Some(centrifugal_n) => {
                 Some((amp_n, rate_per_rad))
             }
+            _ => None,
+        }
+    }
+
+    /// The m'v² at which the piece is an exponential of the contact force
+    /// ([`Self::contact_exponential`]): `T_base` of an exponential whose amplitude is positive,
+    /// N; `None` for any other piece.
+    pub fn contact_base_n(&self) -> Option<f64> {
+        match self.shape {
+            Shape::Exp { base_n, amp_n, .. } if amp_n > 0.0 => Some(base_n),
             _ => None,
         }
     }

@@ -73,9 +73,8 @@ pub struct Screen {
     friction_max_n_per_rad: f64,
     /// The sign of the piece's friction ([`Piece::friction_positive`]).
     positive: bool,
-    /// The constant part of a growing exponential (`T_base` of an [`Shape::Exp`] whose amplitude
-    /// is positive, N): at m'v² equal to it the piece is an exponential of the contact force
-    /// ([`Piece::contact_exponential`]); NaN for any other piece.
+    /// [`Piece::contact_base_n`]: at m'v² equal to it the piece is an exponential of the
+    /// contact force; NaN for any other piece.
     contact_base_n: f64,
 }
 
@@ -97,10 +96,7 @@ impl Screen {
             tension_min_n: t_min - MARGIN * scale,
             friction_max_n_per_rad: q_max * (1.0 + MARGIN),
             positive: piece.friction_positive(),
-            contact_base_n: match piece.shape {
-                Shape::Exp { base_n, amp_n, .. } if amp_n > 0.0 => base_n,
-                _ => f64::NAN,
-            },
+            contact_base_n: piece.contact_base_n().unwrap_or(f64::NAN),
         }
     }
 
@@ -303,6 +299,42 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// What a screen keeps of its piece answers as the piece does: the sign of its friction and,
+    /// at every m'v², whether it is an exponential of the contact force. Exponentials rising
+    /// and falling (friction reversed and positive: the mirror images), one of a negative
+    /// amplitude (not of the contact force at any m'v²), a constant piece (of the contact
+    /// force only at m'v² = 0) and entry ramps lifting and lowering.
+    #[test]
+    fn a_screen_keeps_its_piece_s_answers() {
+        let mu = 0.25;
+        let ramp = |omega_per_s: f64, slope_n_per_s: f64| {
+            let ramp = EntryRamp { theta_a_rad: 0.0, tension_n: 5e4, slope_n_per_s, omega_per_s, alpha_per_s2: 0.0 };
+            let (a, b) = (-0.8 * omega_per_s, -0.1 * omega_per_s);
+            Piece::entry(a.min(b), a.max(b), ramp)
+        };
+        let pieces = [
+            Piece::exponential(0.0, 1.5, 300.0, 4e4, 0.2),
+            Piece::exponential(0.0, 1.5, 300.0, 4e4, -0.2),
+            Piece::exponential(0.0, 1.5, 300.0, -4e4, 0.2),
+            Piece::constant(0.0, 1.0, 4e4),
+            ramp(1.0, 3e3),
+            ramp(-1.0, 3e3),
+            ramp(1.0, -3e3),
+            ramp(-1.0, -3e3),
+        ];
+        for piece in &pieces {
+            let screen = Screen::of(piece, mu);
+            assert_eq!(screen.positive(), piece.friction_positive(), "{piece:?}");
+            for c in [0.0, 300.0, 300.0 + 1e-9, 5e3] {
+                let expected = piece.contact_exponential(c).is_some();
+                assert_eq!(screen.contact_exponential(c), expected, "{piece:?} at c = {c}");
+            }
+        }
+        // Both answers occur among the pieces: the test tells them apart.
+        assert!(pieces.iter().any(|p| p.contact_exponential(300.0).is_some()));
+        assert!(pieces.iter().any(|p| p.friction_positive()) && pieces.iter().any(|p| !p.friction_positive()));
     }
 
     /// The limit is the least m'v² at which a point reaches u = 1, by hand for a constant
