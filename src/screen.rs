@@ -337,6 +337,47 @@ mod tests {
         assert!(pieces.iter().any(|p| p.friction_positive()) && pieces.iter().any(|p| !p.friction_positive()));
     }
 
+    /// Pieces and screens held in two ring buffers that wrap around at different places give
+    /// each piece beside its own screen, in θ order: every pair of wrap points of a ring of 6,
+    /// so that both ways of cutting the runs (the pieces' ring wrapping first, or the
+    /// screens') are taken, and also the rings that do not wrap at all.
+    #[test]
+    fn rings_that_wrap_apart_hold_each_piece_beside_its_screen() {
+        use std::collections::VecDeque;
+        let n = 6;
+        let pieces: Vec<Piece> = (0..n).map(|k| Piece::constant(k as f64, k as f64 + 1.0, 1e4 + k as f64)).collect();
+        let screens: Vec<Screen> = pieces.iter().map(|p| Screen::of(p, 0.25)).collect();
+        // The items in order, in a ring of capacity `n` whose first item sits at slot `r`.
+        fn ring<T: Copy>(items: &[T], r: usize) -> VecDeque<T> {
+            let n = items.len();
+            let start: Vec<T> = items[..r].iter().chain(&items[..n - r]).copied().collect();
+            let mut d = VecDeque::from(start);
+            for item in &items[n - r..] {
+                d.pop_front();
+                d.push_back(*item);
+            }
+            assert_eq!((d.as_slices().0.len(), d.capacity()), (n - r, n), "the ring wraps at slot {r}");
+            d
+        }
+        let mut branches = [false; 2];
+        for rp in 0..n {
+            for rs in 0..n {
+                let (p, s) = (ring(&pieces, rp), ring(&screens, rs));
+                branches[usize::from(p.as_slices().0.len() <= s.as_slices().0.len())] = true;
+                let held = Held::of_rings(p.as_slices(), s.as_slices(), 0.25);
+                let by_iter: Vec<(Piece, Screen)> = held.iter().map(|(p, s)| (*p, *s)).collect();
+                let by_runs: Vec<(Piece, Screen)> =
+                    held.runs().iter().flat_map(|(p, s)| p.iter().copied().zip(s.iter().copied())).collect();
+                let expected: Vec<(Piece, Screen)> = pieces.iter().copied().zip(screens.iter().copied()).collect();
+                assert_eq!(by_iter, expected, "pieces wrapping at {rp}, screens at {rs}");
+                assert_eq!(by_runs, expected, "pieces wrapping at {rp}, screens at {rs}");
+                let back: Vec<Piece> = held.iter().rev().map(|(p, _)| *p).collect();
+                assert!(back.iter().rev().eq(pieces.iter()), "reversed, pieces at {rp}, screens at {rs}");
+            }
+        }
+        assert_eq!(branches, [true, true], "both ways of cutting the runs are taken");
+    }
+
     /// The limit is the least m'v² at which a point reaches u = 1, by hand for a constant
     /// piece (q = 0: the rope's own tension) and an exponential at |k| = μ/2, where
     /// `T − |q|/μ = T (1 − |k|/μ) = T/2`, least at the end of the smaller tension. The
