@@ -249,6 +249,7 @@ fn add_position_stop(design: &Design, case: &mut CaseResult, masses: &StopMasses
         trip_x_m: k.x_m,
         stop_s: if d > 0.0 { v / d } else { f64::INFINITY },
         speed_at_trip_m_s: k.speed_m_s,
+        speed_at_full_force_m_s: k.speed_m_s,
         decel_m_s2: d,
         peak_decel_m_s2: d,
         distance_m: if d > 0.0 { v * v / (2.0 * d) } else { f64::INFINITY },

@@ -4,6 +4,7 @@
 use crate::check::{Check, Relation, q};
 use crate::design::{Design, Direction, Limit};
 use crate::model::braking;
+use crate::model::level0::euler_limit;
 use crate::model::stop::{SlipOnset, StopMode, StopReport};
 
 /// Names of the braking checks: the window when lifting and when lowering side 1, and the slip
@@ -17,6 +18,11 @@ pub const DECEL_LOWER_MIN_CHECK: &str = "emergency deceleration lowering, minimu
 pub const DECEL_LOWER_MAX_CHECK: &str = "emergency deceleration lowering, maximum";
 /// Name of the check of the emergency deceleration against the slip-limited one.
 pub const SLIP_LIMIT_CHECK: &str = "emergency deceleration below the slip limit";
+
+/// The input of a timed braked stop: the speed when the full brake force is reached.
+pub const SPEED_AT_FULL_FORCE: &str = "v at full brake force";
+/// The input of a stop at an imposed deceleration at one position.
+pub const IMPOSED_DECEL: &str = "d imposed";
 
 /// Source of the slip-limited deceleration.
 pub const SLIP_LIMIT_SOURCE: &str =
@@ -82,9 +88,14 @@ pub fn stop_checks(design: &Design, stop: &StopReport, onset: Option<&SlipOnset>
     checks
 }
 
-/// What a stop's checks print as inputs: the stop, the brake and the masses.
+/// What a stop's checks print as inputs: the stop, the masses, what the slip limit is made of
+/// (g, n, e^{μα}, m'v² at the trip's speed) and the brake.
 fn stop_inputs(design: &Design, stop: &StopReport) -> Vec<crate::check::Quantity> {
     let m = &stop.masses;
+    let brake = match (design.machine.brake, stop.mode) {
+        (Some(b), StopMode::Brake) => Some(b),
+        _ => None,
+    };
     let mut inputs = if stop.timed {
         vec![
             q("t_trip", stop.trip_s, "s"),
@@ -94,6 +105,13 @@ fn stop_inputs(design: &Design, stop: &StopReport) -> Vec<crate::check::Quantity
     } else {
         vec![q("v", stop.speed_at_trip_m_s, "m/s")]
     };
+    if stop.timed && brake.is_some() {
+        inputs.push(q(SPEED_AT_FULL_FORCE, stop.speed_at_full_force_m_s, "m/s"));
+    }
+    if !stop.timed && stop.mode == StopMode::Imposed {
+        inputs.push(q(IMPOSED_DECEL, stop.decel_m_s2, "m/s²"));
+    }
+    let v = stop.speed_at_trip_m_s;
     inputs.extend([
         q("m1", m.m1_kg, "kg"),
         q("m2", m.m2_kg, "kg"),
@@ -101,8 +119,12 @@ fn stop_inputs(design: &Design, stop: &StopReport) -> Vec<crate::check::Quantity
         q("m_g2 = J_g/R_g² (side 2)", m.guide_kg[1], "kg"),
         q("J/R² + n·m'·R·α", m.pulley_kg, "kg"),
         q("M", m.total_kg(), "kg"),
+        q("g", design.g_m_s2, "m/s²"),
+        q("n", f64::from(design.rope.count), ""),
+        q("e^{μα}", euler_limit(design.pulley.mu, design.pulley.wrap_angle_rad), ""),
+        q("m'v²", design.rope.mass_per_m_kg * v * v, "N"),
     ]);
-    if let (Some(b), StopMode::Brake) = (design.machine.brake, stop.mode) {
+    if let Some(b) = brake {
         let direction = if stop.lifting { Direction::Lift } else { Direction::Lower };
         inputs.extend([
             q("F_b", b.force_n, "N"),

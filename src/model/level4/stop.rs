@@ -194,6 +194,9 @@ pub struct StopReport {
     pub stop_s: f64,
     /// Speed at the trip, positive side 1 → side 2 (m/s).
     pub speed_at_trip_m_s: f64,
+    /// Speed when the full brake force is reached, `v(t_full)` (the trip's speed for an imposed
+    /// deceleration or a stop with the full force from the trip on; m/s).
+    pub speed_at_full_force_m_s: f64,
     /// The deceleration reached: mean from full brake force (the trip for an imposed
     /// deceleration) to standstill, `v(t_full)/(t_stop − t_full)` (m/s²).
     pub decel_m_s2: f64,
@@ -241,6 +244,7 @@ pub fn stop_report(
         trip_x_m: trip.x_m,
         stop_s,
         speed_at_trip_m_s: trip.speed_m_s,
+        speed_at_full_force_m_s: v_full,
         decel_m_s2: if decel.is_finite() { decel } else { 0.0 },
         peak_decel_m_s2: peak,
         distance_m: (stop.x_m - trip.x_m).abs(),
