@@ -81,66 +81,88 @@ pub fn render_design_checks(out: &mut String, d: &DesignResult, style: Style) {
     }
 }
 
-/// matrix.csv: one row per case.
+/// One cell of a load case's row in matrix.csv and in the workbook's load-case sheet.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Field {
+    /// Text.
+    Text(String),
+    /// A number (matrix.csv writes the shortest text that reads back to the same double).
+    Number(f64),
+    /// A whole number.
+    Int(i64),
+    /// true / false.
+    Bool(bool),
+    /// Not applicable to this case: an empty cell.
+    Missing,
+}
+
+impl Field {
+    fn opt(v: Option<f64>) -> Field {
+        v.map_or(Field::Missing, Field::Number)
+    }
+
+    /// The field as matrix.csv writes it.
+    pub fn csv_text(&self) -> String {
+        match self {
+            Field::Text(s) => s.clone(),
+            Field::Number(v) => v.to_string(),
+            Field::Int(v) => v.to_string(),
+            Field::Bool(v) => v.to_string(),
+            Field::Missing => String::new(),
+        }
+    }
+}
+
+/// A column of the load-case table: its header and how a case fills it.
+pub struct CaseColumn {
+    /// The column's header (matrix.csv's column name).
+    pub header: &'static str,
+    /// The case's cell.
+    pub field: fn(&CaseResult) -> Field,
+}
+
+/// The position as (kind, fraction of the travel or trip, time).
+fn position_parts(c: &CaseResult) -> (&'static str, Option<f64>, Option<f64>) {
+    match c.position {
+        Position::Travel { fraction } => ("travel", Some(fraction), None),
+        Position::WorstInstant { t_s } => ("worst-instant", None, Some(t_s)),
+        Position::Stop { fraction, t_s } => ("stop", Some(fraction), Some(t_s)),
+    }
+}
+
+/// The columns of matrix.csv and of the workbook's load-case sheet, in order.
+pub const CASE_COLUMNS: &[CaseColumn] = &[
+    CaseColumn { header: "label", field: |c| Field::Text(c.label.clone()) },
+    CaseColumn { header: "payload_kg", field: |c| Field::Number(c.payload_kg) },
+    CaseColumn { header: "direction", field: |c| Field::Text(c.direction.to_string()) },
+    CaseColumn { header: "phase", field: |c| Field::Text(c.phase.keyword().to_string()) },
+    CaseColumn { header: "position", field: |c| Field::Text(position_parts(c).0.to_string()) },
+    CaseColumn { header: "position_fraction", field: |c| Field::opt(position_parts(c).1) },
+    CaseColumn { header: "t_s", field: |c| Field::opt(position_parts(c).2) },
+    CaseColumn { header: "x_m", field: |c| Field::Number(c.x_m) },
+    CaseColumn { header: "level", field: |c| Field::Int(i64::from(c.level.number())) },
+    CaseColumn { header: "t1_n", field: |c| Field::Number(c.t1_n) },
+    CaseColumn { header: "t2_n", field: |c| Field::Number(c.t2_n) },
+    CaseColumn { header: "speed_m_s", field: |c| Field::Number(c.speed_m_s) },
+    CaseColumn { header: "accel_m_s2", field: |c| Field::Number(c.accel_m_s2) },
+    CaseColumn { header: "m1_kg", field: |c| Field::Number(c.m1_kg) },
+    CaseColumn { header: "m2_kg", field: |c| Field::Number(c.m2_kg) },
+    CaseColumn { header: "tension_ratio", field: |c| Field::Number(c.tension_ratio) },
+    CaseColumn { header: "static_safety_factor", field: |c| Field::opt(c.static_safety_factor) },
+    CaseColumn { header: "dynamic_safety_factor", field: |c| Field::opt(c.dynamic_safety_factor) },
+    CaseColumn { header: "rope_dynamics_safety_factor", field: |c| Field::opt(c.rope_dynamics_safety_factor) },
+    CaseColumn { header: "emergency_decel_m_s2", field: |c| Field::opt(c.stop.map(|s| s.decel_m_s2)) },
+    CaseColumn { header: "slip_limited_decel_m_s2", field: |c| Field::opt(c.stop.map(|s| s.slip_limited_decel_m_s2)) },
+    CaseColumn { header: "slip_onset_t_s", field: |c| Field::opt(c.slip_onset.map(|o| o.t_s)) },
+    CaseColumn { header: "checks_pass", field: |c| Field::Bool(c.checks_pass) },
+];
+
+/// matrix.csv: one row per case, the columns of [`CASE_COLUMNS`].
 pub fn write_matrix_csv<W: io::Write>(out: W, m: &MatrixResult) -> csv::Result<()> {
     let mut w = csv::Writer::from_writer(out);
-    w.write_record([
-        "label",
-        "payload_kg",
-        "direction",
-        "phase",
-        "position",
-        "position_fraction",
-        "t_s",
-        "x_m",
-        "level",
-        "t1_n",
-        "t2_n",
-        "speed_m_s",
-        "accel_m_s2",
-        "m1_kg",
-        "m2_kg",
-        "tension_ratio",
-        "static_safety_factor",
-        "dynamic_safety_factor",
-        "rope_dynamics_safety_factor",
-        "emergency_decel_m_s2",
-        "slip_limited_decel_m_s2",
-        "slip_onset_t_s",
-        "checks_pass",
-    ])?;
-    let num = |v: Option<f64>| v.map_or_else(String::new, |v| v.to_string());
+    w.write_record(CASE_COLUMNS.iter().map(|col| col.header))?;
     for c in &m.cases {
-        let (kind, fraction, t) = match c.position {
-            Position::Travel { fraction } => ("travel", Some(fraction), None),
-            Position::WorstInstant { t_s } => ("worst-instant", None, Some(t_s)),
-            Position::Stop { fraction, t_s } => ("stop", Some(fraction), Some(t_s)),
-        };
-        w.write_record([
-            c.label.clone(),
-            c.payload_kg.to_string(),
-            c.direction.to_string(),
-            c.phase.keyword().to_string(),
-            kind.to_string(),
-            num(fraction),
-            num(t),
-            c.x_m.to_string(),
-            c.level.to_string(),
-            c.t1_n.to_string(),
-            c.t2_n.to_string(),
-            c.speed_m_s.to_string(),
-            c.accel_m_s2.to_string(),
-            c.m1_kg.to_string(),
-            c.m2_kg.to_string(),
-            c.tension_ratio.to_string(),
-            num(c.static_safety_factor),
-            num(c.dynamic_safety_factor),
-            num(c.rope_dynamics_safety_factor),
-            num(c.stop.map(|s| s.decel_m_s2)),
-            num(c.stop.map(|s| s.slip_limited_decel_m_s2)),
-            num(c.slip_onset.map(|o| o.t_s)),
-            c.checks_pass.to_string(),
-        ])?;
+        w.write_record(CASE_COLUMNS.iter().map(|col| (col.field)(c).csv_text()))?;
     }
     w.flush()?;
     Ok(())
