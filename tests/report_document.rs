@@ -130,54 +130,135 @@ fn rel(a: f64, b: f64) -> f64 {
     (a - b).abs() / b.abs().max(f64::MIN_POSITIVE)
 }
 
+/// Every sheet of `xlsx` as CSV rows after LibreOffice recalculated every formula.
+fn recalculated(soffice: &Path, xlsx: &Path, tmp: &Path) -> impl Fn(&str) -> Vec<csv::StringRecord> + use<> {
+    let profile = recalculating_profile(&tmp.join("profile"));
+    // A canary that caches a wrong result: read back as 2, it shows LibreOffice recalculated
+    // (the workbook's own cached results are right, so they cannot show it).
+    let canary = tmp.join("canary.xlsx");
+    let mut book = rust_xlsxwriter::Workbook::new();
+    book.add_worksheet().write_formula(0, 0, rust_xlsxwriter::Formula::new("=1+1").set_result("0")).expect("canary");
+    book.save(&canary).expect("canary.xlsx");
+    // CSV with full precision ("as shown" off: token 9 false), UTF-8, comma-separated, every
+    // sheet to its own file <stem>-<sheet>.csv (token 12: -1).
+    run(std::process::Command::new(soffice)
+        .arg(profile)
+        .args(["--headless", "--norestore", "--convert-to"])
+        .arg("csv:Text - txt - csv (StarCalc):44,34,76,1,,0,false,true,false,false,false,-1")
+        .arg("--outdir")
+        .arg(tmp)
+        .args([xlsx, &canary]));
+    let canary = std::fs::read_to_string(tmp.join("canary-Sheet1.csv")).expect("canary csv");
+    assert_eq!(canary.trim(), "2", "LibreOffice recalculates on load");
+    let (tmp, stem) = (tmp.to_path_buf(), xlsx.file_stem().expect("stem").to_string_lossy().into_owned());
+    move |sheet: &str| {
+        let path = tmp.join(format!("{stem}-{sheet}.csv"));
+        let mut reader = csv::ReaderBuilder::new().has_headers(false).flexible(true).from_path(&path).expect("csv");
+        reader.records().map(|r| r.expect("csv row")).collect()
+    }
+}
+
+/// The column headed `header` (the header is the sheet's third row).
+fn col(rows: &[csv::StringRecord], header: &str) -> usize {
+    rows[2].iter().position(|h| h == header).unwrap_or_else(|| panic!("column {header}"))
+}
+
 #[test]
 fn workbook_recomputed_by_libreoffice_equals_wrapcalc() {
     let Some(soffice) = external("soffice", "libreoffice-calc") else { return };
     let dir = reference_report();
     let tmp = tempfile::tempdir().expect("temp dir");
-    let profile = recalculating_profile(&tmp.path().join("profile"));
-    // CSV with full precision ("as shown" off: token 9 false), UTF-8, comma-separated.
-    run(std::process::Command::new(soffice)
-        .arg(profile)
-        .args(["--headless", "--norestore", "--convert-to"])
-        .arg("csv:Text - txt - csv (StarCalc):44,34,76,1,,0,false,true,false,false")
-        .arg("--outdir")
-        .arg(tmp.path())
-        .arg(dir.join("checks.xlsx")));
-    let mut reader = csv::ReaderBuilder::new()
-        .has_headers(false)
-        .flexible(true)
-        .from_path(tmp.path().join("checks.csv"))
-        .expect("checks.csv");
-    let rows: Vec<csv::StringRecord> = reader.records().map(|r| r.expect("csv row")).skip(3).collect();
+    let sheet = recalculated(&soffice, &dir.join("checks.xlsx"), tmp.path());
+    let (all, inputs) = (sheet("Checks"), sheet("Inputs"));
+    let c = |h: &str| col(&all, h);
     let checks: usize =
         serde_json::from_str::<serde_json::Value>(&std::fs::read_to_string(dir.join("summary.json")).expect("summary"))
             .map(|s| s["design_checks"].as_array().map_or(0, Vec::len))
             .expect("json");
+    let rows = &all[3..];
     assert!(rows.len() > checks, "every check is a row ({} rows)", rows.len());
-    let (mut formulas, mut by_hand) = (0, 0);
-    for row in &rows {
-        let (name, formula) = (row.get(1).unwrap_or_default(), row.get(3).unwrap_or_default());
+    let mut counts = std::collections::HashMap::new();
+    for (i, row) in rows.iter().enumerate() {
+        let (name, formula) =
+            (row.get(c("check")).unwrap_or_default(), row.get(c("spreadsheet formula")).unwrap_or_default());
         if formula.starts_with('=') {
-            formulas += 1;
-            // The file caches 0 for every formula: a stale read fails here.
-            let (recomputed, value) = (cell(row, 4).expect("recomputed"), cell(row, 5).expect("wrapcalc value"));
+            *counts.entry("formulas").or_insert(0) += 1;
+            let (recomputed, value) = (
+                cell(row, c("value (recomputed)")).expect("recomputed"),
+                cell(row, c("value (wrapcalc)")).expect("value"),
+            );
             assert!(rel(recomputed, value) <= 1e-9, "{name}: {formula} gives {recomputed}, wrapcalc {value}");
         }
-        if let (Some(limit), Some(expected)) = (cell(row, 6), cell(row, 7)) {
-            assert!(rel(limit, expected) <= 1e-9, "{name}: e^(μα) recomputed {limit}, wrapcalc {expected}");
+        if let (Some(limit), Some(expected)) = (cell(row, c("limit (recomputed)")), cell(row, c("limit (wrapcalc)"))) {
+            assert!(rel(limit, expected) <= 1e-9, "{name}: limit recomputed {limit}, wrapcalc {expected}");
         }
+        // The check's inputs on the Inputs sheet: the rows naming this row (row i + 4).
+        let input = |n: &str| {
+            let this = (i + 4).to_string();
+            let ci = |h: &str| col(&inputs, h);
+            inputs[3..]
+                .iter()
+                .find(|r| r.get(ci("check row")) == Some(&this) && r.get(ci("input")) == Some(n))
+                .and_then(|r| cell(r, ci("value")))
+                .unwrap_or_else(|| panic!("{name}: input {n}"))
+        };
+        let recomputed = || cell(row, c("value (recomputed)")).expect("recomputed");
+        // By hand from the row's inputs, each kind in both directions where it has one
+        // (1e-12: the same doubles, a different order of a few operations at most).
         if name == "gross slip (Euler/capstan)" {
-            // By hand from the row's inputs: (T_hi − m'v²)/(T_lo − m'v²).
-            let input =
-                |n: &str| (15..row.len()).step_by(2).find(|&c| row.get(c) == Some(n)).and_then(|c| cell(row, c + 1));
-            let (t1, t2, c) = (input("T1").expect("T1"), input("T2").expect("T2"), input("m'v²").expect("m'v²"));
-            let ratio = (t1.max(t2) - c) / (t1.min(t2) - c);
-            assert!(rel(cell(row, 4).expect("recomputed"), ratio) <= 1e-12, "{name}: by hand {ratio}");
-            by_hand += 1;
+            // (T_hi − m'v²)/(T_lo − m'v²).
+            let (t1, t2, cf) = (input("T1"), input("T2"), input("m'v²"));
+            let ratio = (t1.max(t2) - cf) / (t1.min(t2) - cf);
+            assert!(rel(recomputed(), ratio) <= 1e-12, "{name}: by hand {ratio}");
+            *counts.entry(if t1 > t2 { "ratio T1 high" } else { "ratio T2 high" }).or_insert(0) += 1;
         }
+        by_hand_stops(name, row.get(c("formula")).unwrap_or_default(), &input, recomputed, row, &c, &mut counts);
     }
-    assert!(formulas >= 30 && by_hand >= 10, "{formulas} formulas, {by_hand} ratios by hand");
+    let count = |k: &str| counts.get(k).copied().unwrap_or(0);
+    assert!(count("formulas") >= 85, "{counts:?}");
+    for k in [
+        "ratio T1 high",
+        "ratio T2 high",
+        "brake lifting",
+        "brake lowering",
+        "slip limit lifting",
+        "slip limit lowering",
+    ] {
+        assert!(count(k) >= 1, "{k} by hand: {counts:?}");
+    }
+}
+
+/// The emergency decelerations by hand from a row's inputs: at one position with the full brake
+/// force, `d = (F_b + s·(m1 − m2)·g)/M` (s = +1 lifting side 1, −1 lowering it); and the
+/// slip-limited deceleration, side 2 rising when lifting side 1:
+/// `[E(m_fall·g − n·c) − (m_rise·g − n·c)]/[(m_rise + m_g,rise) + E(m_fall + m_g,fall)]`.
+fn by_hand_stops(
+    name: &str,
+    formula: &str,
+    input: &dyn Fn(&str) -> f64,
+    recomputed: impl Fn() -> f64,
+    row: &csv::StringRecord,
+    c: &dyn Fn(&str) -> usize,
+    counts: &mut std::collections::HashMap<&'static str, usize>,
+) {
+    let lifting =
+        name.contains("lifting") || row.get(c("governing case")).is_some_and(|g| g.contains("(lifting side 1)"));
+    if formula.starts_with("d = (F_b") && name.starts_with("emergency deceleration l") {
+        let s = if name.contains("lifting") { 1.0 } else { -1.0 };
+        let d = (input("F_b") + s * (input("m1") - input("m2")) * input("g")) / input("M");
+        assert!(rel(recomputed(), d) <= 1e-12, "{name}: by hand {d}");
+        *counts.entry(if s > 0.0 { "brake lifting" } else { "brake lowering" }).or_insert(0) += 1;
+    }
+    if name == "emergency deceleration below the slip limit" {
+        let (e, g, nc) = (input("e^{μα}"), input("g"), input("n") * input("m'v²"));
+        let (m1, m2) =
+            ((input("m1"), input("m_g1 = J_g/R_g² (side 1)")), (input("m2"), input("m_g2 = J_g/R_g² (side 2)")));
+        let ((rise, g_rise), (fall, g_fall)) = if lifting { (m2, m1) } else { (m1, m2) };
+        let d = ((e * (fall * g - nc) - (rise * g - nc)) / ((rise + g_rise) + e * (fall + g_fall))).max(0.0);
+        let limit = cell(row, c("limit (recomputed)")).expect("the slip limit recomputed");
+        assert!(rel(limit, d) <= 1e-12, "{name}: by hand {d}, recomputed {limit}");
+        *counts.entry(if lifting { "slip limit lifting" } else { "slip limit lowering" }).or_insert(0) += 1;
+    }
 }
 
 const SHEET: &str = concat!("\n", common::sheets::base_sheet!());

@@ -11,6 +11,7 @@ pub mod check_text;
 pub mod checklist;
 pub mod compare;
 pub mod csv_out;
+pub mod expr;
 pub mod history_figure;
 pub mod html;
 pub mod matrix;
@@ -28,6 +29,7 @@ pub mod summary;
 pub mod table;
 pub mod target;
 pub mod xlsx;
+pub mod xlsx_formulas;
 
 use crate::run::{RunResult, SceneResult};
 use rayon::prelude::*;

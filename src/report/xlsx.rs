@@ -1,169 +1,306 @@
-//! `checks.xlsx`: every check of a run as one row of a workbook — its inputs in cells, a live
-//! formula over those cells that recomputes the check's value (and, for the Euler/capstan check,
-//! its limit e^{μα}) in Excel or LibreOffice, and the value wrapcalc computed beside it. Checks
-//! whose value comes from a simulation (the emergency stop's deceleration) have no closed form:
-//! their row gives the value and says so.
+//! `checks.xlsx`: every check of a run, in three sheets.
+//!
+//! * **Checks**: one row per check: its printed formula, a live spreadsheet formula that
+//!   recomputes its value (and a computed limit: e^{μα}, the slip-limited deceleration) from the
+//!   cells of the Inputs sheet, wrapcalc's value beside it, the limit, its source and the verdict.
+//!   Each formula cell stores its result as well, so a reader that does not recalculate
+//!   (LibreOffice's default, previews, pandas) shows the same number a spreadsheet recomputes.
+//! * **Inputs**: one row per input of a check: the check's row, the input's name, symbol,
+//!   value (SI, α in degrees) and unit.
+//! * **Load cases**: the load-case matrix, one row per case, the columns of matrix.csv.
+//!
+//! The columns of each sheet are tables (`check_columns`, `input_columns`,
+//! [`super::matrix::CASE_COLUMNS`]): a column is one entry.
 
 use super::checklist::{self, CheckRow};
-use crate::check::design::{
-    DIFFERENCE_RATING_CHECK, GUIDE_D_CHECK, MU_CAP_CHECK, PEAK_PRESSURE_CHECK, PRESSURE_CHECK, PULLEY_D_CHECK,
-    ROPE_SF_CHECK, TENSION_RATING_CHECK,
-};
-use crate::check::{Check, Verdict};
-use crate::model::level0::{DYNAMIC_CHECK, GROSS_SLIP_CHECK};
+use super::expr::Expr;
+use super::matrix::{CASE_COLUMNS, Field};
+use super::xlsx_formulas::{limit_expr, value_expr};
+use crate::check::Verdict;
 use crate::run::RunResult;
 use rust_xlsxwriter::{Format, Formula, Workbook, Worksheet, XlsxError, utility::row_col_to_cell};
 use std::path::Path;
 
-/// Columns of the checks sheet; the inputs follow as name/value pairs from [`FIRST_INPUT_COL`].
-pub const HEADERS: [&str; 15] = [
-    "scene",
-    "check",
-    "formula",
-    "spreadsheet formula",
-    "value (recomputed)",
-    "value (wrapcalc)",
-    "limit (recomputed)",
-    "limit (wrapcalc)",
-    "unit",
-    "relation",
-    "verdict",
-    "margin",
-    "governing case",
-    "limit source",
-    "note",
-];
-/// Column (0-based) of the live formula's result, "value (recomputed)".
-pub const RECOMPUTED_COL: u16 = 4;
-/// Column (0-based) of the value wrapcalc computed, "value (wrapcalc)".
-pub const VALUE_COL: u16 = 5;
-/// Column (0-based) of the live formula for the limit, "limit (recomputed)" (the
-/// Euler/capstan check's e^{μα}; empty for the others).
-pub const LIMIT_RECOMPUTED_COL: u16 = 6;
-/// Column (0-based) of the limit wrapcalc applied, "limit (wrapcalc)".
-pub const LIMIT_COL: u16 = 7;
-/// Column (0-based) of the first input name; each input takes a name cell and a value cell.
-pub const FIRST_INPUT_COL: u16 = 15;
-/// The header row; checks start on the row below it.
+/// The sheet of the checks.
+pub const CHECKS_SHEET: &str = "Checks";
+/// The sheet of the checks' inputs.
+pub const INPUTS_SHEET: &str = "Inputs";
+/// The sheet of the load-case matrix.
+pub const CASES_SHEET: &str = "Load cases";
+/// The header row of every sheet (0-based); the data start on the row below it.
 pub const HEADER_ROW: u32 = 2;
 
-/// Writes the workbook of `run`'s checks to `path`.
-pub fn write_checks(path: &Path, title: &str, run: &RunResult) -> Result<(), XlsxError> {
-    let mut book = Workbook::new();
-    let sheet = book.add_worksheet();
-    sheet.set_name("checks")?;
-    let bold = Format::new().set_bold();
-    sheet.write_string_with_format(
-        0,
-        0,
-        format!("wrapcalc {} — checks of {title}", env!("CARGO_PKG_VERSION")),
-        &bold,
-    )?;
-    sheet.write_string(
-        1,
-        0,
-        "Each row: the check's inputs (name, value; SI units, α in degrees), a live formula over them and wrapcalc's value beside it.",
-    )?;
-    for (col, h) in HEADERS.iter().enumerate() {
-        sheet.write_string_with_format(HEADER_ROW, col as u16, *h, &bold)?;
-    }
-    for (i, row) in checklist::rows(run).iter().enumerate() {
-        write_row(sheet, HEADER_ROW + 1 + i as u32, row)?;
-    }
-    sheet.set_column_width(1, 40)?;
-    sheet.set_column_width(2, 50)?;
-    sheet.set_freeze_panes(HEADER_ROW + 1, 2)?;
-    book.save(path)
+/// A formula with the value it computes.
+#[derive(Debug, Clone)]
+struct Computed {
+    /// The live formula over the Inputs sheet's cells.
+    cells: String,
+    /// The same formula over the inputs' symbols, for reading.
+    symbols: String,
+    /// Its value: the cached result.
+    result: f64,
 }
 
-fn write_row(sheet: &mut Worksheet, r: u32, row: &CheckRow) -> Result<(), XlsxError> {
-    let c = row.check;
-    sheet.write_string(r, 0, row.group)?;
-    sheet.write_string(r, 1, c.name)?;
-    sheet.write_string(r, 2, c.formula)?;
-    let mut cells = Vec::new();
-    for (k, input) in c.inputs.iter().enumerate() {
-        let col = FIRST_INPUT_COL + 2 * k as u16;
-        sheet.write_string(r, col, &input.name)?;
-        sheet.write_number(r, col + 1, input.value)?;
-        cells.push((input.name.as_str(), row_col_to_cell(r, col + 1)));
+/// One check as the workbook lays it out.
+struct Line<'a> {
+    row: CheckRow<'a>,
+    /// Row (0-based) of the check's first input on the Inputs sheet.
+    first_input: u32,
+    value: Option<Computed>,
+    limit: Option<Computed>,
+}
+
+/// What a column writes in a row.
+enum Cell {
+    Empty,
+    Text(String),
+    Number(f64),
+    Bool(bool),
+    Formula(Computed),
+}
+
+fn text(s: impl Into<String>) -> Cell {
+    Cell::Text(s.into())
+}
+
+fn number(v: Option<f64>) -> Cell {
+    v.map_or(Cell::Empty, Cell::Number)
+}
+
+fn opt_text(s: &Option<String>) -> Cell {
+    s.as_ref().map_or(Cell::Empty, |s| text(s.clone()))
+}
+
+/// A column: its header, width and cell.
+struct Column<T> {
+    header: &'static str,
+    width: f64,
+    cell: fn(&T) -> Cell,
+}
+
+/// The columns of the Checks sheet.
+fn check_columns<'a>() -> Vec<Column<Line<'a>>> {
+    vec![
+        Column { header: "scene", width: 18.0, cell: |l| text(l.row.group) },
+        Column { header: "check", width: 40.0, cell: |l| text(l.row.check.name) },
+        Column { header: "formula", width: 50.0, cell: |l| text(l.row.check.formula) },
+        Column { header: "spreadsheet formula", width: 50.0, cell: spreadsheet_formula },
+        Column {
+            header: "value (recomputed)",
+            width: 16.0,
+            cell: |l| l.value.clone().map_or(Cell::Empty, Cell::Formula),
+        },
+        Column { header: "value (wrapcalc)", width: 16.0, cell: |l| number(l.row.check.value) },
+        Column {
+            header: "limit (recomputed)",
+            width: 16.0,
+            cell: |l| l.limit.clone().map_or(Cell::Empty, Cell::Formula),
+        },
+        Column { header: "limit (wrapcalc)", width: 16.0, cell: |l| number(l.row.check.limit) },
+        Column { header: "unit", width: 8.0, cell: |l| text(l.row.check.unit) },
+        Column { header: "relation", width: 8.0, cell: |l| text(l.row.check.relation.symbol()) },
+        Column { header: "verdict", width: 12.0, cell: |l| text(l.row.check.verdict.label()) },
+        Column { header: "margin", width: 12.0, cell: |l| number(checklist::margin(l.row.check)) },
+        Column { header: "governing case", width: 30.0, cell: |l| opt_text(&l.row.check.governing_case) },
+        Column { header: "limit source", width: 30.0, cell: |l| opt_text(&l.row.check.limit_source) },
+        Column { header: "note", width: 30.0, cell: |l| opt_text(&l.row.check.note) },
+        Column { header: "inputs (rows of Inputs)", width: 14.0, cell: input_rows },
+    ]
+}
+
+/// One input of a check, on the Inputs sheet.
+struct InputLine<'a> {
+    check_row: u32,
+    row: CheckRow<'a>,
+    input: &'a crate::check::Quantity,
+}
+
+/// The columns of the Inputs sheet.
+fn input_columns<'a>() -> Vec<Column<InputLine<'a>>> {
+    vec![
+        Column { header: "check row", width: 10.0, cell: |i| Cell::Number(f64::from(i.check_row + 1)) },
+        Column { header: "scene", width: 18.0, cell: |i| text(i.row.group) },
+        Column { header: "check", width: 40.0, cell: |i| text(i.row.check.name) },
+        Column { header: "input", width: 28.0, cell: |i| text(&i.input.name) },
+        Column { header: "symbol", width: 20.0, cell: |i| text(symbol(&i.input.name)) },
+        Column { header: "value", width: 18.0, cell: |i| Cell::Number(i.input.value) },
+        Column { header: "unit", width: 8.0, cell: |i| text(i.input.unit) },
+    ]
+}
+
+/// Column (0-based) of an input's value on the Inputs sheet.
+const INPUT_VALUE_COL: u16 = 5;
+
+/// The symbol an input stands for in a formula: its name up to ` = ` (`m_g1 = J_g/R_g²` is
+/// `m_g1`), a name with spaces in brackets.
+pub fn symbol(name: &str) -> String {
+    let head = name.split(" = ").next().unwrap_or(name);
+    if head.contains(' ') { format!("[{head}]") } else { head.to_string() }
+}
+
+fn spreadsheet_formula(l: &Line<'_>) -> Cell {
+    let c = l.row.check;
+    match (&l.value, c.verdict, c.value) {
+        (Some(f), _, _) => text(format!("={}", f.symbols)),
+        (None, Verdict::NotEvaluated, _) => text("not evaluated"),
+        (None, _, None) => text("no value (unbounded)"),
+        (None, _, Some(_)) => text("no closed form over its inputs; see the report"),
     }
-    let cell = |name: &str| cells.iter().find(|(n, _)| *n == name).map(|(_, c)| c.clone());
-    match value_formula(c, &cell) {
-        Some(f) => {
-            sheet.write_string(r, 3, &f)?;
-            sheet.write_formula(r, RECOMPUTED_COL, Formula::new(&f))?;
+}
+
+fn input_rows(l: &Line<'_>) -> Cell {
+    match l.row.check.inputs.len() as u32 {
+        0 => Cell::Empty,
+        n => text(format!("{}–{}", l.first_input + 1, l.first_input + n)),
+    }
+}
+
+/// The formula `e` over `line`'s inputs, with its value; `None` where an input is missing.
+fn computed(e: &Expr, row: &CheckRow<'_>, first_input: u32) -> Option<Computed> {
+    let inputs = &row.check.inputs;
+    let position = |name: &str| inputs.iter().position(|q| q.name == name);
+    let cell = |name: &str| {
+        let r = first_input + position(name)? as u32;
+        Some(format!("{INPUTS_SHEET}!{}", row_col_to_cell(r, INPUT_VALUE_COL)))
+    };
+    let value = |name: &str| position(name).map(|k| inputs[k].value);
+    Some(Computed {
+        cells: format!("={}", e.render(&cell)?),
+        symbols: e.render(&|name: &str| position(name).map(|_| symbol(name)))?,
+        result: e.eval(&value)?,
+    })
+}
+
+/// Every check of `run` with its rows and formulas.
+fn lines(run: &RunResult) -> Vec<Line<'_>> {
+    let mut first_input = HEADER_ROW + 1;
+    checklist::rows(run)
+        .into_iter()
+        .map(|row| {
+            let value = value_expr(row.check).and_then(|e| computed(&e, &row, first_input));
+            let limit = limit_expr(row.check).and_then(|e| computed(&e, &row, first_input));
+            let line = Line { row, first_input, value, limit };
+            first_input += row.check.inputs.len() as u32;
+            line
+        })
+        .collect()
+}
+
+fn write_cell(sheet: &mut Worksheet, r: u32, col: u16, cell: Cell) -> Result<(), XlsxError> {
+    match cell {
+        Cell::Empty => {}
+        Cell::Text(s) => {
+            sheet.write_string(r, col, s)?;
         }
-        None => {
-            let why = if c.verdict == Verdict::NotEvaluated {
-                "not evaluated"
-            } else {
-                "no closed form over the inputs (simulated); see the report"
-            };
-            sheet.write_string(r, 3, why)?;
+        Cell::Number(v) => {
+            sheet.write_number(r, col, v)?;
         }
-    }
-    if let Some(v) = c.value {
-        sheet.write_number(r, VALUE_COL, v)?;
-    }
-    if let Some(f) = limit_formula(c, &cell) {
-        sheet.write_formula(r, LIMIT_RECOMPUTED_COL, Formula::new(&f))?;
-    }
-    if let Some(l) = c.limit {
-        sheet.write_number(r, LIMIT_COL, l)?;
-    }
-    sheet.write_string(r, 8, c.unit)?;
-    sheet.write_string(r, 9, c.relation.symbol())?;
-    sheet.write_string(r, 10, c.verdict.label())?;
-    if let Some(m) = checklist::margin(c) {
-        sheet.write_number(r, 11, m)?;
-    }
-    for (col, text) in [(12, &c.governing_case), (13, &c.limit_source), (14, &c.note)] {
-        if let Some(t) = text {
-            sheet.write_string(r, col, t)?;
+        Cell::Bool(b) => {
+            sheet.write_boolean(r, col, b)?;
+        }
+        Cell::Formula(f) => {
+            sheet.write_formula(r, col, Formula::new(f.cells).set_result(f.result.to_string()))?;
         }
     }
     Ok(())
 }
 
-/// The spreadsheet formula of a check's value over its input cells (`cell(name)`), where the
-/// value is a closed form of the inputs; the same equations as the check's printed formula.
-pub fn value_formula(c: &Check, cell: &dyn Fn(&str) -> Option<String>) -> Option<String> {
-    c.value?;
-    let two = || Some((cell("T1")?, cell("T2")?));
-    match c.name {
-        GROSS_SLIP_CHECK => {
-            let ((t1, t2), cf) = (two()?, cell("m'v²")?);
-            Some(format!("=(MAX({t1},{t2})-{cf})/(MIN({t1},{t2})-{cf})"))
-        }
-        "static safety factor" | DYNAMIC_CHECK => {
-            let ((t1, t2), cf, e) = (two()?, cell("m'v²")?, cell("e^{μα}")?);
-            Some(format!("=(MIN({t1},{t2})-{cf})*({e}-1)/(MAX({t1},{t2})-MIN({t1},{t2}))"))
-        }
-        ROPE_SF_CHECK => {
-            let (n, f, t) = (cell("n")?, cell("F_min (one rope)")?, cell("T_s,max (per rope)")?);
-            Some(format!("={n}*{f}/({n}*{t})"))
-        }
-        PULLEY_D_CHECK | GUIDE_D_CHECK => Some(format!("={}/{}", cell("D")?, cell("d")?)),
-        PRESSURE_CHECK => {
-            let ((t1, t2), d_p, d) = (two()?, cell("D")?, cell("d")?);
-            Some(format!("=({t1}+{t2})/({d_p}*{d})"))
-        }
-        PEAK_PRESSURE_CHECK => Some(format!("={}/({}*{})", cell("n_max")?, cell("R")?, cell("d")?)),
-        MU_CAP_CHECK => Some(format!("={}", cell("μ")?)),
-        TENSION_RATING_CHECK => {
-            let ((t1, t2), n) = (two()?, cell("n")?);
-            Some(format!("={n}*MAX({t1},{t2})"))
-        }
-        DIFFERENCE_RATING_CHECK => {
-            let ((t1, t2), n) = (two()?, cell("n")?);
-            Some(format!("={n}*ABS({t1}-{t2})"))
-        }
-        _ => None,
+/// A sheet's title, description and header row, its widths, and the panes frozen below the
+/// header.
+fn start_sheet(
+    sheet: &mut Worksheet,
+    name: &str,
+    lines: [&str; 2],
+    columns: impl Iterator<Item = (&'static str, f64)>,
+) -> Result<(), XlsxError> {
+    sheet.set_name(name)?;
+    let bold = Format::new().set_bold();
+    sheet.write_string_with_format(0, 0, lines[0], &bold)?;
+    sheet.write_string(1, 0, lines[1])?;
+    for (col, (header, width)) in columns.enumerate() {
+        sheet.write_string_with_format(HEADER_ROW, col as u16, header, &bold)?;
+        sheet.set_column_width(col as u16, width)?;
     }
+    sheet.set_freeze_panes(HEADER_ROW + 1, 0)?;
+    Ok(())
 }
 
-/// The formula of a limit computed from the inputs: e^{μα} of the Euler/capstan check.
-fn limit_formula(c: &Check, cell: &dyn Fn(&str) -> Option<String>) -> Option<String> {
-    (c.name == GROSS_SLIP_CHECK).then(|| Some(format!("=EXP({}*RADIANS({}))", cell("μ")?, cell("α")?))).flatten()
+/// A sheet of `items`, one row each, in `columns`.
+fn write_table<T>(
+    sheet: &mut Worksheet,
+    name: &str,
+    lines: [&str; 2],
+    items: &[T],
+    columns: &[Column<T>],
+) -> Result<(), XlsxError> {
+    start_sheet(sheet, name, lines, columns.iter().map(|c| (c.header, c.width)))?;
+    for (i, item) in items.iter().enumerate() {
+        for (col, c) in columns.iter().enumerate() {
+            write_cell(sheet, HEADER_ROW + 1 + i as u32, col as u16, (c.cell)(item))?;
+        }
+    }
+    Ok(())
+}
+
+/// Writes the workbook of `run`'s checks to `path`.
+pub fn write_checks(path: &Path, title: &str, run: &RunResult) -> Result<(), XlsxError> {
+    let mut book = Workbook::new();
+    let heading = format!("wrapcalc {} — checks of {title}", env!("CARGO_PKG_VERSION"));
+    let lines = lines(run);
+    write_table(
+        book.add_worksheet(),
+        CHECKS_SHEET,
+        [
+            &heading,
+            "One row per check: a live formula over the check's inputs (sheet Inputs) recomputes its value, wrapcalc's value beside it; SI units, α in degrees.",
+        ],
+        &lines,
+        &check_columns(),
+    )?;
+
+    let inputs: Vec<InputLine<'_>> = lines
+        .iter()
+        .enumerate()
+        .flat_map(|(i, l)| {
+            let check_row = HEADER_ROW + 1 + i as u32;
+            l.row.check.inputs.iter().map(move |input| InputLine { check_row, row: l.row, input })
+        })
+        .collect();
+    write_table(
+        book.add_worksheet(),
+        INPUTS_SHEET,
+        [
+            &heading,
+            "One row per input of a check (the check's row on sheet Checks); the formulas of sheet Checks refer to the value column.",
+        ],
+        &inputs,
+        &input_columns(),
+    )?;
+
+    write_cases(book.add_worksheet(), &heading, run)?;
+    book.save(path)
+}
+
+/// The Load cases sheet: the matrix's cases, or a line saying the sheet has none.
+fn write_cases(sheet: &mut Worksheet, heading: &str, run: &RunResult) -> Result<(), XlsxError> {
+    let matrix = run.design.as_ref().and_then(|d| d.matrix.as_ref());
+    let what = if matrix.is_some() {
+        "The load-case matrix: one row per case, the columns of matrix.csv."
+    } else {
+        "No load-case matrix: the sheet has no [load_cases]."
+    };
+    start_sheet(sheet, CASES_SHEET, [heading, what], CASE_COLUMNS.iter().map(|c| (c.header, 14.0)))?;
+    for (i, case) in matrix.iter().flat_map(|m| &m.cases).enumerate() {
+        for (col, c) in CASE_COLUMNS.iter().enumerate() {
+            let cell = match (c.field)(case) {
+                Field::Text(s) => Cell::Text(s),
+                Field::Number(v) => Cell::Number(v),
+                Field::Int(v) => Cell::Number(v as f64),
+                Field::Bool(b) => Cell::Bool(b),
+                Field::Missing => Cell::Empty,
+            };
+            write_cell(sheet, HEADER_ROW + 1 + i as u32, col as u16, cell)?;
+        }
+    }
+    Ok(())
 }
