@@ -21,6 +21,12 @@ pub const SLIP_LIMIT_CHECK: &str = "emergency deceleration below the slip limit"
 
 /// The input of a timed braked stop: the speed when the full brake force is reached.
 pub const SPEED_AT_FULL_FORCE: &str = "v at full brake force";
+/// The input of a stop's checks: the guide sheave's inertia on side 1, as a mass at its rim.
+pub const GUIDE1_INPUT: &str = "m_g1 = J_g/R_g² (side 1)";
+/// The input of a stop's checks: the guide sheave's inertia on side 2, as a mass at its rim.
+pub const GUIDE2_INPUT: &str = "m_g2 = J_g/R_g² (side 2)";
+/// The input of a stop's checks: what turns with the friction pulley, as a mass at its rim.
+pub const PULLEY_INPUT: &str = "J/R² + n·m'·R·α";
 /// The input of a stop at an imposed deceleration at one position.
 pub const IMPOSED_DECEL: &str = "d imposed";
 
@@ -115,9 +121,9 @@ fn stop_inputs(design: &Design, stop: &StopReport) -> Vec<crate::check::Quantity
     inputs.extend([
         q("m1", m.m1_kg, "kg"),
         q("m2", m.m2_kg, "kg"),
-        q("m_g1 = J_g/R_g² (side 1)", m.guide_kg[0], "kg"),
-        q("m_g2 = J_g/R_g² (side 2)", m.guide_kg[1], "kg"),
-        q("J/R² + n·m'·R·α", m.pulley_kg, "kg"),
+        q(GUIDE1_INPUT, m.guide_kg[0], "kg"),
+        q(GUIDE2_INPUT, m.guide_kg[1], "kg"),
+        q(PULLEY_INPUT, m.pulley_kg, "kg"),
         q("M", m.total_kg(), "kg"),
         q("g", design.g_m_s2, "m/s²"),
         q("n", f64::from(design.rope.count), ""),

@@ -128,8 +128,10 @@ fn input_columns<'a>() -> Vec<Column<InputLine<'a>>> {
     ]
 }
 
-/// Column (0-based) of an input's value on the Inputs sheet.
-const INPUT_VALUE_COL: u16 = 5;
+/// Column (0-based) of an input's value on the Inputs sheet, which the formulas refer to.
+fn input_value_col() -> u16 {
+    input_columns().iter().position(|c| c.header == "value").unwrap_or_default() as u16
+}
 
 /// The symbol an input stands for in a formula: its name up to ` = ` (`m_g1 = J_g/R_g²` is
 /// `m_g1`), a name with spaces in brackets.
@@ -155,13 +157,15 @@ fn input_rows(l: &Line<'_>) -> Cell {
     }
 }
 
-/// The formula `e` over `line`'s inputs, with its value; `None` where an input is missing.
+/// The formula `e` over `row`'s inputs, with its value; `None` where an input is missing or
+/// the value is not finite.
 fn computed(e: &Expr, row: &CheckRow<'_>, first_input: u32) -> Option<Computed> {
     let inputs = &row.check.inputs;
     let position = |name: &str| inputs.iter().position(|q| q.name == name);
+    let value_col = input_value_col();
     let cell = |name: &str| {
         let r = first_input + position(name)? as u32;
-        Some(format!("{INPUTS_SHEET}!{}", row_col_to_cell(r, INPUT_VALUE_COL)))
+        Some(format!("{INPUTS_SHEET}!{}", row_col_to_cell(r, value_col)))
     };
     let value = |name: &str| position(name).map(|k| inputs[k].value);
     Some(Computed {
@@ -287,7 +291,7 @@ fn write_cases(sheet: &mut Worksheet, heading: &str, run: &RunResult) -> Result<
     let what = if matrix.is_some() {
         "The load-case matrix: one row per case, the columns of matrix.csv."
     } else {
-        "No load-case matrix: the sheet has no [load_cases]."
+        "No load-case matrix in this run (a run of every scene of a design sheet with [load_cases] has one)."
     };
     start_sheet(sheet, CASES_SHEET, [heading, what], CASE_COLUMNS.iter().map(|c| (c.header, 14.0)))?;
     for (i, case) in matrix.iter().flat_map(|m| &m.cases).enumerate() {

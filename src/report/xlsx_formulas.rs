@@ -10,8 +10,8 @@ use crate::check::design::{
 };
 use crate::check::{Check, Verdict};
 use crate::model::braking_checks::{
-    DECEL_LIFT_MAX_CHECK, DECEL_LIFT_MIN_CHECK, DECEL_LOWER_MAX_CHECK, DECEL_LOWER_MIN_CHECK, IMPOSED_DECEL,
-    SLIP_LIMIT_CHECK, SPEED_AT_FULL_FORCE,
+    DECEL_LIFT_MAX_CHECK, DECEL_LIFT_MIN_CHECK, DECEL_LOWER_MAX_CHECK, DECEL_LOWER_MIN_CHECK, GUIDE1_INPUT,
+    GUIDE2_INPUT, IMPOSED_DECEL, PULLEY_INPUT, SLIP_LIMIT_CHECK, SPEED_AT_FULL_FORCE,
 };
 use crate::model::level0::{DYNAMIC_CHECK, GROSS_SLIP_CHECK};
 use crate::model::level4::ROPE_DYNAMICS_CHECK;
@@ -78,11 +78,7 @@ fn stop_decel(c: &Check) -> Option<Expr> {
     }
     let (m1, m2) = (input("m1"), input("m2"));
     let sign = call(Func::Sign, vec![input("v")]);
-    let total = m1.clone()
-        + m2.clone()
-        + input("m_g1 = J_g/R_g² (side 1)")
-        + input("m_g2 = J_g/R_g² (side 2)")
-        + input("J/R² + n·m'·R·α");
+    let total = m1.clone() + m2.clone() + input(GUIDE1_INPUT) + input(GUIDE2_INPUT) + input(PULLEY_INPUT);
     has("F_b").then(|| (input("F_b") + sign * (m1 - m2) * input("g")) / total)
 }
 
@@ -96,7 +92,7 @@ pub fn limit_expr(c: &Check) -> Option<Expr> {
         GROSS_SLIP_CHECK => Some(call(Func::Exp, vec![input("μ") * call(Func::Radians, vec![input("α")])])),
         SLIP_LIMIT_CHECK if c.verdict != Verdict::NotEvaluated => {
             let v = value_of(c, "v at the trip").or_else(|| value_of(c, "v"))?;
-            let sides = [("m1", "m_g1 = J_g/R_g² (side 1)"), ("m2", "m_g2 = J_g/R_g² (side 2)")];
+            let sides = [("m1", GUIDE1_INPUT), ("m2", GUIDE2_INPUT)];
             let ((rise, g_rise), (fall, g_fall)) = if v > 0.0 { (sides[1], sides[0]) } else { (sides[0], sides[1]) };
             let (e, g, nc) = (input("e^{μα}"), input("g"), input("n") * input("m'v²"));
             let numerator = e.clone() * (input(fall) * g.clone() - nc.clone()) - (input(rise) * g - nc);
@@ -130,9 +126,9 @@ mod tests {
             q("v", v, "m/s"),
             q("m1", m[0], "kg"),
             q("m2", m[1], "kg"),
-            q("m_g1 = J_g/R_g² (side 1)", guide[0], "kg"),
-            q("m_g2 = J_g/R_g² (side 2)", guide[1], "kg"),
-            q("J/R² + n·m'·R·α", 100_000.0, "kg"),
+            q(GUIDE1_INPUT, guide[0], "kg"),
+            q(GUIDE2_INPUT, guide[1], "kg"),
+            q(PULLEY_INPUT, 100_000.0, "kg"),
             q("g", 10.0, "m/s²"),
             q("n", 6.0, ""),
             q("e^{μα}", 2.0, ""),
@@ -156,6 +152,17 @@ mod tests {
             let c = stop_check(DECEL_LIFT_MIN_CHECK, position_inputs(v, m, guide));
             // A few roundings of exact integers: 1e-15.
             assert!((eval(&value_expr(&c).unwrap(), &c) - d).abs() <= 1e-15 * d, "v = {v}, m = {m:?}");
+        }
+    }
+
+    #[test]
+    fn imposed_deceleration_at_a_position_is_its_input() {
+        for v in [9.948, -9.948] {
+            let mut inputs = position_inputs(v, [150_000.0, 130_000.0], [0.0, 15_000.0]);
+            inputs.retain(|q| q.name != "F_b");
+            inputs.push(q(IMPOSED_DECEL, 1.5, "m/s²"));
+            let c = stop_check(DECEL_LIFT_MAX_CHECK, inputs);
+            assert_eq!(eval(&value_expr(&c).unwrap(), &c), 1.5, "v = {v}");
         }
     }
 
