@@ -6,7 +6,7 @@ use crate::design::Output;
 use crate::sheet::history::MAX_SAMPLES;
 use crate::sheet::hoist::{DEFAULT_OUTPUT_STEP_S, DEFAULT_TIME_STEP_S};
 use crate::sheet::rules::SPEED_MAX_M_S;
-use crate::sheet::track::{DEFAULT_LENGTH_M, MAX_LENGTH_M, MAX_START_DEG};
+use crate::sheet::track::{DEFAULT_LENGTH_M, MAX_ELEMENTS, MAX_LENGTH_M, MAX_START_DEG};
 
 const LOADS: &str = "loads";
 const HISTORY: &str = "history";
@@ -185,7 +185,7 @@ fn tracks() -> Vec<Key> {
             "s",
             "rope elements to follow through the wrap, each by the time its centre enters the wrap",
         )
-        .note("history: within its span; duty-cycle: ≥ 0; at most 1000 elements per scene")
+        .note(format!("history: within its span; duty-cycle: ≥ 0; at most {MAX_ELEMENTS} elements per scene"))
         .kinds(TIME),
         Key::new("track_start_deg", Numbers, "deg", "… or by the angle of its centre when the scene starts")
             .min(-MAX_START_DEG, true)
