@@ -1,5 +1,5 @@
-//! The registry against the parser: the same keys both ways for every table, and for every
-//! scene kind the same keys accepted and refused.
+//! The registry against the parser: the same keys both ways for every table, for every scene
+//! kind the same keys accepted and refused, and the same number ranges (probed at their ends).
 
 use super::{Type, scene_kinds, tables};
 use crate::sheet::raw::{
@@ -153,4 +153,126 @@ fn dedupe(text: &str, key: &str) -> String {
         .map(|(_, l)| *l)
         .collect::<Vec<_>>()
         .join("\n")
+}
+
+/// Values at the ends of a key's range, each with whether the range allows it: the bound
+/// itself, and a step beyond it.
+fn probes(range: &super::Range) -> Vec<(f64, bool)> {
+    let mut out = Vec::new();
+    let step = |b: f64| 0.01 * b.abs().max(1.0);
+    if let Some(lo) = range.min {
+        out.push((lo.value, lo.inclusive));
+        out.push((lo.value - step(lo.value), false));
+        out.push((lo.value + step(lo.value), true));
+    }
+    if let Some(hi) = range.max {
+        out.push((hi.value, hi.inclusive));
+        out.push((hi.value + step(hi.value), false));
+        out.push((hi.value - step(hi.value), true));
+    }
+    out
+}
+
+/// Whether the parser reports a range problem at this key (its message says what is expected).
+fn refused_at(text: &str, key: &str) -> bool {
+    match crate::sheet::parse("k.toml", text) {
+        Ok(_) => false,
+        Err(e) => {
+            e.diagnostics.iter().any(|d| d.key.ends_with(&format!(".{key}")) && d.message.starts_with("expected"))
+        }
+    }
+}
+
+#[test]
+fn the_registrys_ranges_are_the_parsers() {
+    // Sections whose number keys can be set alone on the base sheet (others need companions).
+    let sections = [
+        ("pulley", "[pulley]"),
+        ("rope", "[rope]"),
+        ("hoist", "[hoist]"),
+        ("hoist.stage", "[[hoist.stage]]"),
+        ("requirements", ""),
+        ("load_cases", ""),
+    ];
+    let all = tables();
+    let mut probed = 0;
+    for (path, header) in sections {
+        let table = all.iter().find(|t| t.path == path).expect("a table");
+        for key in table.keys.iter().filter(|k| matches!(k.ty, Type::Number | Type::Integer | Type::Limit)) {
+            // Keys whose check depends on a companion (the guide geometry, bending, braking) are left out.
+            if matches!(key.name, "wrap_angle_deg" | "equivalent_mass_kg" | "inertia_kg_m2") {
+                continue;
+            }
+            for (x, allowed) in probes(&key.range) {
+                let value = if key.ty == Type::Integer { format!("{}", x.round() as i64) } else { format!("{x:?}") };
+                if key.ty == Type::Integer && x.fract() != 0.0 {
+                    continue;
+                }
+                let line = format!("{} = {value}", key.name);
+                let base = sheet_with("duty-cycle", "");
+                let text = if header.is_empty() {
+                    format!("[{path}]\n{line}\n{base}")
+                } else {
+                    let text = base.replacen(&format!("{header}\n"), &format!("{header}\n{line}\n"), 1);
+                    dedupe_in(&text, key.name, header)
+                };
+                let refused = refused_at(&text, key.name);
+                assert_eq!(
+                    refused, !allowed,
+                    "{path}.{} = {value}: the registry allows it: {allowed}\n{text}",
+                    key.name
+                );
+                probed += 1;
+            }
+        }
+    }
+    assert!(probed > 100, "only {probed} probes");
+}
+
+/// Keeps the first line setting `key` after `header` (the probe), dropping the base sheet's own.
+fn dedupe_in(text: &str, key: &str, header: &str) -> String {
+    let prefix = format!("{key} = ");
+    let mut lines: Vec<&str> = Vec::new();
+    let mut in_table = false;
+    let mut seen = false;
+    for line in text.lines() {
+        if line.starts_with('[') {
+            in_table = line == header && !seen;
+        }
+        if in_table && line.starts_with(&prefix) {
+            if seen {
+                continue;
+            }
+            seen = true;
+        }
+        lines.push(line);
+    }
+    lines.join("\n")
+}
+
+#[test]
+fn the_registrys_scene_ranges_are_the_parsers() {
+    let all = tables();
+    let scene = all.iter().find(|t| t.path == "scene").expect("a scene table");
+    let mut probed = 0;
+    for kind in scene_kinds() {
+        for key in super::keys_of_kind(scene, kind.name) {
+            // Keys checked with a companion (masses or tensions, an emergency stop's pair) are left out.
+            let alone = !matches!(key.name, "t1_n" | "t2_n" | "emergency_stop_s" | "emergency_decel_m_s2");
+            if key.type_in(kind.name) != Type::Number || !alone {
+                continue;
+            }
+            for (x, allowed) in probes(&key.range) {
+                let text = dedupe(&sheet_with(kind.name, &format!("{} = {x:?}", key.name)), key.name);
+                let refused = refused_at(&text, key.name);
+                assert_eq!(
+                    refused, !allowed,
+                    "{} scene, {} = {x}: the registry allows it: {allowed}",
+                    kind.name, key.name
+                );
+                probed += 1;
+            }
+        }
+    }
+    assert!(probed > 30, "only {probed} probes");
 }
