@@ -34,6 +34,30 @@ enum Command {
     Merge(MergeArgs),
     /// Run time against error of every level on fixed cases; writes bench.csv, scaling.csv, bench.png.
     Bench(BenchArgs),
+    /// Print the design sheet's JSON Schema (for TOML editors), or with --markdown its key reference.
+    Schema(SchemaArgs),
+}
+
+#[derive(clap::Args)]
+struct SchemaArgs {
+    /// Write to this file instead of standard output.
+    #[arg(long)]
+    out: Option<PathBuf>,
+    /// The key reference in Markdown (docs/sheet.md) instead of the JSON Schema.
+    #[arg(long)]
+    markdown: bool,
+}
+
+/// `wrapcalc schema`: the sheet's JSON Schema or key reference, both generated from the key registry.
+fn schema_command(args: SchemaArgs) -> anyhow::Result<()> {
+    let text = if args.markdown { sheet::reference_markdown() } else { sheet::schema_text() };
+    match &args.out {
+        Some(path) => std::fs::write(path, text).map_err(|e| anyhow::anyhow!("{}: cannot write: {e}", path.display())),
+        None => {
+            print!("{text}");
+            Ok(())
+        }
+    }
 }
 
 #[derive(clap::Args)]
@@ -251,6 +275,7 @@ fn execute(cli: Cli) -> anyhow::Result<bool> {
         }
         Command::Sweep(args) => sweep_command(args).map(|()| true),
         Command::Merge(args) => merge_command(args).map(|()| true),
+        Command::Schema(args) => schema_command(args).map(|()| true),
     }
 }
 

@@ -16,7 +16,9 @@ pub const DEFAULT_OUTPUT_STEP_S: f64 = 0.05;
 /// Default integration step of the suspended ropes (s).
 pub const DEFAULT_TIME_STEP_S: f64 = 1e-3;
 /// Most stages a profile may have.
-const MAX_STAGES: usize = 64;
+pub const MAX_STAGES: usize = 64;
+/// Most tail ropes accepted.
+pub const TAIL_COUNT_MAX: i64 = 64;
 
 const RATIO: Rule = Rule { ok: |x| (0.0..1.0).contains(&x), allowed: "a damping ratio 0 ≤ ζ < 1" };
 
@@ -29,9 +31,14 @@ pub(super) fn hoist(c: &mut Collector, h: &Spanned<RawHoist>) -> Option<Hoist> {
     let rope_damping_ratio = optional(c, at, "rope_damping_ratio", &h.rope_damping_ratio, RATIO, 0.0);
     let tail_count = match &h.tail_count {
         None => Some(0),
-        Some(n) if (0..=64).contains(n.get_ref()) => u32::try_from(*n.get_ref()).ok(),
+        Some(n) if (0..=TAIL_COUNT_MAX).contains(n.get_ref()) => u32::try_from(*n.get_ref()).ok(),
         Some(n) => {
-            c.push(Some(n.span()), None, "hoist.tail_count", "expected a whole number of tail ropes from 0 to 64");
+            c.push(
+                Some(n.span()),
+                None,
+                "hoist.tail_count",
+                format!("expected a whole number of tail ropes from 0 to {TAIL_COUNT_MAX}"),
+            );
             None
         }
     };

@@ -8,7 +8,11 @@ use crate::design::{Direction, LoadCases, Phase};
 use toml::Spanned;
 
 /// Most payloads, positions or stops a matrix may list.
-const MAX_ENTRIES: usize = 32;
+pub const MAX_ENTRIES: usize = 32;
+/// Positions along the travel when the sheet gives none: the bottom, middle and top.
+pub const DEFAULT_POSITIONS: [f64; 3] = [0.0, 0.5, 1.0];
+/// Rope-dynamics stops when the sheet gives none: the middle of the full-speed run.
+pub const DEFAULT_STOPS: [f64; 1] = [0.5];
 
 /// `[load_cases]`: `Some(None)` when the sheet has none, `None` when it is malformed.
 /// `hoist`: whether the sheet has a `[hoist]`; `brake`: whether it has a `[brake]`.
@@ -82,11 +86,11 @@ fn payloads(c: &mut Collector, at: At, r: &RawLoadCases) -> Option<Vec<f64>> {
 /// within the full-speed run (default its middle), as fractions from 0 to 1.
 fn fractions(c: &mut Collector, at: At, r: &RawLoadCases) -> (Option<Vec<f64>>, Option<Vec<f64>>) {
     let positions = match &r.positions {
-        None => Some(vec![0.0, 0.5, 1.0]),
+        None => Some(DEFAULT_POSITIONS.to_vec()),
         Some(p) => numbers(c, at, "positions", p, |x| (0.0..=1.0).contains(&x), "fractions of the travel from 0 to 1"),
     };
     let stops = match &r.rope_dynamics_stops {
-        None => Some(vec![0.5]),
+        None => Some(DEFAULT_STOPS.to_vec()),
         Some(p) if p.get_ref().is_empty() => Some(Vec::new()),
         Some(p) => numbers(
             c,

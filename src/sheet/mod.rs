@@ -10,18 +10,23 @@ mod diag;
 mod document;
 mod history;
 mod hoist;
+pub mod keys;
 mod lining;
 mod load_cases;
 mod machine;
 mod outputs;
 mod raw;
+mod reference;
 mod requirements;
 mod rules;
 mod scene;
+mod schema;
 mod track;
 mod validate;
 
 pub use diag::{Diagnostic, SheetError};
+pub use reference::{REFERENCE_FILE, markdown as reference_markdown};
+pub use schema::{SCHEMA_FILE, json_schema, schema_text};
 
 use crate::design::Design;
 use diag::Collector;
