@@ -72,6 +72,14 @@ fn report_prints_to_pdf_with_verdicts_and_the_governing_case() {
     // pdftotext ends every page with a form feed.
     let pages = text.matches('\u{c}').count();
     assert!(pages > 1, "the report prints on {pages} page(s)");
+    // The main body ends where the appendix's heading opens a page (the contents on page 1
+    // name it too, so the last page that holds it).
+    let appendix = "Appendix A. Further figures";
+    let opens = text.split('\u{c}').enumerate().filter(|(_, p)| words(p).contains(appendix)).map(|(i, _)| i).last();
+    let main_body = opens.filter(|&i| i > 0).expect("the appendix opens on a page of its own");
+    println!("report.html of the reference hoist prints on {pages} A4 pages: main body {main_body}, whole {pages}");
+    assert!(main_body <= 25, "the main body prints on {main_body} pages, more than 25");
+    assert!(pages <= 60, "the whole document prints on {pages} pages, more than 60");
     let text = words(&text);
     for heading in ["6. Verdicts", "Every check", "7. The checks, to be redone by hand", "9. Software and accuracy"] {
         assert!(text.contains(heading), "the PDF lacks {heading:?}");

@@ -91,8 +91,9 @@ pub fn compare_columns() -> impl Iterator<Item = &'static str> {
     HISTORY_COLUMNS.iter().filter(|(_, comparable)| *comparable).map(|(name, _)| *name)
 }
 
-/// The title block of the calculation report, echoed as the sheet gives it.
-#[derive(Debug, Clone, PartialEq, Eq, Default)]
+/// The title block of the calculation report, echoed as the sheet gives it, and what the
+/// report holds beside its main body.
+#[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Document {
     /// Project name.
     pub project: Option<String>,
@@ -106,6 +107,23 @@ pub struct Document {
     pub checker: Option<String>,
     /// Date of issue, as the sheet writes it.
     pub date: Option<String>,
+    /// Whether the report ends with an appendix of the figures that decide no check (true
+    /// unless the sheet says `appendix_figures = false`).
+    pub appendix_figures: bool,
+}
+
+impl Default for Document {
+    fn default() -> Self {
+        Self {
+            project: None,
+            title: None,
+            revision: None,
+            author: None,
+            checker: None,
+            date: None,
+            appendix_figures: true,
+        }
+    }
 }
 
 /// A `--scene` name the sheet does not have.

@@ -1,14 +1,12 @@
-//! Sections 5–7: the load cases with the governing case of each check, the verdict tables
-//! (scenes, then every check with its margin), and every check with its formula, inputs,
-//! intermediate values, limit and source — rendered from the same check records as the
-//! terminal table.
+//! Sections 5 and 6: the load cases with the governing case of each check, and the verdict
+//! tables (scenes, then every check with its margin) — rendered from the same check records as
+//! the terminal table. The checks to be redone by hand are in [`super::by_hand`].
 
 use super::{Context, esc, table};
-use crate::check::{Check, Quantity, Verdict};
+use crate::check::{Check, Verdict};
 use crate::report::check_text::{number, unit_suffix};
-use crate::report::checklist::{self, DESIGN_GROUP};
+use crate::report::checklist;
 use crate::report::matrix::position;
-use crate::report::table::state_label;
 use std::fmt::Write;
 use std::io;
 
@@ -28,7 +26,7 @@ pub fn verdict_html(v: Verdict) -> String {
 }
 
 /// A check's value with its unit (∞ for an unbounded safety factor, — when not evaluated).
-fn value_text(c: &Check) -> String {
+pub(super) fn value_text(c: &Check) -> String {
     match (c.value, c.verdict) {
         (_, Verdict::NotEvaluated) => "—".into(),
         (Some(v), _) => format!("{}{}", number(v), unit_suffix(c.unit)),
@@ -36,7 +34,7 @@ fn value_text(c: &Check) -> String {
     }
 }
 
-fn limit_text(c: &Check) -> String {
+pub(super) fn limit_text(c: &Check) -> String {
     c.limit.map_or_else(|| "—".into(), |l| format!("{} {}{}", c.relation.symbol(), number(l), unit_suffix(c.unit)))
 }
 
@@ -140,53 +138,4 @@ pub fn verdicts(out: &mut String, ctx: &Context) -> io::Result<()> {
     out.push_str("<h3>Every check</h3>\n<p class=\"note\">Margin: value/limit − 1 for a minimum, 1 − value/limit for a maximum; negative where the limit is violated.</p>\n");
     table(out, "small verdicts", &["scene", "check", "value", "limit", "margin", "verdict", "governing case"], rows);
     Ok(())
-}
-
-/// 7. Every check with everything needed to redo it by hand, scene by scene.
-pub fn details(out: &mut String, ctx: &Context) -> io::Result<()> {
-    out.push_str("<p>Tensions per rope; σ = ∞ when T1 = T2. Each check lists its formula, inputs, intermediate values, limit and the limit's source.</p>\n");
-    for s in &ctx.run.scenes {
-        let _ = writeln!(
-            out,
-            "<h3>{} — level {}</h3><p class=\"note\">{}; {}</p>",
-            esc(&s.name),
-            s.plan.level,
-            esc(&state_label(&s.classical.state)),
-            esc(&s.plan.reason)
-        );
-        for c in &s.classical.checks {
-            check_block(out, c);
-        }
-    }
-    if let Some(d) = &ctx.run.design {
-        let _ = writeln!(out, "<h3>The design as a whole ({DESIGN_GROUP})</h3>");
-        for c in &d.checks {
-            check_block(out, c);
-        }
-    }
-    Ok(())
-}
-
-fn check_block(out: &mut String, c: &Check) {
-    let fmt_q = |qs: &[Quantity]| qs.iter().map(|q| esc(&q.display())).collect::<Vec<_>>().join("; ");
-    let _ = write!(
-        out,
-        "<div class=\"check\"><p><b>{}</b>: <span class=\"mono\">{} {}</span> {}</p><dl><dt>formula</dt><dd class=\"mono\">{}</dd>",
-        esc(c.name),
-        value_text(c),
-        if c.limit.is_some() { limit_text(c) } else { String::new() },
-        verdict_html(c.verdict),
-        esc(c.formula)
-    );
-    let rows: [(&str, String); 5] = [
-        ("inputs", fmt_q(&c.inputs)),
-        ("values", fmt_q(&c.intermediates)),
-        ("limit", c.limit_source.as_deref().map(esc).unwrap_or_default()),
-        ("governing case", c.governing_case.as_deref().map(esc).unwrap_or_default()),
-        ("note", c.note.as_deref().map(esc).unwrap_or_default()),
-    ];
-    for (k, v) in rows.iter().filter(|(_, v)| !v.is_empty()) {
-        let _ = write!(out, "<dt>{k}</dt><dd class=\"mono\">{v}</dd>");
-    }
-    out.push_str("</dl></div>\n");
 }

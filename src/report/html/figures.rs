@@ -1,7 +1,10 @@
-//! Section 8: the figures of each scene, inline as base64 PNG (read back from the report
-//! directory they were just drawn into), each with a one-line caption saying what to read in it.
+//! Section 8 and Appendix A: the figures, inline as base64 PNG (read back from the report
+//! directory they were just drawn into), each with a caption saying what to read in it. The
+//! main body shows the figures that decide a check (the history and distribution of each scene
+//! whose case governs one, [`by_hand::governing_scenes`]); every other figure goes to the
+//! appendix, two to a printed page, which `[document] appendix_figures = false` leaves out.
 
-use super::{Context, esc};
+use super::{Context, by_hand, esc};
 use crate::planner::Level;
 use base64::Engine;
 use std::fmt::Write;
@@ -27,34 +30,107 @@ pub const FIGURES: [(&str, &str); 4] = [
     ),
 ];
 
-/// 8. Figures of every scene that has them.
-pub fn figures(out: &mut String, ctx: &Context) -> io::Result<()> {
-    let mut n = 0;
-    for s in &ctx.run.scenes {
-        for (file, caption) in FIGURES {
-            let path = ctx.dir.join(&s.name).join(file);
-            if !path.is_file() {
-                continue;
-            }
-            n += 1;
-            let png = std::fs::read(&path)?;
-            let data = base64::engine::general_purpose::STANDARD.encode(png);
-            let nodes = match (s.plan.level, s.nodes) {
-                (Level::Dynamic4, Some(n)) => duty_cycle_accuracy(n, s.level3.is_some()),
-                _ => String::new(),
-            };
-            let _ = writeln!(
-                out,
-                "<figure><img alt=\"{}\" src=\"data:image/png;base64,{data}\"><figcaption><b>Figure {n}.</b> {} — {}{}</figcaption></figure>",
-                esc(&format!("{}/{file}", s.name)),
-                esc(&s.name),
-                esc(caption),
-                esc(&nodes)
-            );
+/// The figure that decides a scene's checks: a time scene's history (its end tensions and its
+/// safety factor over time against the minimum, the governing instant among them); a steady
+/// scene's distribution (its one state).
+fn deciding(ctx: &Context, scene: usize) -> &'static str {
+    let history = ctx.run.scenes.get(scene).is_some_and(|s| ctx.dir.join(&s.name).join("history.png").is_file());
+    if history { "history.png" } else { "distribution.png" }
+}
+
+/// One figure of the document: the scene (its index), the file in the scene's folder, its
+/// caption, and the checks it decides (empty in the appendix).
+struct Figure {
+    scene: usize,
+    file: &'static str,
+    caption: &'static str,
+    decides: Vec<&'static str>,
+}
+
+/// The figures of the main body (the one of each scene whose case governs a check, [`deciding`]),
+/// and every other figure of the run, for the appendix; only files the run drew.
+fn placement(ctx: &Context) -> (Vec<Figure>, Vec<Figure>) {
+    let exists = |scene: usize, file: &str| {
+        ctx.run.scenes.get(scene).is_some_and(|s| ctx.dir.join(&s.name).join(file).is_file())
+    };
+    let governing = by_hand::governing_scenes(ctx.run);
+    let (mut main, mut rest) = (Vec::new(), Vec::new());
+    for (i, names) in &governing {
+        let file = deciding(ctx, *i);
+        for (file, caption) in FIGURES.iter().filter(|(f, _)| *f == file && exists(*i, f)) {
+            main.push(Figure { scene: *i, file, caption, decides: names.clone() });
         }
     }
-    if n == 0 {
+    for i in 0..ctx.run.scenes.len() {
+        for (file, caption) in FIGURES {
+            if exists(i, file) && !main.iter().any(|f| f.scene == i && f.file == file) {
+                rest.push(Figure { scene: i, file, caption, decides: vec![] });
+            }
+        }
+    }
+    (main, rest)
+}
+
+/// Writes one figure, numbered `n`, inline as base64 PNG.
+fn figure(out: &mut String, ctx: &Context, n: usize, f: &Figure) -> io::Result<()> {
+    let s = &ctx.run.scenes[f.scene];
+    let png = std::fs::read(ctx.dir.join(&s.name).join(f.file))?;
+    let data = base64::engine::general_purpose::STANDARD.encode(png);
+    let accuracy = match (s.plan.level, s.nodes) {
+        (Level::Dynamic4, Some(n)) => duty_cycle_accuracy(n, s.level3.is_some()),
+        _ => String::new(),
+    };
+    let decides =
+        if f.decides.is_empty() { String::new() } else { format!(" Governing case of: {}.", f.decides.join("; ")) };
+    let _ = writeln!(
+        out,
+        "<figure class=\"half\"><img alt=\"{}\" src=\"data:image/png;base64,{data}\"><figcaption><b>Figure {n}.</b> {} — {}{}{}</figcaption></figure>",
+        esc(&format!("{}/{}", s.name, f.file)),
+        esc(&s.name),
+        esc(f.caption),
+        esc(&decides),
+        esc(&accuracy)
+    );
+    Ok(())
+}
+
+/// 8. The figures that decide a check: those of the scenes whose cases govern one.
+pub fn figures(out: &mut String, ctx: &Context) -> io::Result<()> {
+    let (main, rest) = placement(ctx);
+    if main.is_empty() && rest.is_empty() {
         out.push_str("<p class=\"note\">No figures: the run was made with <code>--no-plots</code>, or no scene has a wrap distribution.</p>\n");
+        return Ok(());
+    }
+    let elsewhere = match (rest.len(), ctx.design.document.appendix_figures) {
+        (0, _) => String::new(),
+        (k, true) => format!(" The other {k} figures of the run are in Appendix A."),
+        (k, false) => format!(
+            " The other {k} figures of the run are in the scene folders of the report directory (the sheet leaves the appendix out: <code>[document] appendix_figures = false</code>)."
+        ),
+    };
+    let _ = writeln!(
+        out,
+        "<p>The figure of each scene whose case governs a check (section 7): a time scene's history, a steady scene's distribution.{elsewhere}</p>"
+    );
+    for (n, f) in main.iter().enumerate() {
+        figure(out, ctx, n + 1, f)?;
+    }
+    Ok(())
+}
+
+/// Whether the document has an appendix: figures beside the main body's, and the sheet's
+/// `[document]` does not leave them out.
+pub fn has_appendix(ctx: &Context) -> bool {
+    ctx.design.document.appendix_figures && !placement(ctx).1.is_empty()
+}
+
+/// Appendix A: every figure that decides no check, two to a printed page, numbered on from the
+/// main body's.
+pub fn appendix(out: &mut String, ctx: &Context) -> io::Result<()> {
+    let (main, rest) = placement(ctx);
+    out.push_str("<p class=\"note\">Every other figure of the run, scene by scene; the checks they show are decided by the figures of section 8 and the values of section 7.</p>\n");
+    for (n, f) in rest.iter().enumerate() {
+        figure(out, ctx, main.len() + n + 1, f)?;
     }
     Ok(())
 }

@@ -1,72 +1,198 @@
-//! Section 3: every value of the sheet with its unit (read from the key's unit suffix, as the
-//! sheet's keys are named), then the values derived from them (α from the guide geometry,
-//! e^{μα}, the rope and tail-rope masses).
+//! Section 3: the sheet's values grouped by component (pulley, guide sheave, ropes, tail ropes,
+//! conveyances, brake, lining, requirements, load cases), each with its unit (from the key's
+//! suffix, [`keys::unit_of`]) and meaning (from the interface reference, [`keys::meaning`]); the
+//! motion profile and the scenes as tables of a row each; then the values derived from them (α
+//! from the guide geometry, e^{μα}, the rope and tail-rope masses).
 
+use super::keys::{self, unit_of};
 use super::{Context, esc, table};
 use crate::design::WrapSource;
+use std::collections::BTreeSet;
+use std::fmt::Write;
 use std::io;
 
-/// The unit a sheet key names by its suffix ("" for a plain number, "—" for text).
-pub fn unit_of(key: &str) -> &'static str {
-    const SUFFIXES: [(&str, &str); 14] = [
-        ("_m_s2", "m/s²"),
-        ("_m_s", "m/s"),
-        ("_kg_m2", "kg·m²"),
-        ("_n_m2", "N·m²"),
-        ("_n_per_m2", "N/m²"),
-        ("_n_m", "N·m"),
-        ("_kg", "kg"),
-        ("_pa", "Pa"),
-        ("_deg", "°"),
-        ("_n", "N"),
-        ("_m", "m"),
-        ("_s", "s"),
-        ("_per_m", "1/m"),
-        ("_ratio", ""),
-    ];
-    let last = key.rsplit('.').next().unwrap_or(key);
-    SUFFIXES.iter().find(|(s, _)| last.ends_with(s)).map_or("", |(_, u)| u)
+/// A group of the inputs: its heading, the sheet section its keys are in, and which of that
+/// section's keys it takes (`None`: all not taken by a group before it).
+struct Group {
+    heading: &'static str,
+    section: &'static str,
+    keys: fn(&str) -> bool,
 }
 
-/// Every leaf of a TOML document as (key path, value as written).
-pub fn flatten(prefix: &str, value: &toml::Value, out: &mut Vec<(String, String)>) {
-    match value {
-        toml::Value::Table(t) => {
-            for (k, v) in t {
-                let key = if prefix.is_empty() { k.clone() } else { format!("{prefix}.{k}") };
-                flatten(&key, v, out);
-            }
-        }
-        toml::Value::Array(items) if items.iter().all(toml::Value::is_table) && !items.is_empty() => {
-            for (i, item) in items.iter().enumerate() {
-                let name =
-                    item.get("name").and_then(toml::Value::as_str).map_or_else(|| format!("{}", i + 1), str::to_string);
-                flatten(&format!("{prefix}[{name}]"), item, out);
-            }
-        }
-        toml::Value::String(s) => out.push((prefix.to_string(), s.clone())),
-        other => out.push((prefix.to_string(), other.to_string())),
+/// The inputs grouped by component, in the order an engineer checks them.
+const GROUPS: [Group; 10] = [
+    Group { heading: "General", section: "", keys: |k| k != "title" },
+    Group { heading: "Friction pulley", section: "pulley", keys: |_| true },
+    Group { heading: "Guide sheave", section: "pulley.guide", keys: |_| true },
+    Group { heading: "Hoisting ropes", section: "rope", keys: |_| true },
+    Group { heading: "Tail ropes", section: "hoist", keys: |k| k.starts_with("tail") },
+    Group { heading: "Conveyances and hanging lengths", section: "hoist", keys: |k| !k.starts_with("tail") },
+    Group { heading: "Safety brake", section: "brake", keys: |_| true },
+    Group { heading: "Lining", section: "lining", keys: |_| true },
+    Group { heading: "Requirements (their sources under Basis)", section: "requirements", keys: |_| true },
+    Group { heading: "Load-case matrix", section: "load_cases", keys: |_| true },
+];
+
+/// Sections shown elsewhere (the title block) or as tables of their own (stages, scenes).
+const NOT_SCALAR: [&str; 3] = ["document", "hoist.stage", "scene"];
+
+/// The table of `path` in the sheet (`""` the top level, `"pulley.guide"` a nested one).
+fn section<'a>(doc: &'a toml::Value, path: &str) -> Option<&'a toml::Table> {
+    path.split('.').filter(|p| !p.is_empty()).try_fold(doc.as_table()?, |t, p| t.get(p)?.as_table())
+}
+
+/// A value as the sheet writes it, shortened: a requirement's `{ value, source }` by its value,
+/// a long list by its length and ends.
+pub fn shown(v: &toml::Value) -> String {
+    match v {
+        toml::Value::String(s) => s.clone(),
+        toml::Value::Table(t) if t.contains_key("value") => t.get("value").map_or_else(String::new, shown),
+        toml::Value::Array(items) if items.len() > 6 => format!(
+            "{} values, {} … {}",
+            items.len(),
+            items.first().map_or_else(String::new, shown),
+            items.last().map_or_else(String::new, shown)
+        ),
+        toml::Value::Array(items) => format!("[{}]", items.iter().map(shown).collect::<Vec<_>>().join(", ")),
+        other => other.to_string(),
     }
 }
 
-/// 3. Inputs: the sheet's values, then the derived ones.
+/// A meaning from the reference, its Markdown marks taken off, escaped for HTML.
+fn meaning_html(section: &str, key: &str) -> String {
+    keys::meaning(section, key).map_or_else(String::new, |m| esc(&m.replace('`', "").replace("\\|", "|")))
+}
+
+/// Section 3, the inputs: the sheet's values by component, the motion profile and the scenes as
+/// tables of their own, then the derived values.
 pub fn inputs(out: &mut String, ctx: &Context) -> io::Result<()> {
     let doc: toml::Value = toml::from_str(&ctx.provenance.sheet_text)
         .map_err(|e| io::Error::new(io::ErrorKind::InvalidData, format!("the sheet does not parse again: {e}")))?;
-    let mut leaves = Vec::new();
-    flatten("", &doc, &mut leaves);
-    out.push_str("<h3>Sheet values</h3>\n<p class=\"note\">As written in the sheet; SI units, angles in degrees. Keys not in the sheet take the defaults stated in the README.</p>\n");
-    let rows = leaves.iter().map(|(k, v)| {
-        vec![
-            format!("<code>{}</code>", esc(k)),
-            format!("<span class=\"mono\">{}</span>", esc(v)),
-            unit_of(k).to_string(),
-        ]
-    });
-    table(out, "small", &["key", "value", "unit"], rows);
+    out.push_str("<p class=\"note\">The sheet's values by component, as written; SI units, angles in degrees, tensions per rope, masses for all ropes together. Keys not in the sheet take the defaults of the interface reference.</p>\n");
+    let mut shown_sections = vec![];
+    for g in &GROUPS {
+        let Some(t) = section(&doc, g.section) else { continue };
+        let rows: Vec<Vec<String>> =
+            t.iter().filter(|(k, v)| (g.keys)(k) && is_scalar(v)).map(|(k, v)| key_row(g.section, k, v)).collect();
+        shown_sections.push(g.section);
+        if !rows.is_empty() {
+            let _ = writeln!(out, "<h3>{}</h3>", esc(g.heading));
+            table(out, "small inputs", &["key", "value", "unit", "meaning"], rows);
+        }
+    }
+    other_sections(out, &doc, &shown_sections);
+    stages(out, &doc);
+    scenes(out, &doc);
     out.push_str("<h3>Derived values</h3>\n");
-    table(out, "", &["quantity", "value", "unit", "from"], derived(ctx));
+    table(out, "small", &["quantity", "value", "unit", "from"], derived(ctx));
     Ok(())
+}
+
+/// A value of its own key: not a sub-section or a list of tables (a requirement's inline
+/// `{ value, source }` is a value).
+fn is_scalar(v: &toml::Value) -> bool {
+    (!v.is_table() || v.get("value").is_some()) && !is_table_list(v)
+}
+
+fn is_table_list(v: &toml::Value) -> bool {
+    v.as_array().is_some_and(|a| !a.is_empty() && a.iter().all(toml::Value::is_table))
+}
+
+fn key_row(section: &str, key: &str, v: &toml::Value) -> Vec<String> {
+    vec![
+        format!("<code>{}</code>", esc(key)),
+        format!("<span class=\"mono\">{}</span>", esc(&shown(v))),
+        unit_of(key).to_string(),
+        meaning_html(section, key),
+    ]
+}
+
+/// Any other section of the sheet (a newer one than the groups know), under its own name.
+fn other_sections(out: &mut String, doc: &toml::Value, shown: &[&str]) {
+    let Some(top) = doc.as_table() else { return };
+    for (name, v) in top {
+        let Some(t) = v.as_table() else { continue };
+        if shown.contains(&name.as_str()) || NOT_SCALAR.contains(&name.as_str()) {
+            continue;
+        }
+        let rows: Vec<Vec<String>> = t.iter().filter(|(_, v)| is_scalar(v)).map(|(k, v)| key_row(name, k, v)).collect();
+        if !rows.is_empty() {
+            let _ = writeln!(out, "<h3><code>[{}]</code></h3>", esc(name));
+            table(out, "small inputs", &["key", "value", "unit", "meaning"], rows);
+        }
+    }
+}
+
+/// The columns of a list of tables: every key in the order first met, `name` first.
+fn columns(items: &[toml::Value]) -> Vec<String> {
+    let mut cols: Vec<String> = vec![];
+    for t in items.iter().filter_map(toml::Value::as_table) {
+        for k in t.keys() {
+            if !cols.contains(k) {
+                cols.push(k.clone());
+            }
+        }
+    }
+    cols.sort_by_key(|k| k != "name");
+    cols
+}
+
+/// A column heading: the key with its unit.
+fn heading(key: &str) -> String {
+    match unit_of(key) {
+        "" => key.to_string(),
+        u => format!("{key} ({u})"),
+    }
+}
+
+/// The motion profile: one row per `[[hoist.stage]]`.
+fn stages(out: &mut String, doc: &toml::Value) {
+    let Some(items) = doc.get("hoist").and_then(|h| h.get("stage")).and_then(toml::Value::as_array) else { return };
+    let cols = columns(items);
+    out.push_str("<h3>Motion profile (<code>[[hoist.stage]]</code>, in order)</h3>\n");
+    let header: Vec<String> = cols.iter().map(|c| heading(c)).collect();
+    let header: Vec<&str> = header.iter().map(String::as_str).collect();
+    let rows =
+        items.iter().map(|s| cols.iter().map(|c| s.get(c).map(|v| esc(&shown(v))).unwrap_or_default()).collect());
+    table(out, "small inputs", &header, rows);
+    let meanings: Vec<String> = cols
+        .iter()
+        .filter(|c| keys::meaning("hoist.stage", c).is_some())
+        .map(|c| format!("<code>{}</code>: {}", esc(c), meaning_html("hoist.stage", c)))
+        .collect();
+    let _ = writeln!(out, "<p class=\"note\">{}.</p>", meanings.join("; "));
+}
+
+/// The scenes: one row each, their kind's keys as `key = value unit`.
+fn scenes(out: &mut String, doc: &toml::Value) {
+    let Some(items) = doc.get("scene").and_then(toml::Value::as_array) else { return };
+    out.push_str("<h3>Scenes (<code>[[scene]]</code>)</h3>\n");
+    let rows = items.iter().filter_map(toml::Value::as_table).map(|s| {
+        let text = |k: &str| s.get(k).map(shown).unwrap_or_default();
+        let values: Vec<String> = s
+            .iter()
+            .filter(|(k, _)| !matches!(k.as_str(), "name" | "kind"))
+            .map(|(k, v)| {
+                let unit = unit_of(k);
+                let v = shown(v);
+                if unit.is_empty() { format!("{k} = {v}") } else { format!("{k} = {v} {unit}") }
+            })
+            .collect();
+        vec![esc(&text("name")), esc(&text("kind")), format!("<span class=\"mono\">{}</span>", esc(&values.join("; ")))]
+    });
+    table(out, "small inputs", &["scene", "kind", "values as given"], rows);
+    let keys: BTreeSet<&str> = items
+        .iter()
+        .filter_map(toml::Value::as_table)
+        .flat_map(|s| s.keys().map(String::as_str))
+        .filter(|k| !matches!(*k, "name" | "kind"))
+        .collect();
+    let meanings: Vec<String> = keys
+        .iter()
+        .filter(|k| keys::meaning("scene", k).is_some())
+        .map(|k| format!("<code>{}</code>: {}", esc(k), meaning_html("scene", k)))
+        .collect();
+    let _ = writeln!(out, "<p class=\"note\">{}.</p>", meanings.join("; "));
 }
 
 fn derived(ctx: &Context) -> Vec<Vec<String>> {

@@ -4,14 +4,17 @@
 //! (the requirements and their sources); inputs (every sheet value with its unit, and the derived
 //! values); assumptions and limits of the model levels used; load cases and the governing case of
 //! each check; verdicts (the pass/fail table with margins); the checks with formula, inputs and
-//! intermediate values; figures; software (version, the sheet's SHA-256, the command line, and
-//! accuracy evidence computed by this build).
+//! intermediate values, each check once; the figures that decide a check; software (version, the
+//! sheet's SHA-256, the command line, and accuracy evidence computed by this build). Then,
+//! unless `[document] appendix_figures = false`, Appendix A: every other figure, two to a page.
 //!
 //! Every check is rendered from the same [`crate::check::Check`] records as the terminal table.
 
+mod by_hand;
 mod checks;
 mod figures;
 mod inputs;
+mod keys;
 mod sections;
 mod software;
 mod style;
@@ -88,21 +91,26 @@ const SECTIONS: [(&str, &str, Renderer); 9] = [
     ("assumptions", "Assumptions and limits of the models used", sections::assumptions),
     ("load-cases", "Load cases and governing cases", checks::load_cases),
     ("verdicts", "Verdicts", checks::verdicts),
-    ("checks", "The checks, to be redone by hand", checks::details),
-    ("figures", "Figures", figures::figures),
+    ("checks", "The checks, to be redone by hand", by_hand::details),
+    ("figures", "Figures that decide a check", figures::figures),
     ("software", "Software and accuracy", software::software),
 ];
 
-/// The whole document.
+/// The heading of the appendix, the first words after the main body.
+pub const APPENDIX: &str = "Appendix A. Further figures";
+
+/// The whole document: the main body (the numbered sections), then the appendix of further
+/// figures unless the sheet leaves it out.
 pub fn render(ctx: &Context) -> std::io::Result<String> {
     let d = ctx.design;
     let title = d.document.title.clone().unwrap_or_else(|| d.title.clone());
     let mut out = String::new();
     let _ = write!(
         out,
-        "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>{}</title>\n<style>{}</style></head><body>\n",
+        "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>{}</title>\n<style>{}{}</style></head><body>\n",
         esc(&title),
-        style::CSS
+        style::CSS,
+        style::figure_css()
     );
     let verdict = if ctx.run.all_checks_pass() { "ALL CHECKS PASS" } else { "SOME CHECKS FAIL" };
     let _ = writeln!(
@@ -118,10 +126,21 @@ pub fn render(ctx: &Context) -> std::io::Result<String> {
     for (anchor, name, _) in SECTIONS {
         let _ = write!(out, "<li><a href=\"#{anchor}\">{}</a></li>", esc(name));
     }
-    out.push_str("</ol></nav>\n");
+    out.push_str("</ol>");
+    let appendix = figures::has_appendix(ctx);
+    if appendix {
+        let _ = write!(out, "<p><a href=\"#appendix\">{APPENDIX}</a></p>");
+    }
+    out.push_str("</nav>\n");
     for (i, (anchor, name, render)) in SECTIONS.iter().enumerate() {
         let _ = writeln!(out, "<section id=\"{anchor}\"><h2>{}. {}</h2>", i + 1, esc(name));
         render(&mut out, ctx)?;
+        out.push_str("</section>\n");
+    }
+    // The main body ends here: the appendix opens on a page of its own under its heading.
+    if appendix {
+        let _ = writeln!(out, "<section id=\"appendix\" class=\"appendix\"><h2>{APPENDIX}</h2>");
+        figures::appendix(&mut out, ctx)?;
         out.push_str("</section>\n");
     }
     out.push_str("</body></html>\n");

@@ -116,8 +116,16 @@ pub fn assumptions(out: &mut String, ctx: &Context) -> io::Result<()> {
         vec![format!("{l}"), esc(level_text(*l)), esc(&scenes.join(", "))]
     });
     table(out, "", &["level", "assumptions and limits", "scenes"], rows);
-    let reasons = ctx.run.scenes.iter().map(|s| vec![esc(&s.name), format!("{}", s.plan.level), esc(&s.plan.reason)]);
+    // The planner's reason once per (level, reason), with the scenes it applies to.
+    let mut reasons: Vec<(Level, &str, Vec<&str>)> = Vec::new();
+    for s in &ctx.run.scenes {
+        match reasons.iter_mut().find(|(l, r, _)| *l == s.plan.level && *r == s.plan.reason) {
+            Some((_, _, names)) => names.push(&s.name),
+            None => reasons.push((s.plan.level, &s.plan.reason, vec![&s.name])),
+        }
+    }
     out.push_str("<h3>Why each scene runs at its level</h3>\n");
-    table(out, "small", &["scene", "level", "planner's reason"], reasons);
+    let rows = reasons.iter().map(|(l, r, names)| vec![format!("{l}"), esc(r), esc(&names.join(", "))]);
+    table(out, "small", &["level", "planner's reason", "scenes"], rows);
     Ok(())
 }

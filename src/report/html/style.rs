@@ -1,6 +1,29 @@
 //! The report's stylesheet: screen and print (A4, page numbers in the page margin where the
 //! browser supports CSS margin boxes, each major section on a new page, no row split across
-//! pages).
+//! pages, figures two to a page).
+
+/// The height of the text area of an A4 page with the `@page` margins of [`CSS`]:
+/// 297 − 16 − 18 mm.
+pub const PAGE_TEXT_HEIGHT_MM: f64 = 297.0 - 16.0 - 18.0;
+
+/// The largest printed height of a figure's image, so that two figures with their captions fit
+/// one page: 2 × (100 mm + a caption of up to 5 lines of 8 pt ≈ 18 mm + 4 mm of spacing)
+/// = 244 mm ≤ [`PAGE_TEXT_HEIGHT_MM`] (263 mm).
+pub const FIGURE_MAX_HEIGHT_MM: f64 = 100.0;
+
+/// The room a figure's caption and spacing take beside its image (mm), see
+/// [`FIGURE_MAX_HEIGHT_MM`].
+pub const CAPTION_ROOM_MM: f64 = 22.0;
+
+// Two figures with their captions fit a page's text area.
+const _: () = assert!(2.0 * (FIGURE_MAX_HEIGHT_MM + CAPTION_ROOM_MM) <= PAGE_TEXT_HEIGHT_MM);
+
+/// The rules that print each figure at most [`FIGURE_MAX_HEIGHT_MM`] high, its proportions kept.
+pub fn figure_css() -> String {
+    format!(
+        "@media print {{\n  figure.half {{ margin: 2mm 0; }}\n  figure.half img {{ max-height: {FIGURE_MAX_HEIGHT_MM}mm; width: auto; max-width: 100%; object-fit: contain; }}\n  figure.half figcaption {{ font-size: 8pt; }}\n}}\n"
+    )
+}
 
 pub const CSS: &str = r#"
 body { font-family: "DejaVu Sans", "Liberation Sans", Arial, sans-serif; font-size: 10pt; line-height: 1.35;
@@ -33,7 +56,12 @@ nav ol { columns: 2; }
 @media print {
   body { max-width: none; margin: 0; padding: 0; font-size: 9pt; }
   nav { break-after: page; }
-  section#load-cases, section#checks, section#figures, section#software { break-before: page; }
+  section#checks, section#figures, section#appendix { break-before: page; }
+  section#load-cases table.small { font-size: 7pt; line-height: 1.15; }
+  table.small td, table.small th { padding: 1px 3px; }
+  table.inputs td:first-child { white-space: nowrap; }
+  .check { padding: 0.2em 0.6em; margin: 0.4em 0; font-size: 8.5pt; }
+  .check dl { grid-template-columns: 7.5em 1fr; }
   tr, .check, figure { break-inside: avoid; }
   thead { display: table-header-group; }
   a { color: inherit; text-decoration: none; }
