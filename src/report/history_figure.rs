@@ -12,8 +12,9 @@ use plotters::prelude::*;
 pub const T1: RGBColor = RGBColor(20, 70, 160);
 /// Colour of side 2's line (T2; the code's rigid-rope safety factor).
 pub const T2: RGBColor = RGBColor(200, 90, 20);
-const POS: RGBColor = RGBColor(200, 40, 30);
-const REV: RGBColor = RGBColor(30, 80, 190);
+/// The arcs in the friction map's end colours: positive dark, reverse light (apart in grey).
+const POS: RGBColor = super::friction_colour::POSITIVE_END;
+const REV: RGBColor = super::friction_colour::REVERSE_END;
 const STATIC_MIN: RGBColor = RGBColor(150, 0, 0);
 const DYNAMIC_MIN: RGBColor = RGBColor(235, 60, 0);
 /// Safety factors above the axis: marked in this grey.

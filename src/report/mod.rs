@@ -11,6 +11,8 @@ pub mod check_text;
 pub mod checklist;
 pub mod compare;
 pub mod csv_out;
+pub mod figure_size;
+pub mod friction_colour;
 pub mod history_figure;
 pub mod html;
 pub mod matrix;

@@ -3,6 +3,7 @@
 
 use super::{Context, esc};
 use crate::planner::Level;
+use crate::report::figure_size::FigureKind;
 use base64::Engine;
 use std::fmt::Write;
 use std::io;
@@ -11,11 +12,11 @@ use std::io;
 pub const FIGURES: [(&str, &str); 4] = [
     (
         "distribution.png",
-        "Tension T(θ) and friction q(θ) within its Coulomb bounds ±μn over the wrap: read where friction is positive or reverse, which arcs are at the Coulomb limit (light) or slipping (strong), and the demarcation point (JDP).",
+        "Tension T(θ) and friction q(θ) within its Coulomb bounds ±μn over the wrap: read where friction is positive (dark red shade) or reverse (light blue shade) at the Coulomb limit, hatched where the rope slips, and the demarcation point (JDP).",
     ),
     (
         "wrap_diagram.png",
-        "The pulley with the same state drawn round its wrap: tension outside the rim, positive (red) and reverse (blue) friction inside it against the dashed Coulomb limit, the JDP as a radial line.",
+        "The pulley with the same state drawn round its wrap: tension as a band outside the rim, from T = 0 on the rim to 1.6 R at the highest tension (dotted circle), positive (dark red) and reverse (light blue) friction inside it against the dashed Coulomb limit, the JDP as a radial line.",
     ),
     (
         "history.png",
@@ -23,7 +24,7 @@ pub const FIGURES: [(&str, &str); 4] = [
     ),
     (
         "wrap_map.png",
-        "Friction utilization |q|/μn over time (across) and the wrap (θ, up), signed by the friction's direction as its colour bar shows; the JDP in black, a new line where it jumps: read how the pattern moves round the wrap.",
+        "Friction utilization |q|/μn over time (across) and the wrap (θ, up), signed by the friction's direction as its colour bar shows (positive dark red, reverse light blue, none near-white; the two apart in greyscale too); the JDP in black, a line where it moves continuously and a short mark per output step where it jumps: read how the pattern moves round the wrap.",
     ),
 ];
 
@@ -45,7 +46,8 @@ pub fn figures(out: &mut String, ctx: &Context) -> io::Result<()> {
             };
             let _ = writeln!(
                 out,
-                "<figure><img alt=\"{}\" src=\"data:image/png;base64,{data}\"><figcaption><b>Figure {n}.</b> {} — {}{}</figcaption></figure>",
+                "<figure><img class=\"fig-{}\" alt=\"{}\" src=\"data:image/png;base64,{data}\"><figcaption><b>Figure {n}.</b> {} — {}{}</figcaption></figure>",
+                FigureKind::of_file(file).unwrap_or(FigureKind::Panels).css_name(),
                 esc(&format!("{}/{file}", s.name)),
                 esc(&s.name),
                 esc(caption),

@@ -14,7 +14,7 @@ mod figures;
 mod inputs;
 mod sections;
 mod software;
-mod style;
+pub(crate) mod style;
 
 use super::accuracy::Evidence;
 use crate::design::Design;
@@ -100,9 +100,10 @@ pub fn render(ctx: &Context) -> std::io::Result<String> {
     let mut out = String::new();
     let _ = write!(
         out,
-        "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>{}</title>\n<style>{}</style></head><body>\n",
+        "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>{}</title>\n<style>{}{}</style></head><body>\n",
         esc(&title),
-        style::CSS
+        style::CSS,
+        crate::report::figure_size::print_css()
     );
     let verdict = if ctx.run.all_checks_pass() { "ALL CHECKS PASS" } else { "SOME CHECKS FAIL" };
     let _ = writeln!(
