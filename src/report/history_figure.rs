@@ -174,7 +174,8 @@ pub fn arc_lines(rows: &[HistoryRow], radius_m: f64) -> Vec<Line> {
     let series =
         |f: &dyn Fn(&HistoryRow) -> f64| rows.iter().map(|r| (r.t_s, f(r))).filter(|p| p.1.is_finite()).collect();
     let jdp: Vec<(f64, f64, Option<f64>)> = rows.iter().map(|r| (r.t_s, r.speed_m_s, r.jdp_deg)).collect();
-    let mut jdp_line = Line::new("JDP (a new line where it jumps)", RGBColor(0, 0, 0), Stroke::Solid(2), vec![]);
+    let mut jdp_line =
+        Line::new("JDP (a line where it moves, dots where it jumps)", RGBColor(0, 0, 0), Stroke::Solid(2), vec![]);
     jdp_line.runs = jdp_runs(&jdp, radius_m, JDP_JUMP_DEG);
     vec![
         Line::new("positive arc", POS, Stroke::Solid(3), series(&|r| r.positive_arc_deg)),

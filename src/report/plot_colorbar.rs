@@ -6,7 +6,11 @@ use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 /// Width (px) a colour bar takes beside its map, its labels included.
-pub const BAR_AREA_W: u32 = 200;
+pub const BAR_AREA_W: u32 = 210;
+
+/// The top margin (px) of a map with a colour bar: room above the bar for its title, clear of
+/// the label of its top tick.
+pub const BAR_TOP_PX: i32 = 46;
 
 /// A colour bar: `steps` colour bands from `range.0` (bottom) to `range.1` (top), and ticks
 /// `(value, label)`.
@@ -75,7 +79,7 @@ pub fn draw_colour_bar(area: &Area, bar: &ColourBar, top_px: i32, bottom_px: i32
         area.draw_text(&label, &text, (x1 + 10, y)).map_err(e)?;
     }
     let title = font(small).color(&BLACK).pos(Pos::new(HPos::Left, VPos::Bottom));
-    area.draw_text(&bar.title, &title, (x0 - 8, y_top - 12)).map_err(e)
+    area.draw_text(&bar.title, &title, (x0 - 8, y_top - small as i32 / 2 - 6)).map_err(e)
 }
 
 #[cfg(test)]

@@ -10,7 +10,7 @@ use super::history_figure::{Minima, OFF_SCALE, T1, T2, arc_lines, mark_clipped, 
 use super::plot::{
     Area, Chart, PlotError, Y_LABEL_AREA, e, font, padded_range, render, stacked_mesh, stacked_panel, text_sizes,
 };
-use super::plot_colorbar::{BAR_AREA_W, ColourBar, draw_colour_bar};
+use super::plot_colorbar::{BAR_AREA_W, BAR_TOP_PX, ColourBar, draw_colour_bar};
 use super::plot_series::{
     JdpPiece, Line, Stroke, draw_line, draw_swatch, jdp_pieces, jdp_tolerance_deg, legend_of, legend_strip,
 };
@@ -200,6 +200,7 @@ fn draw_map(body: &Area, rows: &[HistoryRow], wrap_deg: f64, map: &[Vec<f64>], r
     let x = time_range(times.iter().copied());
     let mut chart = ChartBuilder::on(&plot)
         .margin(14)
+        .margin_top(BAR_TOP_PX)
         .x_label_area_size(66)
         .y_label_area_size(Y_LABEL_AREA)
         .build_cartesian_2d(x.0..x.1, 0.0..wrap)
@@ -230,7 +231,7 @@ fn draw_map(body: &Area, rows: &[HistoryRow], wrap_deg: f64, map: &[Vec<f64>], r
             }
         }
     }
-    draw_colour_bar(&bar_area, &utilization_bar(), 14, 80)?;
+    draw_colour_bar(&bar_area, &utilization_bar(), BAR_TOP_PX, 80)?;
     // Legend strip: the JDP's line and marks (the colour bar gives the friction).
     let style = font(kind.text_px()).color(&BLACK).pos(Pos::new(HPos::Left, VPos::Center));
     let y = legend.dim_in_pixel().1 as i32 / 2;

@@ -27,6 +27,8 @@ const TENSION: RGBColor = RGBColor(20, 70, 160);
 const POSITIVE: RGBColor = POSITIVE_END;
 const REVERSE: RGBColor = REVERSE_END;
 const LIMIT: RGBColor = RGBColor(110, 110, 110);
+/// The tension band's fill: a neutral grey, apart in hue from the friction bands.
+const BAND: RGBColor = RGBColor(218, 218, 218);
 const JDP: RGBColor = RGBColor(20, 130, 60);
 /// Radius of the rim the friction bands hang from (pulley radius 1).
 const RIM: f64 = 0.96;
@@ -279,7 +281,7 @@ fn draw(body: &Area, d: &WrapDiagram) -> Result<(), String> {
     let rim: Vec<(f64, f64)> =
         (0..=180).map(|i| polar(d.wrap_angle_deg * f64::from(i) / 180.0, 1.0, d.wrap_angle_deg)).collect();
     let band: Vec<(f64, f64)> = d.tension.iter().copied().chain(rim.into_iter().rev()).collect();
-    area.draw(&Polygon::new(band, TENSION.mix(0.18).filled())).map_err(e)?;
+    area.draw(&Polygon::new(band, BAND.filled())).map_err(e)?;
     area.draw(&DashedPathElement::new(d.tension_max.clone(), 3, 5, TENSION.stroke_width(1))).map_err(e)?;
     area.draw(&DashedPathElement::new(d.limit.clone(), 8, 5, LIMIT.stroke_width(2))).map_err(e)?;
     area.draw(&PathElement::new(d.tension.clone(), TENSION.stroke_width(3))).map_err(e)?;

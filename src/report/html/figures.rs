@@ -20,7 +20,7 @@ pub const FIGURES: [(&str, &str); 4] = [
     ),
     (
         "history.png",
-        "End tensions, the positive and reverse arcs with the JDP (a new line where it jumps), and the anti-slip safety factor against the minimum that applies (static at rest, dynamic in motion), values above the axis marked off scale.",
+        "End tensions, the positive and reverse arcs with the JDP (a line where it moves with the rope or the load, dots where it jumps), and the anti-slip safety factor against the minimum that applies (static at rest, dynamic in motion), values above the axis marked off scale.",
     ),
     (
         "wrap_map.png",
