@@ -12,8 +12,9 @@ use plotters::prelude::*;
 pub const T1: RGBColor = RGBColor(20, 70, 160);
 /// Colour of side 2's line (T2; the code's rigid-rope safety factor).
 pub const T2: RGBColor = RGBColor(200, 90, 20);
-const POS: RGBColor = RGBColor(200, 40, 30);
-const REV: RGBColor = RGBColor(30, 80, 190);
+/// The arcs in the friction map's end colours: positive dark, reverse light (apart in grey).
+const POS: RGBColor = super::friction_colour::POSITIVE_END;
+const REV: RGBColor = super::friction_colour::REVERSE_END;
 const STATIC_MIN: RGBColor = RGBColor(150, 0, 0);
 const DYNAMIC_MIN: RGBColor = RGBColor(235, 60, 0);
 /// Safety factors above the axis: marked in this grey.
@@ -173,7 +174,8 @@ pub fn arc_lines(rows: &[HistoryRow], radius_m: f64) -> Vec<Line> {
     let series =
         |f: &dyn Fn(&HistoryRow) -> f64| rows.iter().map(|r| (r.t_s, f(r))).filter(|p| p.1.is_finite()).collect();
     let jdp: Vec<(f64, f64, Option<f64>)> = rows.iter().map(|r| (r.t_s, r.speed_m_s, r.jdp_deg)).collect();
-    let mut jdp_line = Line::new("JDP (a new line where it jumps)", RGBColor(0, 0, 0), Stroke::Solid(2), vec![]);
+    let mut jdp_line =
+        Line::new("JDP (a line where it moves, dots where it jumps)", RGBColor(0, 0, 0), Stroke::Solid(2), vec![]);
     jdp_line.runs = jdp_runs(&jdp, radius_m, JDP_JUMP_DEG);
     vec![
         Line::new("positive arc", POS, Stroke::Solid(3), series(&|r| r.positive_arc_deg)),

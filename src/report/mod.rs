@@ -12,6 +12,8 @@ pub mod checklist;
 pub mod compare;
 pub mod csv_out;
 pub mod expr;
+pub mod figure_size;
+pub mod friction_colour;
 pub mod history_figure;
 pub mod html;
 pub mod matrix;

@@ -3,6 +3,7 @@
 //! labels. Drawing never panics: every failure comes back as a [`PlotError`]. The figures
 //! themselves live beside their features (`plot_distribution`, `plot_history`, `plot_wrap`, …).
 
+use super::figure_size::{FigureKind, MIN_PRINTED_PT, font_px};
 use plotters::coord::Shift;
 use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
@@ -42,10 +43,29 @@ fn fail_at(path: &Path) -> impl Fn(String) -> PlotError + '_ {
     move |message| PlotError { path: path.display().to_string(), message }
 }
 
-/// Draws a `size` PNG at `path` with `draw` under a centred caption.
+/// The text sizes of a figure `width_px` wide printed across the text column
+/// ([`FigureKind::Panels`]'s printed width): smallest text, axis descriptions, title.
+pub(crate) fn text_sizes(width_px: u32) -> (u32, u32, u32) {
+    let mm = FigureKind::Panels.printed_width_mm();
+    (font_px(width_px, mm, MIN_PRINTED_PT), font_px(width_px, mm, MIN_PRINTED_PT + 1.0), font_px(width_px, mm, 11.0))
+}
+
+/// Draws a `size` PNG at `path` with `draw` under a centred caption, for a figure printed
+/// across the text column.
 pub(crate) fn render(
     path: &Path,
     size: (u32, u32),
+    title: &str,
+    draw: impl FnOnce(&Area) -> Result<(), String>,
+) -> Result<(), PlotError> {
+    render_sized(path, size, text_sizes(size.0).2, title, draw)
+}
+
+/// Draws a `size` PNG at `path` with `draw` under a centred caption of `title_px` pixels.
+pub(crate) fn render_sized(
+    path: &Path,
+    size: (u32, u32),
+    title_px: u32,
     title: &str,
     draw: impl FnOnce(&Area) -> Result<(), String>,
 ) -> Result<(), PlotError> {
@@ -55,14 +75,18 @@ pub(crate) fn render(
     let root = BitMapBackend::new(path, size).into_drawing_area();
     let drawn = (|| {
         root.fill(&WHITE).map_err(e)?;
-        let (caption, body) = root.split_vertically(56);
-        let style = font(24).color(&BLACK).pos(Pos::new(HPos::Center, VPos::Center));
-        caption.draw_text(title, &style, (size.0 as i32 / 2, 28)).map_err(e)?;
+        let caption_h = 2 * title_px as i32 + 4;
+        let (caption, body) = root.split_vertically(caption_h);
+        let style = font(title_px).color(&BLACK).pos(Pos::new(HPos::Center, VPos::Center));
+        caption.draw_text(title, &style, (size.0 as i32 / 2, caption_h / 2)).map_err(e)?;
         draw(&body)
     })();
     drawn.map_err(fail_at(path))?;
     root.present().map_err(|x| fail_at(path)(x.to_string()))
 }
+
+/// Room (px) for the y tick labels and description of a 1200 px figure's panels.
+pub(crate) const Y_LABEL_AREA: u32 = 140;
 
 /// One panel of a figure of stacked panels over a common x (history, sweep): `x` × `y`, room
 /// for the x labels on the `bottom` panel only.
@@ -74,8 +98,8 @@ pub(crate) fn stacked_panel<'a, 'b>(
 ) -> Result<Chart<'a, 'b>, String> {
     ChartBuilder::on(area)
         .margin(14)
-        .x_label_area_size(if bottom { 52 } else { 30 })
-        .y_label_area_size(96)
+        .x_label_area_size(if bottom { 66 } else { 34 })
+        .y_label_area_size(Y_LABEL_AREA)
         .build_cartesian_2d(x.0..x.1, y.0..y.1)
         .map_err(e)
 }
@@ -90,14 +114,16 @@ pub(crate) fn stacked_mesh(
     y_desc: &str,
 ) -> Result<(), String> {
     let (xf, yf) = (tick_format(x.0, x.1), tick_format(y.0, y.1));
+    // Stacked panels make figures 1200 px wide (history, sweeps, panels).
+    let (text, desc, _) = text_sizes(FigureKind::Panels.width_px());
     chart
         .configure_mesh()
         .x_desc(x_desc.unwrap_or(""))
         .y_desc(y_desc)
         .x_label_formatter(&xf)
         .y_label_formatter(&yf)
-        .label_style(font(15))
-        .axis_desc_style(font(17))
+        .label_style(font(text))
+        .axis_desc_style(font(desc))
         .light_line_style(TRANSPARENT)
         .bold_line_style(RGBColor(215, 215, 215))
         .draw()

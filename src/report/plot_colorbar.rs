@@ -1,12 +1,16 @@
 //! The colour bar of a map: the value range, the colour of each of its steps and the labelled
 //! ticks, as plain data ([`ColourBar`]), drawn as a vertical bar beside the map.
 
-use super::plot::{Area, e, font, tick_format};
+use super::plot::{Area, e, font, text_sizes, tick_format};
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 /// Width (px) a colour bar takes beside its map, its labels included.
 pub const BAR_AREA_W: u32 = 210;
+
+/// The top margin (px) of a map with a colour bar: room above the bar for its title, clear of
+/// the label of its top tick.
+pub const BAR_TOP_PX: i32 = 46;
 
 /// A colour bar: `steps` colour bands from `range.0` (bottom) to `range.1` (top), and ticks
 /// `(value, label)`.
@@ -51,7 +55,8 @@ impl ColourBar {
     }
 }
 
-/// Draws `bar` in `area` (a strip [`BAR_AREA_W`] wide beside a map whose plot has `top_px` and
+/// Draws `bar` in `area`, its text sized for a 1200 px figure printed across the text column
+/// (a strip [`BAR_AREA_W`] wide beside a map whose plot has `top_px` and
 /// `bottom_px` margins, so the bar spans the map's height).
 pub fn draw_colour_bar(area: &Area, bar: &ColourBar, top_px: i32, bottom_px: i32) -> Result<(), String> {
     let (_, h) = area.dim_in_pixel();
@@ -64,7 +69,8 @@ pub fn draw_colour_bar(area: &Area, bar: &ColourBar, top_px: i32, bottom_px: i32
         area.draw(&Rectangle::new([(x0, y_of(hi)), (x1, y_of(lo))], c.filled())).map_err(e)?;
     }
     area.draw(&Rectangle::new([(x0, y_top), (x1, y_bot)], BLACK.stroke_width(1))).map_err(e)?;
-    let text = font(14).color(&BLACK).pos(Pos::new(HPos::Left, VPos::Center));
+    let (small, _, _) = text_sizes(1200);
+    let text = font(small).color(&BLACK).pos(Pos::new(HPos::Left, VPos::Center));
     let fmt = tick_format(a, b);
     for (v, label) in &bar.ticks {
         let y = y_of(*v);
@@ -72,8 +78,8 @@ pub fn draw_colour_bar(area: &Area, bar: &ColourBar, top_px: i32, bottom_px: i32
         let label = if label.is_empty() { fmt(v) } else { label.clone() };
         area.draw_text(&label, &text, (x1 + 10, y)).map_err(e)?;
     }
-    let title = font(15).color(&BLACK).pos(Pos::new(HPos::Left, VPos::Bottom));
-    area.draw_text(&bar.title, &title, (x0 - 8, y_top - 12)).map_err(e)
+    let title = font(small).color(&BLACK).pos(Pos::new(HPos::Left, VPos::Bottom));
+    area.draw_text(&bar.title, &title, (x0 - 8, y_top - small as i32 / 2 - 6)).map_err(e)
 }
 
 #[cfg(test)]

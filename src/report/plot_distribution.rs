@@ -4,8 +4,11 @@
 //! marked, on the shared frame of [`super::plot`]. What is drawn is built first as plain data
 //! ([`DistributionFigure`]), then drawn.
 
+use super::figure_size::FigureKind;
+use super::friction_colour::{HATCH, hatch_segments};
+use super::plot::Y_LABEL_AREA;
 use super::plot::{Area, Chart, PlotError, font, font_ready, padded_range, tick_format};
-use super::plot_series::legend_strip;
+use super::plot_series::{HATCH_SPACING, legend_strip};
 use super::plot_zones::{LegendEntry, Swatch, ZoneShade, shade_legend, zone_shades};
 use crate::wrap::{Distribution, Sample};
 use plotters::element::DashedPathElement;
@@ -15,8 +18,8 @@ use std::path::Path;
 
 const WIDTH: u32 = 1200;
 const HEIGHT: u32 = 900;
-const CAPTION_H: u32 = 52;
-const Y_LABEL_W: u32 = 100;
+const CAPTION_H: u32 = 56;
+const Y_LABEL_W: u32 = Y_LABEL_AREA;
 const MARGIN: u32 = 16;
 
 const TENSION: RGBColor = RGBColor(20, 70, 160);
@@ -137,8 +140,8 @@ fn draw_caption(area: &Area, title: &str, gross_slip: bool) -> Result<(), String
         area.estimate_text_size(text, &font(size).into()).map(|d| d.0).map_err(|e| e.to_string())
     };
     let room = WIDTH - 2 * MARGIN;
-    let mut size = 26;
-    while size > 22 && width(title, size)? + width(suffix, size)? > room {
+    let mut size = FigureKind::Distribution.title_px();
+    while size > FigureKind::Distribution.desc_px() && width(title, size)? + width(suffix, size)? > room {
         size -= 1;
     }
     let mut text = title.to_string();
@@ -172,11 +175,11 @@ fn panel<'a, 'b>(
 ) -> Result<Chart<'a, 'b>, String> {
     let e = |e: DrawingAreaErrorKind<_>| e.to_string();
     let (left, right) = ((MARGIN + Y_LABEL_W) as i32, (WIDTH - MARGIN) as i32);
-    let plot = legend_strip(area, legend, (left, right), 17)?;
+    let plot = legend_strip(area, legend, (left, right), FigureKind::Distribution.text_px())?;
     let mut chart = ChartBuilder::on(&plot)
         .margin(MARGIN)
         .margin_top(4)
-        .x_label_area_size(if x_desc { 56 } else { 32 })
+        .x_label_area_size(if x_desc { 66 } else { 34 })
         .y_label_area_size(Y_LABEL_W)
         .build_cartesian_2d(0.0..x_max, y0..y1)
         .map_err(e)?;
@@ -185,6 +188,9 @@ fn panel<'a, 'b>(
         let (a, b) = (z.start_deg.clamp(0.0, x_max), z.end_deg.clamp(0.0, x_max));
         if a.is_finite() && b.is_finite() && b > a {
             chart.plotting_area().draw(&Rectangle::new([(a, y0), (b, y1)], color.filled())).map_err(e)?;
+            if z.kind.slipping() {
+                hatch(&chart, (a, y0), (b, y1))?;
+            }
         }
     }
     let (x_fmt, y_fmt) = (tick_format(0.0, x_max), tick_format(y0, y1));
@@ -196,13 +202,28 @@ fn panel<'a, 'b>(
         .y_labels(8)
         .x_label_formatter(&x_fmt)
         .y_label_formatter(&y_fmt)
-        .label_style(font(16))
-        .axis_desc_style(font(18))
+        .label_style(font(FigureKind::Distribution.text_px()))
+        .axis_desc_style(font(FigureKind::Distribution.desc_px()))
         .light_line_style(TRANSPARENT)
         .bold_line_style(RGBColor(205, 205, 205))
         .draw()
         .map_err(e)?;
     Ok(chart)
+}
+
+/// Hatching over the rectangle `a`–`b` (data coordinates) of `chart`: a slipping zone.
+fn hatch(chart: &Chart, a: (f64, f64), b: (f64, f64)) -> Result<(), String> {
+    let area = chart.plotting_area();
+    let base = area.get_base_pixel();
+    let px = |p: (f64, f64)| {
+        let (x, y) = chart.backend_coord(&p);
+        (x - base.0, y - base.1)
+    };
+    let pixels = area.strip_coord_spec();
+    for seg in hatch_segments(px(a), px(b), HATCH_SPACING) {
+        pixels.draw(&PathElement::new(seg.to_vec(), HATCH.stroke_width(2))).map_err(|e| e.to_string())?;
+    }
+    Ok(())
 }
 
 /// The JDP as a vertical line through the panel, labelled at its top.
@@ -212,7 +233,7 @@ fn mark_jdp(chart: &Chart, jdp: Option<f64>, (y0, y1): (f64, f64)) -> Result<(),
     let e = |e: DrawingAreaErrorKind<_>| e.to_string();
     area.draw(&PathElement::new(vec![(j, y0), (j, y1)], JDP.stroke_width(2))).map_err(e)?;
     let (h, dx) = if j > 0.8 * area.get_x_range().end { (HPos::Right, -6) } else { (HPos::Left, 6) };
-    let style = font(17).color(&JDP).pos(Pos::new(h, VPos::Top));
+    let style = font(FigureKind::Distribution.text_px()).color(&JDP).pos(Pos::new(h, VPos::Top));
     let label = EmptyElement::at((j, y1)) + Text::new(jdp_label(j), (dx, 6), style);
     area.draw(&label).map_err(e)
 }

@@ -1,13 +1,19 @@
 //! Time plots of a history: `history.png` (end tensions, speed and acceleration, arcs and JDP,
 //! safety factor against the minimum that applies over time) and `wrap_map.png` (θ–t map of
-//! friction utilization, positive and reverse friction in two colours, stick in grey, the JDP
-//! over time, with a colour bar). What history.png shows is built as plain data first
+//! friction utilization on the diverging map of [`super::friction_colour`], the JDP over time
+//! as a line where it moves continuously and as marks where it jumps, with a colour bar). What history.png shows is built as plain data first
 //! ([`super::history_figure`]).
 
+use super::figure_size::FigureKind;
+use super::friction_colour::friction_color;
 use super::history_figure::{Minima, OFF_SCALE, T1, T2, arc_lines, mark_clipped, safety_panel};
-use super::plot::{Area, Chart, PlotError, e, font, padded_range, render, stacked_mesh, stacked_panel};
-use super::plot_colorbar::{BAR_AREA_W, ColourBar, draw_colour_bar};
-use super::plot_series::{Line, Stroke, draw_line, draw_swatch, jdp_runs, legend_of, legend_strip};
+use super::plot::{
+    Area, Chart, PlotError, Y_LABEL_AREA, e, font, padded_range, render, stacked_mesh, stacked_panel, text_sizes,
+};
+use super::plot_colorbar::{BAR_AREA_W, BAR_TOP_PX, ColourBar, draw_colour_bar};
+use super::plot_series::{
+    JdpPiece, Line, Stroke, draw_line, draw_swatch, jdp_pieces, jdp_tolerance_deg, legend_of, legend_strip,
+};
 use super::plot_zones::Swatch;
 use crate::model::history::HistoryRow;
 use plotters::prelude::*;
@@ -46,7 +52,9 @@ pub struct HistoryPlot<'a> {
 
 /// history.png: end tensions, speed and acceleration, JDP and arcs, safety factor over time.
 pub fn plot_history(path: &Path, title: &str, rows: &[HistoryRow], plot: HistoryPlot) -> Result<(), PlotError> {
-    render(path, (1200, 1300), title, |body| draw_history(body, rows, plot))
+    render(path, (FigureKind::History.width_px(), FigureKind::History.height_px().unwrap_or(1300)), title, |body| {
+        draw_history(body, rows, plot)
+    })
 }
 
 fn time_range(times: impl Iterator<Item = f64>) -> (f64, f64) {
@@ -135,7 +143,7 @@ fn draw_history(body: &Area, rows: &[HistoryRow], plot: HistoryPlot) -> Result<(
             legend.push((Swatch::Fill(SLIP_BG), "gross slip".to_string()));
         }
         let width = area.dim_in_pixel().0 as i32;
-        let area = legend_strip(area, &legend, (110, width - 14), 15)?;
+        let area = legend_strip(area, &legend, (110, width - 14), text_sizes(1200).0)?;
         let mut chart = stacked_panel(&area, x, y, bottom)?;
         for &(a, b) in &slips {
             chart.plotting_area().draw(&Rectangle::new([(a, y.0), (b, y.1)], SLIP_BG.filled())).map_err(e)?;
@@ -162,38 +170,33 @@ pub fn plot_wrap_map(
     map: &[Vec<f64>],
     radius_m: f64,
 ) -> Result<(), PlotError> {
-    render(path, (1200, 800), title, |body| draw_map(body, rows, wrap_angle_deg, map, radius_m))
+    render(path, (FigureKind::WrapMap.width_px(), FigureKind::WrapMap.height_px().unwrap_or(800)), title, |body| {
+        draw_map(body, rows, wrap_angle_deg, map, radius_m)
+    })
 }
 
-/// Colour of a signed utilization: oranges to dark red for positive friction, light to dark
-/// blue for reverse friction, grey for stick without friction.
+/// Colour of a signed utilization ([`friction_color`]): neutral at 0, darkening to a dark red
+/// for positive friction and to a light blue for reverse friction at the Coulomb limit.
 pub fn map_color(u: f64) -> RGBColor {
-    let lerp = |a: (u8, u8, u8), b: (u8, u8, u8), s: f64| {
-        let m = |x: u8, y: u8| (f64::from(x) + (f64::from(y) - f64::from(x)) * s).round() as u8;
-        RGBColor(m(a.0, b.0), m(a.1, b.1), m(a.2, b.2))
-    };
-    if !u.is_finite() || u.abs() < 0.001 {
-        return RGBColor(232, 232, 232);
-    }
-    let s = u.abs().min(1.0);
-    if u > 0.0 { lerp((255, 226, 190), (175, 20, 10), s) } else { lerp((214, 230, 255), (20, 45, 165), s) }
+    friction_color(u)
 }
 
 /// The wrap map's colour bar: signed utilization from −1 (reverse friction at the Coulomb
-/// limit) through 0 (stick without friction) to +1 (positive friction at the limit).
+/// limit) through 0 (no friction) to +1 (positive friction at the limit).
 pub fn utilization_bar() -> ColourBar {
     let ticks = vec![
-        (1.0, "+1 positive (limit)".to_string()),
+        (1.0, "+1 positive".to_string()),
         (0.5, "+0.5".to_string()),
         (0.0, "0 none".to_string()),
         (-0.5, "−0.5".to_string()),
-        (-1.0, "−1 reverse (limit)".to_string()),
+        (-1.0, "−1 reverse".to_string()),
     ];
     ColourBar::new("u = ±|q|/μn", (-1.0, 1.0), 200, map_color, ticks)
 }
 
 fn draw_map(body: &Area, rows: &[HistoryRow], wrap_deg: f64, map: &[Vec<f64>], radius_m: f64) -> Result<(), String> {
-    let (legend, rest) = body.split_vertically(40);
+    let kind = FigureKind::WrapMap;
+    let (legend, rest) = body.split_vertically(kind.text_px() + 20);
     let (plot, bar_area) = rest.split_horizontally(rest.dim_in_pixel().0 - BAR_AREA_W);
     let wrap = if wrap_deg.is_finite() && wrap_deg > 0.0 { wrap_deg } else { 360.0 };
     let n = rows.len().min(map.len());
@@ -201,36 +204,54 @@ fn draw_map(body: &Area, rows: &[HistoryRow], wrap_deg: f64, map: &[Vec<f64>], r
     let x = time_range(times.iter().copied());
     let mut chart = ChartBuilder::on(&plot)
         .margin(14)
-        .x_label_area_size(52)
-        .y_label_area_size(96)
+        .margin_top(BAR_TOP_PX)
+        .x_label_area_size(66)
+        .y_label_area_size(Y_LABEL_AREA)
         .build_cartesian_2d(x.0..x.1, 0.0..wrap)
         .map_err(e)?;
     chart
         .configure_mesh()
         .x_desc("time t (s)")
-        .y_desc("wrap angle θ (deg): 0 = side 1, top = side 2")
-        .label_style(font(15))
-        .axis_desc_style(font(17))
+        .y_desc("wrap angle θ (deg), 0 = side 1")
+        .label_style(font(kind.text_px()))
+        .axis_desc_style(font(kind.desc_px()))
         .disable_mesh()
         .draw()
         .map_err(e)?;
     draw_cells(&chart, &times, wrap, map, x)?;
-    // The JDP over time, broken where it is absent or jumps.
+    // The JDP over time: a line where it moves continuously, marks where it jumps.
     let jdp: Vec<(f64, f64, Option<f64>)> =
         rows[..n].iter().map(|r| (r.t_s, r.speed_m_s, r.jdp_deg.map(|j| j.clamp(0.0, wrap)))).collect();
-    let mut line = Line::new("JDP (a new line where it jumps)", BLACK, Stroke::Solid(3), vec![]);
-    line.runs = jdp_runs(&jdp, radius_m, super::history_figure::JDP_JUMP_DEG);
-    draw_line(&chart, &line)?;
-    draw_colour_bar(&bar_area, &utilization_bar(), 14, 66)?;
-    // Legend strip: the JDP and the stick colour (the colour bar gives the rest).
-    let style = font(16).color(&BLACK).pos(Pos::new(HPos::Left, VPos::Center));
-    let mut lx = 110;
-    for (swatch, text) in [(Swatch::Fill(map_color(0.0)), "stick, no friction"), (line.swatch(), line.label.as_str())] {
-        draw_swatch(&legend, swatch, (lx, 20), 26)?;
-        legend.draw_text(text, &style, (lx + 32, 20)).map_err(e)?;
-        lx += 42 + legend.estimate_text_size(text, &style).map_err(e)?.0 as i32;
+    let nodes = map.first().map_or(0, Vec::len);
+    let tolerance = jdp_tolerance_deg(wrap, nodes, super::history_figure::JDP_JUMP_DEG);
+    let area = chart.plotting_area();
+    for piece in jdp_pieces(&jdp, radius_m, tolerance) {
+        match piece {
+            JdpPiece::Line(run) => area.draw(&PathElement::new(run, BLACK.stroke_width(2))).map_err(e)?,
+            JdpPiece::Marks(marks) => {
+                for p in marks {
+                    area.draw(&(EmptyElement::at(p) + jdp_mark((0, 0)))).map_err(e)?;
+                }
+            }
+        }
     }
-    Ok(())
+    draw_colour_bar(&bar_area, &utilization_bar(), BAR_TOP_PX, 80)?;
+    // Legend strip: the JDP's line and marks (the colour bar gives the friction).
+    let style = font(kind.text_px()).color(&BLACK).pos(Pos::new(HPos::Left, VPos::Center));
+    let y = legend.dim_in_pixel().1 as i32 / 2;
+    let moving = "JDP moving continuously";
+    draw_swatch(&legend, Swatch::Line(BLACK, 2, false), (110, y), 30)?;
+    legend.draw_text(moving, &style, (148, y)).map_err(e)?;
+    let lx = 148 + 30 + legend.estimate_text_size(moving, &style).map_err(e)?.0 as i32;
+    for dx in [0, 12, 24] {
+        legend.draw(&(EmptyElement::at((lx + dx, y)) + jdp_mark((0, 0)))).map_err(e)?;
+    }
+    legend.draw_text("JDP jumping (a mark per output step)", &style, (lx + 40, y)).map_err(e)
+}
+
+/// A mark of a JDP that jumps: a short horizontal bar, 9 px long and 3 px thick, at `at`.
+fn jdp_mark(at: (i32, i32)) -> Rectangle<(i32, i32)> {
+    Rectangle::new([(at.0 - 4, at.1 - 1), (at.0 + 4, at.1 + 1)], BLACK.filled())
 }
 
 /// The map's cells: each time column spans half-way to the neighbouring times; at most

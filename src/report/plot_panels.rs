@@ -83,7 +83,7 @@ fn draw(body: &Area, x_desc: &str, panels: &[Panel]) -> Result<(), String> {
                 }
             }
         }
-        draw_legend(&mut chart, SeriesLabelPosition::UpperRight, 15)?;
+        draw_legend(&mut chart, SeriesLabelPosition::UpperRight, super::plot::text_sizes(1200).0)?;
     }
     Ok(())
 }

@@ -2,6 +2,7 @@
 //! as (broken where it is absent or jumps) — and its drawing, whose legend symbol is drawn
 //! with the line's own stroke ([`Line::swatch`]), so that legend and line always agree.
 
+use super::friction_colour::{HATCH, hatch_segments};
 use super::plot::{Area, Chart, e, font};
 use super::plot_zones::{LegendEntry, Swatch};
 use plotters::element::DashedPathElement;
@@ -76,19 +77,33 @@ pub fn legend_of<'a>(lines: impl IntoIterator<Item = &'a Line>) -> Vec<LegendEnt
     lines.into_iter().map(|l| (l.swatch(), l.label.clone())).collect()
 }
 
-/// Height of a row of a legend strip (px).
-const LEGEND_ROW_H: i32 = 28;
+/// Spacing of the hatching of slipping zones (px).
+pub const HATCH_SPACING: i32 = 10;
 
 /// Draws a legend symbol `len` px long at `(x, y)` (its left end, centred vertically).
 pub fn draw_swatch(area: &Area, swatch: Swatch, (x, y): (i32, i32), len: i32) -> Result<(), String> {
     match swatch {
-        Swatch::Fill(c) => area.draw(&Rectangle::new([(x, y - 8), (x + len, y + 8)], c.filled())),
+        Swatch::Fill(c) => return draw_box(area, c, (x, y), len, false),
+        Swatch::Hatched(c) => return draw_box(area, c, (x, y), len, true),
         Swatch::Line(c, w, false) => area.draw(&PathElement::new(vec![(x, y), (x + len, y)], c.stroke_width(w))),
         Swatch::Line(c, w, true) => {
             area.draw(&DashedPathElement::new(vec![(x, y), (x + len, y)], 8, 5, c.stroke_width(w)))
         }
     }
     .map_err(e)
+}
+
+/// A legend's box: filled, with a thin grey border (light shades stay visible on white), and
+/// hatched when `hatched`.
+fn draw_box(area: &Area, c: RGBColor, (x, y): (i32, i32), len: i32, hatched: bool) -> Result<(), String> {
+    let corners = [(x, y - 9), (x + len, y + 9)];
+    area.draw(&Rectangle::new(corners, c.filled())).map_err(e)?;
+    if hatched {
+        for seg in hatch_segments(corners[0], corners[1], HATCH_SPACING) {
+            area.draw(&PathElement::new(seg.to_vec(), HATCH.stroke_width(2))).map_err(e)?;
+        }
+    }
+    area.draw(&Rectangle::new(corners, RGBColor(150, 150, 150).stroke_width(1))).map_err(e)
 }
 
 /// Draws `legend` as a strip across the top of `area`, in rows that fit between the pixel
@@ -111,9 +126,11 @@ pub fn legend_strip<'b>(
         x += w;
     }
     let rows = if legend.is_empty() { 0 } else { row + 1 };
-    let (strip, plot) = area.split_vertically(6 + LEGEND_ROW_H * rows);
+    // A row holds the text with 6 px above and below it.
+    let row_h = font_px as i32 + 12;
+    let (strip, plot) = area.split_vertically(6 + row_h * rows);
     for (swatch, text, x, row) in placed {
-        let y = 6 + LEGEND_ROW_H * row + LEGEND_ROW_H / 2;
+        let y = 6 + row_h * row + row_h / 2;
         draw_swatch(&strip, swatch, (x, y), 30)?;
         strip.draw_text(text, &label, (x + 38, y + 1)).map_err(e)?;
     }
@@ -146,6 +163,42 @@ pub fn jdp_runs(rows: &[(f64, f64, Option<f64>)], radius_m: f64, jump_deg: f64) 
     runs
 }
 
+/// A piece of the JDP's trace over time: a line where it moves continuously, separate marks
+/// where it jumps from row to row.
+#[derive(Debug, Clone, PartialEq)]
+pub enum JdpPiece {
+    /// Two rows or more in a row over which the JDP moves continuously, `(t, θ)`.
+    Line(Vec<(f64, f64)>),
+    /// Rows each jumped to and away from, `(t, θ)`, drawn as separate marks.
+    Marks(Vec<(f64, f64)>),
+}
+
+/// The JDP's trace cut by [`jdp_runs`]'s rule: each run of two rows or more is a line; the
+/// single rows between jumps are gathered, in order, into marks.
+pub fn jdp_pieces(rows: &[(f64, f64, Option<f64>)], radius_m: f64, jump_deg: f64) -> Vec<JdpPiece> {
+    let mut out: Vec<JdpPiece> = Vec::new();
+    for run in jdp_runs(rows, radius_m, jump_deg) {
+        match (&run[..], out.last_mut()) {
+            ([p], Some(JdpPiece::Marks(marks))) => marks.push(*p),
+            ([_], _) => out.push(JdpPiece::Marks(run)),
+            _ => out.push(JdpPiece::Line(run)),
+        }
+    }
+    out
+}
+
+/// The tolerance of [`jdp_runs`] on a wrap of `wrap_deg` output at `nodes` points: three node
+/// spacings. A JDP that moves continuously is found on the output grid to within half a
+/// spacing at each of two rows (one spacing in their difference); the other two allow its own
+/// motion under a changing load in one output step. Without a grid, `fallback_deg`.
+pub fn jdp_tolerance_deg(wrap_deg: f64, nodes: usize, fallback_deg: f64) -> f64 {
+    if nodes >= 2 && wrap_deg.is_finite() && wrap_deg > 0.0 {
+        3.0 * wrap_deg / (nodes - 1) as f64
+    } else {
+        fallback_deg
+    }
+}
+
 pub(crate) const PALETTE: [RGBColor; 10] = [
     RGBColor(31, 119, 180),
     RGBColor(214, 39, 40),
@@ -162,6 +215,43 @@ pub(crate) const PALETTE: [RGBColor; 10] = [
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_jdp_is_a_line_where_it_moves_and_marks_where_it_jumps() {
+        // At rest (nothing carried) with a tolerance of 3°: a ramp of 1° per row is one line; a
+        // jump of 40° in it makes two lines; values alternating 40° apart are marks only.
+        let rows = |js: &[f64]| -> Vec<(f64, f64, Option<f64>)> {
+            js.iter().enumerate().map(|(i, &j)| (0.1 * i as f64, 0.0, Some(j))).collect()
+        };
+        let ramp: Vec<f64> = (0..10).map(|i| 20.0 + f64::from(i)).collect();
+        let pieces = jdp_pieces(&rows(&ramp), 2.5, 3.0);
+        assert!(matches!(&pieces[..], [JdpPiece::Line(l)] if l.len() == 10), "{pieces:?}");
+        let jump: Vec<f64> = (0..10).map(|i| f64::from(i) + if i < 5 { 20.0 } else { 60.0 }).collect();
+        let pieces = jdp_pieces(&rows(&jump), 2.5, 3.0);
+        assert!(matches!(&pieces[..], [JdpPiece::Line(a), JdpPiece::Line(b)] if a.len() == 5 && b.len() == 5));
+        let alternating: Vec<f64> = (0..10).map(|i| if i % 2 == 0 { 20.0 } else { 60.0 }).collect();
+        let pieces = jdp_pieces(&rows(&alternating), 2.5, 3.0);
+        assert!(matches!(&pieces[..], [JdpPiece::Marks(m)] if m.len() == 10), "{pieces:?}");
+        // Mirrored (θ → α − θ, v → −v, α = 190°): the same pieces, mirrored, in both directions.
+        for js in [&ramp, &jump, &alternating] {
+            let (a, b) = (rows(js), rows(&js.iter().map(|j| 190.0 - j).collect::<Vec<_>>()));
+            let flip = |p: &[JdpPiece]| -> Vec<JdpPiece> {
+                let m = |v: &Vec<(f64, f64)>| v.iter().map(|&(t, j)| (t, 190.0 - j)).collect();
+                p.iter()
+                    .map(|x| match x {
+                        JdpPiece::Line(v) => JdpPiece::Line(m(v)),
+                        JdpPiece::Marks(v) => JdpPiece::Marks(m(v)),
+                    })
+                    .collect()
+            };
+            let (pa, pb) = (jdp_pieces(&a, 2.5, 3.0), jdp_pieces(&b, 2.5, 3.0));
+            assert_eq!(flip(&pa), pb);
+            assert_eq!(flip(&pb), pa);
+        }
+        // Three spacings of a 180° wrap on 181 points: 3°; no grid: the fallback.
+        assert!((jdp_tolerance_deg(180.0, 181, 10.0) - 3.0).abs() < 1e-12);
+        assert_eq!(jdp_tolerance_deg(180.0, 1, 10.0), 10.0);
+    }
 
     #[test]
     fn the_jdp_runs_with_the_pulley_and_breaks_where_it_jumps() {

@@ -1,8 +1,9 @@
 //! wrap_diagram.png: a polar picture of the pulley with the computed state drawn round its
-//! wrap — the rope tension T(θ) as a curve outside the rim (radius 1.15 R at the lowest tension
-//! to 1.55 R at the highest), the
-//! signed friction q(θ) as bands inside it (depth 0.5 |q|/max μn; positive friction in red,
-//! reverse in blue) against the Coulomb limit μn (dashed), and the JDP as a radial line.
+//! wrap — the rope tension T(θ) as a band outside the rim that starts at zero on the rim (its
+//! outer edge at radius R (1 + 0.6 T/T_max), so its width is proportional to T, with a dotted
+//! circle at T_max), the signed friction q(θ) as bands inside it (depth 0.5 |q|/max μn; positive
+//! friction dark red, reverse light blue: [`super::friction_colour`]) against the Coulomb limit
+//! μn (dashed), and the JDP as a radial line.
 //!
 //! Geometry: the wrap is centred on the top of the pulley, θ = 0 (side 1) on the left, θ = α
 //! (side 2) on the right, so a state and its mirror (sides swapped: θ → α − θ, q → −q) give
@@ -10,7 +11,9 @@
 //! positive or reverse where |q| ≥ 0.001 μn, the crossings found by linear interpolation
 //! between the output samples. What is drawn is built first as plain data ([`WrapDiagram`]).
 
-use super::plot::{Area, PlotError, e, font, render};
+use super::figure_size::FigureKind;
+use super::friction_colour::{POSITIVE_END, REVERSE_END};
+use super::plot::{Area, PlotError, e, font, render_sized};
 use super::plot_series::legend_strip;
 use super::plot_zones::{LegendEntry, Swatch};
 use crate::contact::{ARC_THRESHOLD, NodeState};
@@ -21,13 +24,18 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 use std::path::Path;
 
 const TENSION: RGBColor = RGBColor(20, 70, 160);
-const POSITIVE: RGBColor = RGBColor(215, 50, 35);
-const REVERSE: RGBColor = RGBColor(40, 90, 205);
+const POSITIVE: RGBColor = POSITIVE_END;
+const REVERSE: RGBColor = REVERSE_END;
 const LIMIT: RGBColor = RGBColor(110, 110, 110);
+/// The tension band's fill: a neutral grey, apart in hue from the friction bands.
+const BAND: RGBColor = RGBColor(218, 218, 218);
 const JDP: RGBColor = RGBColor(20, 130, 60);
 /// Radius of the rim the friction bands hang from (pulley radius 1).
 const RIM: f64 = 0.96;
 const FRICTION_DEPTH: f64 = 0.5;
+/// Width of the tension band at the highest tension (pulley radii): T = 0 on the rim (radius
+/// 1), T_max at radius 1 + TENSION_WIDTH.
+pub const TENSION_WIDTH: f64 = 0.6;
 
 /// A stretch of the wrap where friction has one sign, with its band (θ in degrees, unit-radius
 /// picture coordinates).
@@ -48,8 +56,11 @@ pub struct FrictionArc {
 pub struct WrapDiagram {
     /// The wrap angle α (deg).
     pub wrap_angle_deg: f64,
-    /// The tension curve, from θ = 0 to α.
+    /// The tension curve, from θ = 0 to α: the outer edge of the band whose inner edge, the
+    /// rim, is T = 0.
     pub tension: Vec<(f64, f64)>,
+    /// The circle (an arc over the wrap) where the band's edge would be at the highest tension.
+    pub tension_max: Vec<(f64, f64)>,
     /// The Coulomb limit μn, from θ = 0 to α.
     pub limit: Vec<(f64, f64)>,
     /// The positive and reverse stretches in +θ order, each with its band.
@@ -184,13 +195,8 @@ pub fn wrap_diagram(dist: &Distribution) -> WrapDiagram {
             at_limit: s.state != NodeState::Stick,
         })
         .collect();
-    let (t_lo, t_hi) = dist
-        .samples
-        .iter()
-        .map(|s| s.tension_n)
-        .filter(|t| t.is_finite())
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), t| (a.min(t), b.max(t)));
-    let t_radius = |t: f64| if t_hi > t_lo { 1.15 + 0.4 * (t - t_lo) / (t_hi - t_lo) } else { 1.35 };
+    let t_hi = dist.samples.iter().map(|s| s.tension_n).filter(|t| t.is_finite()).fold(0.0, f64::max);
+    let t_radius = |t: f64| if t_hi > 0.0 { 1.0 + TENSION_WIDTH * t.max(0.0) / t_hi } else { 1.0 };
     let q_ref = points.iter().map(|p| p.limit.max(p.q.abs())).fold(0.0, f64::max);
     let q_ref = if q_ref > 0.0 { q_ref } else { 1.0 };
     let depth = |q: f64| RIM - FRICTION_DEPTH * (q.abs() / q_ref).min(1.0);
@@ -201,11 +207,12 @@ pub fn wrap_diagram(dist: &Distribution) -> WrapDiagram {
         .map(|s| polar(s.theta_deg.clamp(0.0, alpha), t_radius(s.tension_n), alpha))
         .collect();
     let limit = points.iter().map(|p| polar(p.theta_deg, depth(p.limit), alpha)).collect();
+    let tension_max = (0..=180).map(|i| polar(alpha * f64::from(i) / 180.0, 1.0 + TENSION_WIDTH, alpha)).collect();
     let arcs = friction_arcs(&points, alpha, depth);
     let jdp_deg = dist.jdp_deg.filter(|j| j.is_finite() && (0.0..=alpha).contains(j));
     let end = |s: Option<&crate::wrap::Sample>| s.map_or(f64::NAN, |s| s.tension_n / 1e3);
     let mut legend = vec![
-        (Swatch::Line(TENSION, 3, false), tension_label(t_lo, t_hi)),
+        (Swatch::Line(TENSION, 3, false), tension_label(t_hi)),
         (Swatch::Line(LIMIT, 2, true), "Coulomb limit μn (depth inside the rim)".to_string()),
     ];
     if arcs.iter().any(|a| a.positive) {
@@ -218,6 +225,7 @@ pub fn wrap_diagram(dist: &Distribution) -> WrapDiagram {
     WrapDiagram {
         wrap_angle_deg: alpha,
         tension,
+        tension_max,
         limit,
         arcs,
         jdp_deg,
@@ -226,24 +234,25 @@ pub fn wrap_diagram(dist: &Distribution) -> WrapDiagram {
     }
 }
 
-/// The tension curve's legend: its radial scale, from the lowest to the highest tension.
-fn tension_label(t_lo: f64, t_hi: f64) -> String {
-    if t_hi > t_lo {
-        format!("tension T: radius 1.15 R at {:.1} kN to 1.55 R at {:.1} kN", t_lo / 1e3, t_hi / 1e3)
+/// The tension band's legend: its zero and its scale.
+fn tension_label(t_hi: f64) -> String {
+    if t_hi > 0.0 && t_hi.is_finite() {
+        format!("tension T: rim = 0, {:.1} R = {:.1} kN (dotted)", 1.0 + TENSION_WIDTH, t_hi / 1e3)
     } else {
-        "tension T (uniform)".to_string()
+        "tension T".to_string()
     }
 }
 
 /// Draws wrap_diagram.png of `dist` at `path`.
 pub fn plot_wrap_diagram(path: &Path, title: &str, dist: &Distribution) -> Result<(), PlotError> {
     let diagram = wrap_diagram(dist);
-    render(path, (1000, 1000), title, |body| draw(body, &diagram))
+    let kind = FigureKind::WrapDiagram;
+    render_sized(path, (kind.width_px(), kind.width_px()), kind.title_px(), title, |body| draw(body, &diagram))
 }
 
 fn draw(body: &Area, d: &WrapDiagram) -> Result<(), String> {
     let (w, _) = body.dim_in_pixel();
-    let plot = legend_strip(body, &d.legend, (24, w as i32 - 24), 16)?;
+    let plot = legend_strip(body, &d.legend, (24, w as i32 - 24), FigureKind::WrapDiagram.text_px())?;
     let (pw, ph) = plot.dim_in_pixel();
     let half_h = 1.0;
     let half_w = half_h * f64::from(pw) / f64::from(ph.max(1));
@@ -262,15 +271,21 @@ fn draw(body: &Area, d: &WrapDiagram) -> Result<(), String> {
     area.draw(&PathElement::new(circle(1.0), RGBColor(120, 120, 120).stroke_width(2))).map_err(e)?;
     for arc in &d.arcs {
         let color = if arc.positive { POSITIVE } else { REVERSE };
-        area.draw(&Polygon::new(arc.polygon.clone(), color.mix(0.8).filled())).map_err(e)?;
+        area.draw(&Polygon::new(arc.polygon.clone(), color.filled())).map_err(e)?;
     }
+    // The tension band: from the rim (T = 0) out to the curve, the ends closed along the radii.
+    let rim: Vec<(f64, f64)> =
+        (0..=180).map(|i| polar(d.wrap_angle_deg * f64::from(i) / 180.0, 1.0, d.wrap_angle_deg)).collect();
+    let band: Vec<(f64, f64)> = d.tension.iter().copied().chain(rim.into_iter().rev()).collect();
+    area.draw(&Polygon::new(band, BAND.filled())).map_err(e)?;
+    area.draw(&DashedPathElement::new(d.tension_max.clone(), 3, 5, TENSION.stroke_width(1))).map_err(e)?;
     area.draw(&DashedPathElement::new(d.limit.clone(), 8, 5, LIMIT.stroke_width(2))).map_err(e)?;
     area.draw(&PathElement::new(d.tension.clone(), TENSION.stroke_width(3))).map_err(e)?;
     draw_ends(&chart, d)?;
     if let Some(j) = d.jdp_deg {
         let (a, b) = (polar(j, 0.25, d.wrap_angle_deg), polar(j, 1.62, d.wrap_angle_deg));
         area.draw(&PathElement::new(vec![a, b], JDP.stroke_width(3))).map_err(e)?;
-        let style = font(17).color(&JDP).pos(Pos::new(HPos::Center, VPos::Center));
+        let style = font(FigureKind::WrapDiagram.text_px()).color(&JDP).pos(Pos::new(HPos::Center, VPos::Center));
         let label =
             EmptyElement::at(polar(j, 1.74, d.wrap_angle_deg)) + Text::new(format!("JDP {j:.1}°"), (0, 0), style);
         area.draw(&label).map_err(e)?;
@@ -292,10 +307,11 @@ fn draw_ends(chart: &super::plot::Chart, d: &WrapDiagram) -> Result<(), String> 
         let q = (p.0 + 1.1 * dir.0, p.1 + 1.1 * dir.1);
         area.draw(&PathElement::new(vec![p, q], TENSION.stroke_width(3))).map_err(e)?;
         let h = if s > 0.0 { HPos::Right } else { HPos::Left };
-        let style = font(17).color(&BLACK).pos(Pos::new(h, VPos::Top));
+        let px = FigureKind::WrapDiagram.text_px();
+        let style = font(px).color(&BLACK).pos(Pos::new(h, VPos::Top));
         let label = EmptyElement::at(q)
             + Text::new(name.to_string(), (-8 * s as i32, 6), style.clone())
-            + Text::new(format!("T = {t_kn:.1} kN"), (-8 * s as i32, 28), style);
+            + Text::new(format!("T = {t_kn:.1} kN"), (-8 * s as i32, 12 + px as i32), style);
         area.draw(&label).map_err(e)?;
     }
     Ok(())
@@ -368,6 +384,20 @@ mod tests {
         assert!(
             d.legend.iter().any(|l| l.1 == "positive friction") && d.legend.iter().any(|l| l.1 == "reverse friction")
         );
+    }
+
+    #[test]
+    fn the_tension_band_starts_at_zero_on_the_rim() {
+        // cosine(): T = 200 kN + 1 kN/deg · θ over 180°, so T_max = 380 kN at θ = α. The band's
+        // edge is at R (1 + 0.6 T/T_max): 1 + 0.6 · 200/380 = 1.315789… at θ = 0, 1.6 at θ = α;
+        // halfway, 1 + 0.6 · 290/380 = 1.457895. T = 0 would sit on the rim, radius 1.
+        let d = wrap_diagram(&cosine(100, false));
+        let r = |p: (f64, f64)| p.0.hypot(p.1);
+        assert!((r(d.tension[0]) - (1.0 + 0.6 * 200.0 / 380.0)).abs() < 1e-12);
+        assert!((r(d.tension[50]) - (1.0 + 0.6 * 290.0 / 380.0)).abs() < 1e-12);
+        assert!((r(d.tension[100]) - 1.6).abs() < 1e-12);
+        assert!(d.tension_max.iter().all(|p| (r(*p) - 1.6).abs() < 1e-12));
+        assert!(d.legend[0].1.contains("T = 0") && d.legend[0].1.contains("380.0 kN"), "{}", d.legend[0].1);
     }
 
     #[test]

@@ -4,6 +4,7 @@
 //! load change, on a rigid lining) is *at the Coulomb limit*; only where the rope moves
 //! relative to the lining ([`crate::wrap::Sample::sliding`]) is it *slipping*.
 
+use super::friction_colour::zone_color;
 use crate::contact::NodeState;
 use crate::wrap::{Distribution, Zone};
 use plotters::style::RGBColor;
@@ -15,6 +16,8 @@ pub enum Swatch {
     Line(RGBColor, u32, bool),
     /// A filled box (a shaded zone or band).
     Fill(RGBColor),
+    /// A filled box with diagonal hatching over it (a zone where the rope slides).
+    Hatched(RGBColor),
 }
 
 /// A legend entry: its symbol, drawn as the series is, and its label.
@@ -48,14 +51,16 @@ impl ZoneKind {
         }
     }
 
-    /// Light shades at the limit, stronger ones where the rope slides.
+    /// The shade of the friction's sign ([`zone_color`]: darker red for positive, lighter
+    /// blue for reverse), the same whether the rope slides or not.
     pub fn color(self) -> RGBColor {
-        match self {
-            ZoneKind::PositiveAtLimit => RGBColor(255, 228, 205),
-            ZoneKind::PositiveSlipping => RGBColor(250, 175, 130),
-            ZoneKind::ReverseAtLimit => RGBColor(214, 232, 255),
-            ZoneKind::ReverseSlipping => RGBColor(140, 185, 245),
-        }
+        zone_color(matches!(self, ZoneKind::PositiveAtLimit | ZoneKind::PositiveSlipping))
+    }
+
+    /// The legend symbol: the shade, hatched where the rope slides (hatching, not a stronger
+    /// colour, so that sign and sliding stay apart in greyscale).
+    pub fn swatch(self) -> Swatch {
+        if self.slipping() { Swatch::Hatched(self.color()) } else { Swatch::Fill(self.color()) }
     }
 
     /// Whether the rope slides on the lining in this kind of zone.
@@ -116,7 +121,7 @@ pub fn shade_legend(shades: &[ZoneShade]) -> Vec<LegendEntry> {
     ZoneKind::ALL
         .into_iter()
         .filter(|k| shades.iter().any(|s| s.kind == *k))
-        .map(|k| (Swatch::Fill(k.color()), k.label().to_string()))
+        .map(|k| (k.swatch(), k.label().to_string()))
         .collect()
 }
 

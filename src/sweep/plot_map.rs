@@ -5,7 +5,7 @@
 use super::csv::SweepRow;
 use super::labels::{factor, key_label};
 use crate::report::plot::{Area, e, font, tick_format};
-use crate::report::plot_colorbar::{BAR_AREA_W, ColourBar, draw_colour_bar};
+use crate::report::plot_colorbar::{BAR_AREA_W, BAR_TOP_PX, ColourBar, draw_colour_bar};
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
@@ -107,6 +107,7 @@ pub(super) fn draw_map(body: &Area, (k1, k2): (&str, &str), rows: &[SweepRow], s
     let (y0, y1) = (ye[0].min(ye[ye.len() - 1]), ye[0].max(ye[ye.len() - 1]));
     let mut chart = ChartBuilder::on(&plot)
         .margin(14)
+        .margin_top(BAR_TOP_PX)
         .x_label_area_size(52)
         .y_label_area_size(110)
         .build_cartesian_2d(x0..x1, y0..y1)
@@ -142,7 +143,7 @@ pub(super) fn draw_map(body: &Area, (k1, k2): (&str, &str), rows: &[SweepRow], s
             area.draw(&PathElement::new(seg.to_vec(), style)).map_err(e)?;
         }
     }
-    draw_colour_bar(&bar_area, &safety_bar(min_hi, top), 14, 66)?;
+    draw_colour_bar(&bar_area, &safety_bar(min_hi, top), BAR_TOP_PX, 66)?;
     contour_legend(&legend, min_hi)
 }
 

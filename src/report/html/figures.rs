@@ -6,6 +6,7 @@
 
 use super::{Context, by_hand, esc};
 use crate::planner::Level;
+use crate::report::figure_size::FigureKind;
 use base64::Engine;
 use std::fmt::Write;
 use std::io;
@@ -14,19 +15,19 @@ use std::io;
 pub const FIGURES: [(&str, &str); 4] = [
     (
         "distribution.png",
-        "Tension T(θ) and friction q(θ) within its Coulomb bounds ±μn over the wrap: read where friction is positive or reverse, which arcs are at the Coulomb limit (light) or slipping (strong), and the demarcation point (JDP).",
+        "Tension T(θ) and friction q(θ) within its Coulomb bounds ±μn over the wrap: read where friction is positive (dark red shade) or reverse (light blue shade) at the Coulomb limit, hatched where the rope slips, and the demarcation point (JDP).",
     ),
     (
         "wrap_diagram.png",
-        "The pulley with the same state drawn round its wrap: tension outside the rim, positive (red) and reverse (blue) friction inside it against the dashed Coulomb limit, the JDP as a radial line.",
+        "The pulley with the same state drawn round its wrap: tension as a band outside the rim, from T = 0 on the rim to 1.6 R at the highest tension (dotted circle), positive (dark red) and reverse (light blue) friction inside it against the dashed Coulomb limit, the JDP as a radial line.",
     ),
     (
         "history.png",
-        "End tensions, the positive and reverse arcs with the JDP (a new line where it jumps), and the anti-slip safety factor against the minimum that applies (static at rest, dynamic in motion), values above the axis marked off scale.",
+        "End tensions, the positive and reverse arcs with the JDP (a line where it moves with the rope or the load, dots where it jumps), and the anti-slip safety factor against the minimum that applies (static at rest, dynamic in motion), values above the axis marked off scale.",
     ),
     (
         "wrap_map.png",
-        "Friction utilization |q|/μn over time (across) and the wrap (θ, up), signed by the friction's direction as its colour bar shows; the JDP in black, a new line where it jumps: read how the pattern moves round the wrap.",
+        "Friction utilization |q|/μn over time (across) and the wrap (θ, up), signed by the friction's direction as its colour bar shows (positive dark red, reverse light blue, none near-white; the two apart in greyscale too); the JDP in black, a line where it moves continuously and a short mark per output step where it jumps: read how the pattern moves round the wrap.",
     ),
 ];
 
@@ -84,7 +85,8 @@ fn figure(out: &mut String, ctx: &Context, n: usize, f: &Figure) -> io::Result<(
         if f.decides.is_empty() { String::new() } else { format!(" Governing case of: {}.", f.decides.join("; ")) };
     let _ = writeln!(
         out,
-        "<figure class=\"half\"><img alt=\"{}\" src=\"data:image/png;base64,{data}\"><figcaption><b>Figure {n}.</b> {} — {}{}{}</figcaption></figure>",
+        "<figure class=\"half\"><img class=\"fig-{}\" alt=\"{}\" src=\"data:image/png;base64,{data}\"><figcaption><b>Figure {n}.</b> {} — {}{}{}</figcaption></figure>",
+        FigureKind::of_file(f.file).unwrap_or(FigureKind::Panels).css_name(),
         esc(&format!("{}/{}", s.name, f.file)),
         esc(&s.name),
         esc(f.caption),

@@ -17,7 +17,7 @@ mod inputs;
 mod keys;
 mod sections;
 mod software;
-mod style;
+pub(crate) mod style;
 
 use super::accuracy::Evidence;
 use crate::design::Design;
@@ -107,10 +107,11 @@ pub fn render(ctx: &Context) -> std::io::Result<String> {
     let mut out = String::new();
     let _ = write!(
         out,
-        "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>{}</title>\n<style>{}{}</style></head><body>\n",
+        "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>{}</title>\n<style>{}{}{}</style></head><body>\n",
         esc(&title),
         style::CSS,
-        style::figure_css()
+        style::figure_css(),
+        crate::report::figure_size::print_css()
     );
     let verdict = if ctx.run.all_checks_pass() { "ALL CHECKS PASS" } else { "SOME CHECKS FAIL" };
     let _ = writeln!(

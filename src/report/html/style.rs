@@ -9,7 +9,7 @@ pub const PAGE_TEXT_HEIGHT_MM: f64 = 297.0 - 16.0 - 18.0;
 /// The largest printed height of a figure's image, so that two figures with their captions fit
 /// one page: 2 × (100 mm + a caption of up to 5 lines of 8 pt ≈ 18 mm + 4 mm of spacing)
 /// = 244 mm ≤ [`PAGE_TEXT_HEIGHT_MM`] (263 mm).
-pub const FIGURE_MAX_HEIGHT_MM: f64 = 100.0;
+pub const FIGURE_MAX_HEIGHT_MM: f64 = crate::report::figure_size::FIGURE_MAX_HEIGHT_MM;
 
 /// The room a figure's caption and spacing take beside its image (mm), see
 /// [`FIGURE_MAX_HEIGHT_MM`].
@@ -21,7 +21,7 @@ const _: () = assert!(2.0 * (FIGURE_MAX_HEIGHT_MM + CAPTION_ROOM_MM) <= PAGE_TEX
 /// The rules that print each figure at most [`FIGURE_MAX_HEIGHT_MM`] high, its proportions kept.
 pub fn figure_css() -> String {
     format!(
-        "@media print {{\n  figure.half {{ margin: 2mm 0; }}\n  figure.half img {{ max-height: {FIGURE_MAX_HEIGHT_MM}mm; width: auto; max-width: 100%; object-fit: contain; }}\n  figure.half figcaption {{ font-size: 8pt; }}\n}}\n"
+        "@media print {{\n  figure.half {{ margin: 2mm 0; }}\n  figure.half img {{ max-height: {FIGURE_MAX_HEIGHT_MM}mm; width: auto; max-width: 100%; object-fit: contain; }}\n  figure.half figcaption {{ font-size: 8pt; }}\n  figure.half img.fig-history {{ max-height: none; }}\n}}\n"
     )
 }
 

@@ -214,6 +214,8 @@ fn document() -> Table {
             Key::new("author", Text, "", "who wrote the calculation"),
             Key::new("checker", Text, "", "who checked it"),
             Key::new("date", TextOrDate, "", "date of issue, as written (a TOML date or a text)"),
+            Key::new("appendix_figures", Bool, "", "whether report.html ends with the appendix of further figures")
+                .default(D::Bool(true)),
         ],
     )
 }
