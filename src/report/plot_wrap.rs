@@ -237,7 +237,7 @@ pub fn wrap_diagram(dist: &Distribution) -> WrapDiagram {
 /// The tension band's legend: its zero and its scale.
 fn tension_label(t_hi: f64) -> String {
     if t_hi > 0.0 && t_hi.is_finite() {
-        format!("tension T: rim = 0, {:.1} R = {:.1} kN (dotted)", 1.0 + TENSION_WIDTH, t_hi / 1e3)
+        format!("tension T: rim at T = 0, {:.1} R at {:.1} kN (dotted)", 1.0 + TENSION_WIDTH, t_hi / 1e3)
     } else {
         "tension T".to_string()
     }
