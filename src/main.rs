@@ -34,6 +34,20 @@ enum Command {
     Merge(MergeArgs),
     /// Run time against error of every level on fixed cases; writes bench.csv, scaling.csv, bench.png.
     Bench(BenchArgs),
+    /// Write a commented template sheet that runs as written (kinds: tower-cage, ground-skips).
+    New(NewArgs),
+}
+
+#[derive(clap::Args)]
+struct NewArgs {
+    /// The template (without one, the kinds are listed).
+    kind: Option<String>,
+    /// Write it to this file instead of printing it; an existing file is kept unless --force.
+    #[arg(long)]
+    out: Option<PathBuf>,
+    /// Replace an existing --out file.
+    #[arg(long)]
+    force: bool,
 }
 
 #[derive(clap::Args)]
@@ -251,7 +265,23 @@ fn execute(cli: Cli) -> anyhow::Result<bool> {
         }
         Command::Sweep(args) => sweep_command(args).map(|()| true),
         Command::Merge(args) => merge_command(args).map(|()| true),
+        Command::New(args) => new_command(args).map(|()| true),
     }
+}
+
+/// `wrapcalc new`: a template sheet on stdout or in `--out`; no kind lists them (exit 0).
+fn new_command(args: NewArgs) -> anyhow::Result<()> {
+    use sheet::templates;
+    let Some(kind) = args.kind.as_deref() else {
+        print!("wrapcalc new KIND [--out FILE] [--force]; the kinds are:\n{}", templates::listing());
+        return Ok(());
+    };
+    let template = templates::find(Some(kind))?;
+    match &args.out {
+        Some(out) => templates::write(template, out, args.force)?,
+        None => print!("{}", template.text),
+    }
+    Ok(())
 }
 
 /// `wrapcalc bench`: the run-time-against-error report (or, with the hidden `--probe`, one

@@ -18,6 +18,7 @@ mod raw;
 mod requirements;
 mod rules;
 mod scene;
+pub mod templates;
 mod track;
 mod validate;
 
