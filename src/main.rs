@@ -259,7 +259,8 @@ fn execute(cli: Cli) -> anyhow::Result<bool> {
             let design = sheet::load(&args.sheet)?;
             let scenes: Vec<&Scene> = design.scenes.iter().collect();
             let options = Options { request: Request::ChecksOnly, ..Options::default() };
-            let result = run::run_all(&design, &scenes, options)?;
+            let result =
+                run::run_all(&design, &scenes, options).map_err(|e| anyhow::anyhow!("{}: {e}", design.sheet))?;
             print_result(&design, &result, args.format, false);
             Ok(result.all_checks_pass())
         }

@@ -20,6 +20,7 @@ mod rules;
 mod scene;
 pub mod templates;
 mod track;
+mod travel;
 mod validate;
 
 pub use diag::{Diagnostic, SheetError};
