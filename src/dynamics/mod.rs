@@ -287,8 +287,11 @@ impl HoistParams {
         positive("the side-2 end mass ([hoist] conveyance2_kg)", self.side2_mass_kg)?;
         positive(SIDE1_START, self.side1_length0_m)?;
         positive(SIDE2_START, self.side2_length0_m)?;
-        non_negative(TAIL1_START, self.tail1_length0_m)?;
-        non_negative(TAIL2_START, self.tail2_length0_m)?;
+        // Without tail ropes their lengths do not matter (a lowering trip moves them below 0).
+        if self.tail_ropes > 0 {
+            non_negative(TAIL1_START, self.tail1_length0_m)?;
+            non_negative(TAIL2_START, self.tail2_length0_m)?;
+        }
         positive("g_m_s2", self.g_m_s2)
     }
 
