@@ -36,6 +36,20 @@ enum Command {
     Bench(BenchArgs),
     /// Print the design sheet's JSON Schema (for TOML editors), or with --markdown its key reference.
     Schema(SchemaArgs),
+    /// Write a commented template sheet that runs as written (kinds: tower-cage, ground-skips).
+    New(NewArgs),
+}
+
+#[derive(clap::Args)]
+struct NewArgs {
+    /// The template (without one, the kinds are listed).
+    kind: Option<String>,
+    /// Write it to this file instead of printing it; an existing file is kept unless --force.
+    #[arg(long)]
+    out: Option<PathBuf>,
+    /// Replace an existing --out file.
+    #[arg(long)]
+    force: bool,
 }
 
 #[derive(clap::Args)]
@@ -269,14 +283,31 @@ fn execute(cli: Cli) -> anyhow::Result<bool> {
             let design = sheet::load(&args.sheet)?;
             let scenes: Vec<&Scene> = design.scenes.iter().collect();
             let options = Options { request: Request::ChecksOnly, ..Options::default() };
-            let result = run::run_all(&design, &scenes, options)?;
+            let result =
+                run::run_all(&design, &scenes, options).map_err(|e| anyhow::anyhow!("{}: {e}", design.sheet))?;
             print_result(&design, &result, args.format, false);
             Ok(result.all_checks_pass())
         }
         Command::Sweep(args) => sweep_command(args).map(|()| true),
         Command::Merge(args) => merge_command(args).map(|()| true),
         Command::Schema(args) => schema_command(args).map(|()| true),
+        Command::New(args) => new_command(args).map(|()| true),
     }
+}
+
+/// `wrapcalc new`: a template sheet on stdout or in `--out`; no kind lists them (exit 0).
+fn new_command(args: NewArgs) -> anyhow::Result<()> {
+    use sheet::templates;
+    let Some(kind) = args.kind.as_deref() else {
+        print!("wrapcalc new KIND [--out FILE] [--force]; the kinds are:\n{}", templates::listing());
+        return Ok(());
+    };
+    let template = templates::find(Some(kind))?;
+    match &args.out {
+        Some(out) => templates::write(template, out, args.force)?,
+        None => print!("{}", template.text),
+    }
+    Ok(())
 }
 
 /// `wrapcalc bench`: the run-time-against-error report (or, with the hidden `--probe`, one

@@ -177,7 +177,10 @@ pub enum DynamicsError {
         accel_end_m_s2: f64,
     },
     /// A side's hanging rope length would be zero or negative.
-    #[error("hanging length of {side} is {length_m} m (must be > 0) at x = {x_m} m{}", at_time(*.t_s))]
+    #[error("the rope hanging on {side} would be {} m long (must be > 0) after {} m of pulley travel (side 1 \
+         upward positive) from the start of the trip{}: the [hoist] lengths (the hanging lengths at the start of a \
+         lift, conveyance 1 at the bottom) do not allow the travel of the motion profile's [[hoist.stage]] list or of \
+         its emergency stop", show_m(*.length_m), show_m(*.x_m), at_time(*.t_s))]
     HangingLength {
         /// The side.
         side: Side,
@@ -189,7 +192,10 @@ pub enum DynamicsError {
         t_s: Option<f64>,
     },
     /// A side's tail rope length would be negative.
-    #[error("tail rope length below {side} is {length_m} m (must be ≥ 0) at x = {x_m} m{}", at_time(*.t_s))]
+    #[error("the tail rope below the conveyance of {side} would be {} m long (must be ≥ 0) after {} m of pulley \
+         travel (side 1 upward positive) from the start of the trip{}: the [hoist] tail lengths (at the start of a \
+         lift, conveyance 1 at the bottom) do not allow the travel of the motion profile's [[hoist.stage]] list or \
+         of its emergency stop", show_m(*.length_m), show_m(*.x_m), at_time(*.t_s))]
     TailLength {
         /// The side.
         side: Side,
@@ -233,8 +239,26 @@ pub enum DynamicsError {
     },
 }
 
+/// The side-1 hanging length at a trip's start, in the sheet's words.
+const SIDE1_START: &str = "the side-1 hanging length at the start of the trip ([hoist] side1_length_m, the length at the \
+                           start of a lift with conveyance 1 at the bottom, less the lift's travel for a lowering trip)";
+/// The side-2 hanging length at a trip's start, in the sheet's words.
+const SIDE2_START: &str = "the side-2 hanging length at the start of the trip ([hoist] side2_length_m, the length at the \
+                           start of a lift with conveyance 1 at the bottom, plus the lift's travel for a lowering trip)";
+/// The tail below conveyance 1 at a trip's start, in the sheet's words.
+const TAIL1_START: &str = "the tail rope below conveyance 1 at the start of the trip ([hoist] tail1_length_m, at the start \
+                           of a lift with conveyance 1 at the bottom, plus the lift's travel for a lowering trip)";
+/// The tail below conveyance 2 at a trip's start, in the sheet's words.
+const TAIL2_START: &str = "the tail rope below conveyance 2 at the start of the trip ([hoist] tail2_length_m, at the start \
+                           of a lift with conveyance 1 at the bottom, less the lift's travel for a lowering trip)";
+
+/// A length in a message: to the millimetre.
+fn show_m(x: f64) -> f64 {
+    (x * 1e3).round() / 1e3
+}
+
 fn at_time(t_s: Option<f64>) -> String {
-    t_s.map(|t| format!(", t = {t} s")).unwrap_or_default()
+    t_s.map(|t| format!(" (t = {} s)", show_m(t))).unwrap_or_default()
 }
 
 pub(crate) fn finite(name: &'static str, value: f64) -> Result<f64, DynamicsError> {
@@ -254,17 +278,20 @@ fn non_negative(name: &'static str, value: f64) -> Result<(), DynamicsError> {
 impl HoistParams {
     /// Checks every value: counts, masses, stiffness, lengths at x = 0 and g.
     pub fn validate(&self) -> Result<(), DynamicsError> {
-        positive("ropes", self.ropes as f64)?;
-        positive("rope_mass_per_m_kg", self.rope_mass_per_m_kg)?;
-        positive("rope_ea_n", self.rope_ea_n)?;
-        non_negative("damping_ratio", self.damping_ratio)?;
-        non_negative("tail_mass_per_m_kg", self.tail_mass_per_m_kg)?;
-        positive("side1_mass_kg", self.side1_mass_kg)?;
-        positive("side2_mass_kg", self.side2_mass_kg)?;
-        positive("side1_length0_m", self.side1_length0_m)?;
-        positive("side2_length0_m", self.side2_length0_m)?;
-        non_negative("tail1_length0_m", self.tail1_length0_m)?;
-        non_negative("tail2_length0_m", self.tail2_length0_m)?;
+        positive("[rope] count", self.ropes as f64)?;
+        positive("[rope] mass_per_m_kg", self.rope_mass_per_m_kg)?;
+        positive("[rope] ea_n", self.rope_ea_n)?;
+        non_negative("[hoist] rope_damping_ratio", self.damping_ratio)?;
+        non_negative("[hoist] tail_mass_per_m_kg", self.tail_mass_per_m_kg)?;
+        positive("the side-1 end mass ([hoist] conveyance1_kg and the scene's payload_kg)", self.side1_mass_kg)?;
+        positive("the side-2 end mass ([hoist] conveyance2_kg)", self.side2_mass_kg)?;
+        positive(SIDE1_START, self.side1_length0_m)?;
+        positive(SIDE2_START, self.side2_length0_m)?;
+        // Without tail ropes their lengths do not matter (a lowering trip moves them below 0).
+        if self.tail_ropes > 0 {
+            non_negative(TAIL1_START, self.tail1_length0_m)?;
+            non_negative(TAIL2_START, self.tail2_length0_m)?;
+        }
         positive("g_m_s2", self.g_m_s2)
     }
 
@@ -311,9 +338,11 @@ impl HoistParams {
     pub(crate) fn side_at(&self, side: Side, x_m: f64, t_s: Option<f64>) -> Result<(f64, f64), DynamicsError> {
         let (length_m, tail_m) = (self.hanging_length_m(side, x_m), self.tail_length_m(side, x_m));
         // The usual case in one test (it runs at every time step): x finite, the hanging length
-        // positive and finite, the tail's not negative and finite (NaN fails every comparison).
+        // positive and finite, the tail's not negative and finite (NaN fails every comparison);
+        // without tail ropes their length does not matter.
         let finite_below = |v: f64| v < f64::INFINITY;
-        if x_m.is_finite() && length_m > 0.0 && finite_below(length_m) && tail_m >= 0.0 && finite_below(tail_m) {
+        let tail_ok = self.tail_ropes == 0 || (tail_m >= 0.0 && finite_below(tail_m));
+        if x_m.is_finite() && length_m > 0.0 && finite_below(length_m) && tail_ok {
             return Ok((length_m, self.end_mass_kg(side, x_m)));
         }
         Err(self.side_error(side, x_m, t_s))
@@ -322,7 +351,7 @@ impl HoistParams {
     /// Why [`Self::side_at`] fails: x not finite, else the hanging length, else the tail's.
     #[cold]
     fn side_error(&self, side: Side, x_m: f64, t_s: Option<f64>) -> DynamicsError {
-        if let Err(e) = finite("x_m", x_m) {
+        if let Err(e) = finite("the pulley's travel", x_m) {
             return e;
         }
         let length_m = self.hanging_length_m(side, x_m);

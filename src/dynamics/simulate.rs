@@ -142,7 +142,10 @@ pub(super) fn coeffs(
 /// ([`step_count`]): the lengths are linear in the travel, so they hold between, unchecked.
 fn coeffs_within(p: &HoistParams, side: Side, n: usize, x_m: f64, accel_m_s2: f64) -> Coeffs {
     let (length_m, end_mass_kg) = (p.hanging_length_m(side, x_m), p.end_mass_kg(side, x_m));
-    debug_assert!(length_m > 0.0 && p.tail_length_m(side, x_m) >= 0.0, "a length beyond the profile's checks");
+    debug_assert!(
+        length_m > 0.0 && (p.tail_ropes == 0 || p.tail_length_m(side, x_m) >= 0.0),
+        "a length beyond the profile's checks"
+    );
     let a_s = side.down_sign() * accel_m_s2;
     Coeffs::new(p, n, length_m, end_mass_kg, p.g_m_s2 - a_s, damping_coefficient_s(p, length_m, end_mass_kg))
 }
@@ -354,7 +357,10 @@ fn step_count(p: &HoistParams, profile: &MotionProfile, opt: &SimOptions) -> Res
         return Err(DynamicsError::NoElements);
     }
     for (k, off) in opt.initial_offset_m.iter().enumerate() {
-        super::finite(if k == 0 { "initial_offset_m[0]" } else { "initial_offset_m[1]" }, *off)?;
+        super::finite(
+            if k == 0 { "the initial rope offset of side 1" } else { "the initial rope offset of side 2" },
+            *off,
+        )?;
     }
     for t in profile.x_extreme_times() {
         let x = profile.at(t).x_m;

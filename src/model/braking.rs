@@ -164,9 +164,11 @@ pub fn rigid_stop(
     let mut out = vec![(at_s, Kinematics { accel_m_s2: accel(at_s, start.x_m)?, ..start })];
     let (mut t, mut x, mut v) = (at_s, start.x_m, start.speed_m_s);
     let no_stop = || BrakeError::NoStop { at_s, force_n: brake.force_n, unbalance_n: unbalance(start.x_m).abs() };
-    // Within the travel: every hanging and tail length positive.
+    // Within the travel: every hanging length positive, every tail's too (when there are tails).
     let in_shaft = |x: f64| {
-        Side::BOTH.iter().all(|&side| params.hanging_length_m(side, x) > 0.0 && params.tail_length_m(side, x) >= 0.0)
+        Side::BOTH.iter().all(|&side| {
+            params.hanging_length_m(side, x) > 0.0 && (params.tail_ropes == 0 || params.tail_length_m(side, x) >= 0.0)
+        })
     };
     while t - at_s < MAX_STOP_S {
         if !in_shaft(x) {

@@ -16,6 +16,10 @@ use crate::model::level4::{self, Level4Error, RopeRun};
 use crate::model::stop;
 use crate::planner::{Level, Plan};
 
+/// What a level-0 run of a scene with `track_*` keys leaves out, appended to its level reason.
+pub const SKIPPED_TRACKS: &str = "; skipped: track_* (rope elements followed through the wrap need the wrap \
+                                  model, level 2 or more; `run` without --level 0 follows them)";
+
 /// A history scene; with `spare_core` its rows' summaries may run on another thread.
 pub(super) fn run_history(
     design: &Design,
@@ -279,7 +283,12 @@ fn run_samples(
     result.worst = level0::worst_instant(design, &states);
     if result.plan.level < Level::Rigid2 {
         if scene.tracks.is_some() {
-            return Err(RunError::TracksBelowLevel2 { scene: scene.name.clone(), level: result.plan.level });
+            if result.plan.level != Level::Closed0 {
+                return Err(RunError::TracksBelowLevel2 { scene: scene.name.clone(), level: result.plan.level });
+            }
+            // Level 0 is checks only: the scene's checks stand, the followed rope elements
+            // (which need the wrap model) are left out and the reason says so.
+            result.plan.reason.push_str(SKIPPED_TRACKS);
         }
         return Ok((result, Vec::new()));
     }

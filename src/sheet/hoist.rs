@@ -25,6 +25,7 @@ const RATIO: Rule = Rule { ok: |x| (0.0..1.0).contains(&x), allowed: "a damping 
 pub(super) fn hoist(c: &mut Collector, h: &Spanned<RawHoist>) -> Option<Hoist> {
     let span = h.span();
     let at = At { scene: None, section: "hoist", table_span: &span };
+    let spanned = h;
     let h = h.get_ref();
     let conveyance1_kg = required(c, at, "conveyance1_kg", &h.conveyance1_kg, POSITIVE);
     let conveyance2_kg = required(c, at, "conveyance2_kg", &h.conveyance2_kg, POSITIVE);
@@ -67,7 +68,7 @@ pub(super) fn hoist(c: &mut Collector, h: &Spanned<RawHoist>) -> Option<Hoist> {
             stages.into_iter().collect()
         }
     };
-    Some(Hoist {
+    let hoist = Hoist {
         conveyance1_kg: conveyance1_kg?,
         conveyance2_kg: conveyance2_kg?,
         rope_damping_ratio: rope_damping_ratio?,
@@ -78,7 +79,9 @@ pub(super) fn hoist(c: &mut Collector, h: &Spanned<RawHoist>) -> Option<Hoist> {
         tail1_length_m: tail1_length_m?,
         tail2_length_m: tail2_length_m?,
         stages: stages?,
-    })
+    };
+    super::travel::check(c, spanned, &hoist);
+    Some(hoist)
 }
 
 fn stage(c: &mut Collector, i: usize, s: &Spanned<RawStage>) -> Option<MotionStage> {
@@ -165,6 +168,12 @@ pub(super) fn duty_cycle(
         && let Some(message) = emergency_at_rest(hoist, stop.at_s, return_after_s.flatten())
     {
         c.push(Some(t.span()), at.scene, &at.key("emergency_stop_s"), message);
+        return None;
+    }
+    if let (Some(Some(stop)), Some(d), Some(direction)) = (&emergency, &raw.emergency_decel_m_s2, direction)
+        && let Some(message) = super::travel::emergency_overrun(hoist, direction, return_after_s.flatten(), stop)
+    {
+        c.push(Some(d.span()), at.scene, &at.key("emergency_decel_m_s2"), message);
         return None;
     }
     if !foreign_ok {

@@ -21,7 +21,9 @@ mod requirements;
 mod rules;
 mod scene;
 mod schema;
+pub mod templates;
 mod track;
+mod travel;
 mod validate;
 
 pub use diag::{Diagnostic, SheetError};

@@ -72,6 +72,9 @@ impl Template {
         }
         // A sweep runs scenes: the load-case matrix is not part of it.
         template.doc.remove("load_cases");
+        // Nor are the scenes side by side (`[[compare]]`, figures of a report): they would name
+        // scenes a `--scene` selection left out.
+        template.doc.remove("compare");
         Ok(template)
     }
 
