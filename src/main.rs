@@ -34,6 +34,15 @@ enum Command {
     Merge(MergeArgs),
     /// Run time against error of every level on fixed cases; writes bench.csv, scaling.csv, bench.png.
     Bench(BenchArgs),
+    /// List the bundled rule sets (design codes), or print one rule set's limits with their
+    /// formulas, clauses and sources.
+    Codes(CodesArgs),
+}
+
+#[derive(clap::Args)]
+struct CodesArgs {
+    /// The rule set's id; all rule sets are listed without it.
+    id: Option<String>,
 }
 
 #[derive(clap::Args)]
@@ -251,7 +260,21 @@ fn execute(cli: Cli) -> anyhow::Result<bool> {
         }
         Command::Sweep(args) => sweep_command(args).map(|()| true),
         Command::Merge(args) => merge_command(args).map(|()| true),
+        Command::Codes(args) => codes_command(args).map(|()| true),
     }
+}
+
+/// `wrapcalc codes [ID]`.
+fn codes_command(args: CodesArgs) -> anyhow::Result<()> {
+    use wrapcalc::codes;
+    match args.id {
+        None => print!("{}", codes::listing::list()),
+        Some(id) => match codes::find(&id) {
+            Some(set) => print!("{}", codes::listing::show(&set)),
+            None => anyhow::bail!("unknown rule set \"{id}\"; known: {}", codes::ids().join(", ")),
+        },
+    }
+    Ok(())
 }
 
 /// `wrapcalc bench`: the run-time-against-error report (or, with the hidden `--probe`, one

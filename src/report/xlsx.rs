@@ -16,7 +16,7 @@ use rust_xlsxwriter::{Format, Formula, Workbook, Worksheet, XlsxError, utility::
 use std::path::Path;
 
 /// Columns of the checks sheet; the inputs follow as name/value pairs from [`FIRST_INPUT_COL`].
-pub const HEADERS: [&str; 15] = [
+pub const HEADERS: [&str; 16] = [
     "scene",
     "check",
     "formula",
@@ -32,6 +32,7 @@ pub const HEADERS: [&str; 15] = [
     "governing case",
     "limit source",
     "note",
+    "rule (code: clause)",
 ];
 /// Column (0-based) of the live formula's result, "value (recomputed)".
 pub const RECOMPUTED_COL: u16 = 4;
@@ -43,7 +44,7 @@ pub const LIMIT_RECOMPUTED_COL: u16 = 6;
 /// Column (0-based) of the limit wrapcalc applied, "limit (wrapcalc)".
 pub const LIMIT_COL: u16 = 7;
 /// Column (0-based) of the first input name; each input takes a name cell and a value cell.
-pub const FIRST_INPUT_COL: u16 = 15;
+pub const FIRST_INPUT_COL: u16 = 16;
 /// The header row; checks start on the row below it.
 pub const HEADER_ROW: u32 = 2;
 
@@ -123,6 +124,7 @@ fn write_row(sheet: &mut Worksheet, r: u32, row: &CheckRow) -> Result<(), XlsxEr
             sheet.write_string(r, col, t)?;
         }
     }
+    sheet.write_string(r, 15, format!("{}: {}", c.code, c.clause))?;
     Ok(())
 }
 

@@ -15,6 +15,7 @@ mod load_cases;
 mod machine;
 mod outputs;
 mod raw;
+mod codes;
 mod requirements;
 mod rules;
 mod scene;

@@ -178,9 +178,10 @@ fn check_block(out: &mut String, c: &Check) {
         verdict_html(c.verdict),
         esc(c.formula)
     );
-    let rows: [(&str, String); 5] = [
+    let rows: [(&str, String); 6] = [
         ("inputs", fmt_q(&c.inputs)),
         ("values", fmt_q(&c.intermediates)),
+        ("rule", esc(&format!("{}: {}", c.code, c.clause))),
         ("limit", c.limit_source.as_deref().map(esc).unwrap_or_default()),
         ("governing case", c.governing_case.as_deref().map(esc).unwrap_or_default()),
         ("note", c.note.as_deref().map(esc).unwrap_or_default()),
