@@ -15,13 +15,14 @@ const LAYOUTS: [&str; 3] = ["tower-with-guide-sheave", "tower", "ground-mounted"
 
 /// Applies the rule set the sheet names (if any) to `out`; `false` after a reported error.
 pub(super) fn apply(c: &mut Collector, r: &RawRequirements, hoist: Option<&Hoist>, out: &mut Requirements) -> bool {
-    let Some(q) = quantities(c, r, hoist) else { return false };
-    let Some(code) = &r.code else { return true };
+    let q = quantities(c, r, hoist);
+    let Some(code) = &r.code else { return q.is_some() };
     let Some(set) = codes::find(code.get_ref()) else {
         let msg = format!("unknown rule set \"{}\"; known: {}", code.get_ref(), codes::ids().join(", "));
         c.push(Some(code.span()), None, "requirements.code", msg);
         return false;
     };
+    let Some(q) = q else { return false };
     let mut overrides = Vec::new();
     let mut ok = true;
     for rule in &set.limits {
