@@ -81,7 +81,8 @@ fn every_bundled_limit_names_clause_edition_and_source() {
         }
     }
     // The reader itself refuses a limit without a clause or source, or with an unknown variable.
-    let base = "id = \"t\"\ncode = \"c\"\nedition = \"e\"\ncovers = \"x\"\n[[limit]]\nkey = \"rope_safety_factor_min\"\n";
+    let base =
+        "id = \"t\"\ncode = \"c\"\nedition = \"e\"\ncovers = \"x\"\n[[limit]]\nkey = \"rope_safety_factor_min\"\n";
     assert!(RuleSet::from_toml(&format!("{base}value = 8.0\nclause = \"\"\nsource = \"s\"\n")).is_err());
     assert!(RuleSet::from_toml(&format!("{base}value = 8.0\nclause = \"1\"\nsource = \" \"\n")).is_err());
     assert!(RuleSet::from_toml(&format!("{base}formula = \"9 - L\"\nclause = \"1\"\nsource = \"s\"\n")).is_err());
@@ -145,13 +146,10 @@ source = "test"
 /// loads (m1 ↔ m2, conveyance1 ↔ conveyance2) give the same limit and verdict.
 #[test]
 fn rule_set_limit_applies_and_is_named_both_directions() {
-    for (m1, m2, c1, c2) in [
-        (12_000.0, 10_000.0, "personnel", "material"),
-        (10_000.0, 12_000.0, "material", "personnel"),
-    ] {
-        let req = format!(
-            "code = \"us-va-coal\"\nconveyance1_carries = \"{c1}\"\nconveyance2_carries = \"{c2}\"\n"
-        );
+    for (m1, m2, c1, c2) in
+        [(12_000.0, 10_000.0, "personnel", "material"), (10_000.0, 12_000.0, "material", "personnel")]
+    {
+        let req = format!("code = \"us-va-coal\"\nconveyance1_carries = \"{c1}\"\nconveyance2_carries = \"{c2}\"\n");
         let r = run_sheet(&sheet_text(m1, m2, &req));
         let c = rope_check(&r);
         assert_eq!(c.limit, Some(10.0));
@@ -256,4 +254,35 @@ fn every_check_names_its_rule() {
     for c in all {
         assert!(!c.code.is_empty() && !c.clause.is_empty(), "{}", c.name);
     }
+}
+
+/// The reference hoist (`code = "cn-coal"`): the rope safety factor is evaluated (the sheet gives
+/// a catalogue breaking force), and every check of the JSON output names a rule. cn-coal has no
+/// confirmed limit yet, so the rope safety factor has no limit; the requirements list what the
+/// rule set leaves out. By hand: F_min = 54² × 1570 × 0.33 / 1000 kN = 1 510.78 kN; the heaviest
+/// side of the sheet's scene `max-decelerating`, m1 = 153 774.1 kg, gives 153 774.1 × 9.81 / 6 =
+/// 251 420.7 N per rope, so 1 510 780 / 251 420.7 = 6.00898. The governing state of the matrix
+/// may sit a few kg of rope away (≈ 2e-5 of the load): within 0.005.
+#[test]
+fn reference_hoist_checks_name_their_rules() {
+    let sheet = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tables/guo2020.toml");
+    let out = run_wrapcalc(["check".as_ref(), sheet.as_os_str(), "--format".as_ref(), "json".as_ref()]);
+    let json: serde_json::Value = serde_json::from_slice(&out.stdout).expect("json on stdout");
+    assert_eq!(json["requirements"]["code"]["id"], "cn-coal");
+    assert!(json["requirements"]["code"]["missing"].as_array().is_some_and(|m| !m.is_empty()));
+    let checks = json["design_checks"].as_array().expect("design checks");
+    let scene_checks = json["scenes"]
+        .as_array()
+        .expect("scenes")
+        .iter()
+        .flat_map(|s| s["checks"].as_array().cloned().unwrap_or_default());
+    let all: Vec<serde_json::Value> = checks.iter().cloned().chain(scene_checks).collect();
+    assert!(all.len() > checks.len(), "scene checks are included");
+    for c in &all {
+        assert!(c["code"].as_str().is_some_and(|s| !s.is_empty()), "{}", c["name"]);
+        assert!(c["clause"].as_str().is_some_and(|s| !s.is_empty()), "{}", c["name"]);
+    }
+    let rope = checks.iter().find(|c| c["name"] == ROPE_SF_CHECK).expect("rope safety factor");
+    let value = rope["value"].as_f64().expect("a numeric value");
+    assert!((value - 6.00898).abs() < 0.005, "{value}");
 }

@@ -169,8 +169,12 @@ fn workbook_recomputed_by_libreoffice_equals_wrapcalc() {
         }
         if name == "gross slip (Euler/capstan)" {
             // By hand from the row's inputs: (T_hi − m'v²)/(T_lo − m'v²).
-            let input =
-                |n: &str| (15..row.len()).step_by(2).find(|&c| row.get(c) == Some(n)).and_then(|c| cell(row, c + 1));
+            let input = |n: &str| {
+                (usize::from(wrapcalc::report::xlsx::FIRST_INPUT_COL)..row.len())
+                    .step_by(2)
+                    .find(|&c| row.get(c) == Some(n))
+                    .and_then(|c| cell(row, c + 1))
+            };
             let (t1, t2, c) = (input("T1").expect("T1"), input("T2").expect("T2"), input("m'v²").expect("m'v²"));
             let ratio = (t1.max(t2) - c) / (t1.min(t2) - c);
             assert!(rel(cell(row, 4).expect("recomputed"), ratio) <= 1e-12, "{name}: by hand {ratio}");

@@ -7,9 +7,14 @@ use std::fmt::Write;
 
 /// The list of bundled rule sets: id, code, edition, what each covers.
 pub fn list() -> String {
-    let mut out = String::from("Bundled rule sets (`[requirements] code = \"<id>\"`; `wrapcalc codes <id>` for the limits):\n");
+    let mut out =
+        String::from("Bundled rule sets (`[requirements] code = \"<id>\"`; `wrapcalc codes <id>` for the limits):\n");
     for s in bundled() {
-        let _ = writeln!(out, "\n  {}\n    code:    {}\n    edition: {}\n    covers:  {}", s.id, s.code, s.edition, s.covers);
+        let _ = writeln!(
+            out,
+            "\n  {}\n    code:    {}\n    edition: {}\n    covers:  {}",
+            s.id, s.code, s.edition, s.covers
+        );
         let _ = writeln!(out, "    limits:  {} given, {} left out (not confirmed)", s.limits.len(), s.missing.len());
     }
     out
@@ -17,7 +22,14 @@ pub fn list() -> String {
 
 /// One rule set in full.
 pub fn show(set: &RuleSet) -> String {
-    let mut out = format!("{}: {}\n  edition: {}\n  covers:  {}\n  {}\n", set.id, set.code, set.edition, set.covers, super::CONFIRM_NOTICE);
+    let mut out = format!(
+        "{}: {}\n  edition: {}\n  covers:  {}\n  {}\n",
+        set.id,
+        set.code,
+        set.edition,
+        set.covers,
+        super::CONFIRM_NOTICE
+    );
     let _ = writeln!(out, "\nLimits ({}):", set.limits.len());
     if set.limits.is_empty() {
         let _ = writeln!(out, "  none confirmed from a public source (see below)");

@@ -2,9 +2,9 @@
 //! assumptions and limits of the model levels the run used.
 
 use super::{Context, esc, table};
+use crate::codes::CodeBasis;
 use crate::design::Limit;
 use crate::planner::Level;
-use crate::codes::CodeBasis;
 use crate::requirements::{Rule, SafetyFactorBasis};
 use std::collections::BTreeSet;
 use std::fmt::Write;
@@ -49,8 +49,10 @@ pub fn basis(out: &mut String, ctx: &Context) -> io::Result<()> {
         ("static anti-slip safety factor σ_s", "≥", r.static_limit()),
         ("dynamic anti-slip safety factor σ_d", "≥", r.dynamic_limit()),
     ];
-    let mut rows: Vec<Vec<String>> =
-        fixed.iter().map(|(n, rel, l)| vec![esc(n), format!("{rel} {}", l.value), rule_text(&l.rule), esc(&l.source)]).collect();
+    let mut rows: Vec<Vec<String>> = fixed
+        .iter()
+        .map(|(n, rel, l)| vec![esc(n), format!("{rel} {}", l.value), rule_text(&l.rule), esc(&l.source)])
+        .collect();
     let optional: [(&str, &str, &Option<Limit>, &str); 12] = [
         ("rope safety factor", "≥", &r.rope_safety_factor_min, ""),
         ("D/d of the friction pulley", "≥", &r.pulley_d_ratio_min, ""),
