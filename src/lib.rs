@@ -17,6 +17,7 @@
 
 pub mod bench;
 pub mod check;
+pub mod codes;
 pub mod contact;
 pub mod cost;
 pub mod derived;

@@ -38,6 +38,9 @@ enum Command {
     Schema(SchemaArgs),
     /// Write a commented template sheet that runs as written (kinds: tower-cage, ground-skips).
     New(NewArgs),
+    /// List the bundled rule sets (design codes), or print one rule set's limits with their
+    /// formulas, clauses and sources.
+    Codes(CodesArgs),
 }
 
 #[derive(clap::Args)]
@@ -72,6 +75,12 @@ fn schema_command(args: SchemaArgs) -> anyhow::Result<()> {
             Ok(())
         }
     }
+}
+
+#[derive(clap::Args)]
+struct CodesArgs {
+    /// The rule set's id; all rule sets are listed without it.
+    id: Option<String>,
 }
 
 #[derive(clap::Args)]
@@ -292,6 +301,7 @@ fn execute(cli: Cli) -> anyhow::Result<bool> {
         Command::Merge(args) => merge_command(args).map(|()| true),
         Command::Schema(args) => schema_command(args).map(|()| true),
         Command::New(args) => new_command(args).map(|()| true),
+        Command::Codes(args) => codes_command(args).map(|()| true),
     }
 }
 
@@ -306,6 +316,19 @@ fn new_command(args: NewArgs) -> anyhow::Result<()> {
     match &args.out {
         Some(out) => templates::write(template, out, args.force)?,
         None => print!("{}", template.text),
+    }
+    Ok(())
+}
+
+/// `wrapcalc codes [ID]`.
+fn codes_command(args: CodesArgs) -> anyhow::Result<()> {
+    use wrapcalc::codes;
+    match args.id {
+        None => print!("{}", codes::listing::list()),
+        Some(id) => match codes::find(&id) {
+            Some(set) => print!("{}", codes::listing::show(&set)),
+            None => anyhow::bail!("unknown rule set \"{id}\"; known: {}", codes::ids().join(", ")),
+        },
     }
     Ok(())
 }

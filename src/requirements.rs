@@ -7,6 +7,52 @@ pub struct Limit {
     pub value: f64,
     /// Where the limit comes from (standard, clause, client), as the sheet states it.
     pub source: String,
+    /// The rule the limit applies: a rule set's clause, or the sheet's own limit.
+    pub rule: Rule,
+}
+
+/// The rule a limit applies: the rule set (or `"sheet"`, `"default"`, `"computed"`) and the clause.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct Rule {
+    /// A rule set's id, or `"sheet"` (the sheet's own limit), `"default"` (the program's default
+    /// anti-slip minimums), `"computed"` (a limit computed from the design, e.g. the slip limit).
+    pub code: String,
+    /// The clause, or what stands in for one.
+    pub clause: String,
+}
+
+impl Rule {
+    /// A limit the sheet gives itself.
+    pub fn sheet() -> Self {
+        Self { code: "sheet".into(), clause: "the sheet's own limit".into() }
+    }
+
+    /// The program's default anti-slip minimums.
+    pub fn default_value() -> Self {
+        Self { code: "default".into(), clause: "wrapcalc's default, no code clause".into() }
+    }
+
+    /// A limit computed from the design (its source says how).
+    pub fn computed() -> Self {
+        Self { code: "computed".into(), clause: "computed from the design".into() }
+    }
+
+    /// A check without a limit.
+    pub fn none() -> Self {
+        Self { code: "none".into(), clause: "no limit given".into() }
+    }
+}
+
+impl Limit {
+    /// A limit the sheet gives itself.
+    pub fn sheet(value: f64, source: impl Into<String>) -> Self {
+        Self { value, source: source.into(), rule: Rule::sheet() }
+    }
+
+    /// A limit computed from the design.
+    pub fn computed(value: f64, source: impl Into<String>) -> Self {
+        Self { value, source: source.into(), rule: Rule::computed() }
+    }
 }
 
 /// Which dynamic safety factor decides the verdict of a duty cycle run with the ropes' dynamics.
@@ -31,6 +77,12 @@ pub struct Requirements {
     pub static_safety_factor_source: String,
     /// Where the dynamic minimum comes from.
     pub dynamic_safety_factor_source: String,
+    /// The rule behind the static minimum.
+    pub static_safety_factor_rule: Rule,
+    /// The rule behind the dynamic minimum.
+    pub dynamic_safety_factor_rule: Rule,
+    /// The rule set the limits come from (`[requirements] code`), with the overrides.
+    pub code: Option<crate::codes::CodeBasis>,
     /// Which dynamic safety factor of a duty cycle the minimum is checked on.
     pub dynamic_safety_factor_basis: SafetyFactorBasis,
     /// n·F_min over the largest static load of the rope set.
@@ -70,6 +122,9 @@ impl Default for Requirements {
             dynamic_safety_factor_min: 1.25,
             static_safety_factor_source: DEFAULT_SAFETY_FACTOR_SOURCE.into(),
             dynamic_safety_factor_source: DEFAULT_SAFETY_FACTOR_SOURCE.into(),
+            static_safety_factor_rule: Rule::default_value(),
+            dynamic_safety_factor_rule: Rule::default_value(),
+            code: None,
             dynamic_safety_factor_basis: SafetyFactorBasis::Code,
             rope_safety_factor_min: None,
             pulley_d_ratio_min: None,
@@ -90,12 +145,20 @@ impl Default for Requirements {
 impl Requirements {
     /// The static anti-slip minimum with its source.
     pub fn static_limit(&self) -> Limit {
-        Limit { value: self.static_safety_factor_min, source: self.static_safety_factor_source.clone() }
+        Limit {
+            value: self.static_safety_factor_min,
+            source: self.static_safety_factor_source.clone(),
+            rule: self.static_safety_factor_rule.clone(),
+        }
     }
 
     /// The dynamic anti-slip minimum with its source.
     pub fn dynamic_limit(&self) -> Limit {
-        Limit { value: self.dynamic_safety_factor_min, source: self.dynamic_safety_factor_source.clone() }
+        Limit {
+            value: self.dynamic_safety_factor_min,
+            source: self.dynamic_safety_factor_source.clone(),
+            rule: self.dynamic_safety_factor_rule.clone(),
+        }
     }
 
     /// The emergency deceleration's `(minimum, maximum)` when lifting side 1 (`lifting`) or

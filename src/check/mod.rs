@@ -12,6 +12,7 @@
 pub mod design;
 
 use crate::design::Limit;
+use crate::requirements::Rule;
 use serde::Serialize;
 
 /// A number with a name and a unit, as printed in a check.
@@ -131,6 +132,11 @@ pub struct Check {
     pub limit: Option<f64>,
     /// Where the limit comes from, as the sheet states it.
     pub limit_source: Option<String>,
+    /// The rule set the limit comes from: its id, or `"sheet"`, `"default"`, `"computed"`, or
+    /// `"none"` without a limit.
+    pub code: String,
+    /// The clause the limit applies (or what stands in for one).
+    pub clause: String,
     /// Whether the check lets the design pass (`verdict != fail`).
     pub pass: bool,
     /// The typed outcome.
@@ -156,6 +162,8 @@ impl Check {
             relation: Relation::AtLeast,
             limit: None,
             limit_source: None,
+            code: Rule::none().code,
+            clause: Rule::none().clause,
             pass: true,
             verdict: Verdict::NoRequirement,
             governing_case: None,
@@ -205,6 +213,8 @@ impl Check {
         self.relation = relation;
         self.limit = limit.map(|l| l.value);
         self.limit_source = limit.map(|l| l.source.clone());
+        let rule = limit.map_or_else(Rule::none, |l| l.rule.clone());
+        (self.code, self.clause) = (rule.code, rule.clause);
         self.verdict = match (limit, self.value) {
             (None, _) => Verdict::NoRequirement,
             // An unbounded safety factor meets any minimum.

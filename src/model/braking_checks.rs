@@ -78,7 +78,7 @@ pub fn stop_checks(design: &Design, stop: &StopReport, onset: Option<&SlipOnset>
         .intermediates(intermediates)
         .against(
             Relation::AtMost,
-            Some(&Limit { value: stop.slip_limited_decel_m_s2, source: SLIP_LIMIT_SOURCE.into() }),
+            Some(&Limit::computed(stop.slip_limited_decel_m_s2, SLIP_LIMIT_SOURCE)),
             true,
         ),
     ];

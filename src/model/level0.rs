@@ -257,7 +257,7 @@ pub fn gross_slip_check(state: &EndState, mu: f64, alpha: f64) -> Check {
             q("ratio", ratio, ""),
             q("β = ln(ratio)/μ", (ratio.ln() / mu).to_degrees(), "deg"),
         ])
-        .against(Relation::AtMost, Some(&Limit { value: limit, source: EULER_SOURCE.into() }), true)
+        .against(Relation::AtMost, Some(&Limit::computed(limit, EULER_SOURCE)), true)
 }
 
 /// Level 0 over the states of a history, `(t_s, state)`: the summary describes the last state;

@@ -57,6 +57,7 @@ pub(crate) fn render_check(out: &mut String, check: &Check, style: Style) {
     if !check.intermediates.is_empty() {
         let _ = writeln!(out, "      values:  {}", fmt_q(&check.intermediates));
     }
+    let _ = writeln!(out, "      rule:    {}: {}", check.code, check.clause);
     if let Some(source) = &check.limit_source {
         let _ = writeln!(out, "      limit:   {source}");
     }

@@ -105,6 +105,11 @@ fn check_columns<'a>() -> Vec<Column<Line<'a>>> {
         Column { header: "limit source", width: 30.0, cell: |l| opt_text(&l.row.check.limit_source) },
         Column { header: "note", width: 30.0, cell: |l| opt_text(&l.row.check.note) },
         Column { header: "inputs (rows of Inputs)", width: 14.0, cell: input_rows },
+        Column {
+            header: "rule (code: clause)",
+            width: 30.0,
+            cell: |l| text(format!("{}: {}", l.row.check.code, l.row.check.clause)),
+        },
     ]
 }
 

@@ -5,6 +5,7 @@
 //! not hide errors in the others; then every value is checked (finite, in range, consistent).
 //! Each diagnostic names the file, line:column, scene, key path, the bad value and what is allowed.
 
+pub(crate) mod codes;
 mod compare;
 mod diag;
 mod document;

@@ -60,6 +60,15 @@ pub struct RawRequirements {
     pub emergency_decel_lift_max_m_s2: Option<Spanned<toml::Value>>,
     pub emergency_decel_lower_min_m_s2: Option<Spanned<toml::Value>>,
     pub emergency_decel_lower_max_m_s2: Option<Spanned<toml::Value>>,
+    /// The bundled rule set the limits come from, by id.
+    pub code: Option<Spanned<String>>,
+    /// What each conveyance carries: "personnel", "personnel-and-material", "material".
+    pub conveyance1_carries: Option<Spanned<String>>,
+    pub conveyance2_carries: Option<Spanned<String>>,
+    /// "tower-with-guide-sheave", "tower" or "ground-mounted".
+    pub layout: Option<Spanned<String>>,
+    /// Hanging length of a head rope for the rule set's formulas (m).
+    pub hanging_length_m: Option<Spanned<f64>>,
 }
 
 /// The `[brake]` table: the safety brake that stops the pulley in an emergency.

@@ -4,23 +4,29 @@
 
 use super::diag::Collector;
 use super::raw::RawRequirements;
-use crate::design::{DEFAULT_SAFETY_FACTOR_SOURCE, Limit, Requirements, SafetyFactorBasis};
+use crate::design::{DEFAULT_SAFETY_FACTOR_SOURCE, Hoist, Limit, Requirements, SafetyFactorBasis};
+use crate::requirements::Rule;
 use toml::Spanned;
 
 /// Source of a limit given as a bare number.
 pub const UNSOURCED: &str = "the sheet (no source given)";
 
 /// The section, or the defaults when the sheet has none.
-pub(super) fn requirements(c: &mut Collector, r: &Option<Spanned<RawRequirements>>) -> Option<Requirements> {
+pub(super) fn requirements(
+    c: &mut Collector,
+    r: &Option<Spanned<RawRequirements>>,
+    hoist: Option<&Hoist>,
+) -> Option<Requirements> {
     let Some(r) = r else { return Some(Requirements::default()) };
     let r = r.get_ref();
     let (mut out, limits_ok) = limits(c, r);
+    let code_ok = super::codes::apply(c, r, hoist, &mut out);
     let basis = basis(c, r);
     if let Some(Some(b)) = basis {
         out.dynamic_safety_factor_basis = b;
     }
     let windows_ok = decel_windows(c, r, &out);
-    (limits_ok && basis.is_some() && windows_ok).then_some(out)
+    (limits_ok && code_ok && basis.is_some() && windows_ok).then_some(out)
 }
 
 /// Every limit of the section (the anti-slip minimums defaulted), and whether all parsed.
@@ -42,9 +48,12 @@ fn limits(c: &mut Collector, r: &RawRequirements) -> (Requirements, bool) {
     let dynamic_sf = limit("dynamic_safety_factor_min", &r.dynamic_safety_factor_min, POSITIVE);
     let out = Requirements {
         static_safety_factor_min: static_sf.as_ref().map_or(d.static_safety_factor_min, |l| l.value),
+        static_safety_factor_rule: static_sf.as_ref().map_or_else(Rule::default_value, |l| l.rule.clone()),
         static_safety_factor_source: static_sf.map_or_else(|| DEFAULT_SAFETY_FACTOR_SOURCE.into(), |l| l.source),
         dynamic_safety_factor_min: dynamic_sf.as_ref().map_or(d.dynamic_safety_factor_min, |l| l.value),
+        dynamic_safety_factor_rule: dynamic_sf.as_ref().map_or_else(Rule::default_value, |l| l.rule.clone()),
         dynamic_safety_factor_source: dynamic_sf.map_or_else(|| DEFAULT_SAFETY_FACTOR_SOURCE.into(), |l| l.source),
+        code: None,
         rope_safety_factor_min: limit("rope_safety_factor_min", &r.rope_safety_factor_min, POSITIVE),
         pulley_d_ratio_min: limit("pulley_d_ratio_min", &r.pulley_d_ratio_min, POSITIVE),
         guide_d_ratio_min: limit("guide_d_ratio_min", &r.guide_d_ratio_min, POSITIVE),
@@ -161,7 +170,7 @@ fn parse_limit(c: &mut Collector, key: &str, v: &Spanned<toml::Value>, allowed: 
         other => (number(other), UNSOURCED.to_string()),
     };
     match value {
-        Some(x) if x.is_finite() && (allowed.ok)(x) => Some(Limit { value: x, source }),
+        Some(x) if x.is_finite() && (allowed.ok)(x) => Some(Limit::sheet(x, source)),
         _ => {
             c.push(Some(v.span()), None, &path, expected);
             None

@@ -59,7 +59,6 @@ pub fn design(c: &mut Collector, s: Sections) -> Option<Design> {
             None
         }
     };
-    let requirements = super::requirements::requirements(c, &s.requirements);
     let machine = super::machine::machine(c, &s.pulley, &s.brake, pulley.as_ref().map(|p| p.diameter_m));
     let machine = if s.present.contains(&"brake") && s.brake.is_none() { None } else { machine };
     let load_cases = super::load_cases::load_cases(
@@ -74,6 +73,7 @@ pub fn design(c: &mut Collector, s: Sections) -> Option<Design> {
         None if s.present.contains(&"hoist") => None,
         None => Some(None),
     };
+    let requirements = super::requirements::requirements(c, &s.requirements, hoist.as_ref().and_then(Option::as_ref));
     let scenes = match &s.scenes {
         Some(slots) if !slots.is_empty() => {
             let ctx = SceneContext {

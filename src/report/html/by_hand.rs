@@ -120,9 +120,10 @@ fn check_block(out: &mut String, c: &Check, case: &str, others: &str) {
         esc(case),
         esc(c.formula)
     );
-    let rows: [(&str, String); 5] = [
+    let rows: [(&str, String); 6] = [
         ("inputs", fmt_q(&c.inputs)),
         ("values", fmt_q(&c.intermediates)),
+        ("rule", esc(&format!("{}: {}", c.code, c.clause))),
         ("limit", c.limit_source.as_deref().map(esc).unwrap_or_default()),
         ("note", c.note.as_deref().map(esc).unwrap_or_default()),
         ("other cases", esc(others)),

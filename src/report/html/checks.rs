@@ -132,10 +132,16 @@ pub fn verdicts(out: &mut String, ctx: &Context) -> io::Result<()> {
             format!("<span class=\"mono\">{}</span>", limit_text(c)),
             checklist::margin(c).map_or_else(|| "—".into(), |m| format!("{:+.1} %", 100.0 * m)),
             verdict_html(c.verdict),
+            esc(&format!("{}: {}", c.code, c.clause)),
             esc(c.governing_case.as_deref().unwrap_or("")),
         ]
     });
     out.push_str("<h3>Every check</h3>\n<p class=\"note\">Margin: value/limit − 1 for a minimum, 1 − value/limit for a maximum; negative where the limit is violated.</p>\n");
-    table(out, "small verdicts", &["scene", "check", "value", "limit", "margin", "verdict", "governing case"], rows);
+    table(
+        out,
+        "small verdicts",
+        &["scene", "check", "value", "limit", "margin", "verdict", "rule (code: clause)", "governing case"],
+        rows,
+    );
     Ok(())
 }

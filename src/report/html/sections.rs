@@ -2,9 +2,10 @@
 //! assumptions and limits of the model levels the run used.
 
 use super::{Context, esc, table};
+use crate::codes::CodeBasis;
 use crate::design::Limit;
 use crate::planner::Level;
-use crate::requirements::SafetyFactorBasis;
+use crate::requirements::{Rule, SafetyFactorBasis};
 use std::collections::BTreeSet;
 use std::fmt::Write;
 use std::io;
@@ -43,12 +44,15 @@ pub fn basis(out: &mut String, ctx: &Context) -> io::Result<()> {
         SafetyFactorBasis::Code => "the code value (rigid-rope tensions m(g ± a)/n)",
         SafetyFactorBasis::RopeDynamics => "the value with the suspended ropes' dynamics (level 4)",
     };
+    code_paragraph(out, r.code.as_ref());
     let fixed = [
-        ("static anti-slip safety factor σ_s", "≥", r.static_safety_factor_min, "", &r.static_safety_factor_source),
-        ("dynamic anti-slip safety factor σ_d", "≥", r.dynamic_safety_factor_min, "", &r.dynamic_safety_factor_source),
+        ("static anti-slip safety factor σ_s", "≥", r.static_limit()),
+        ("dynamic anti-slip safety factor σ_d", "≥", r.dynamic_limit()),
     ];
-    let mut rows: Vec<Vec<String>> =
-        fixed.iter().map(|(n, rel, v, u, s)| vec![esc(n), format!("{rel} {v} {u}"), esc(s)]).collect();
+    let mut rows: Vec<Vec<String>> = fixed
+        .iter()
+        .map(|(n, rel, l)| vec![esc(n), format!("{rel} {}", l.value), rule_text(&l.rule), esc(&l.source)])
+        .collect();
     let optional: [(&str, &str, &Option<Limit>, &str); 12] = [
         ("rope safety factor", "≥", &r.rope_safety_factor_min, ""),
         ("D/d of the friction pulley", "≥", &r.pulley_d_ratio_min, ""),
@@ -64,17 +68,59 @@ pub fn basis(out: &mut String, ctx: &Context) -> io::Result<()> {
         ("emergency deceleration lowering", "≤", &r.emergency_decel_lower_max_m_s2, "m/s²"),
     ];
     rows.extend(optional.iter().map(|(n, rel, l, u)| match l {
-        Some(l) => vec![esc(n), format!("{rel} {} {u}", l.value), esc(&l.source)],
-        None => {
-            vec![esc(n), "—".into(), "<span class=\"note\">no requirement given: reported, not judged</span>".into()]
-        }
+        Some(l) => vec![esc(n), format!("{rel} {} {u}", l.value), rule_text(&l.rule), esc(&l.source)],
+        None => vec![
+            esc(n),
+            "—".into(),
+            "—".into(),
+            "<span class=\"note\">no requirement given: reported, not judged</span>".into(),
+        ],
     }));
-    table(out, "", &["requirement", "limit", "source (as the sheet states it)"], rows);
+    table(out, "", &["requirement", "limit", "rule (code: clause)", "source"], rows);
     let _ = writeln!(
         out,
         "<p>The dynamic minimum is checked against {basis}. The gross-slip limit e<sup>μα</sup> is computed (Euler/capstan), not a requirement.</p>"
     );
     Ok(())
+}
+
+/// `code: clause` of a limit's rule.
+fn rule_text(rule: &Rule) -> String {
+    esc(&format!("{}: {}", rule.code, rule.clause))
+}
+
+/// The Basis section's first paragraph: the rule set, its edition, the notice to confirm its
+/// limits, the limits the sheet overrides and what the rule set leaves out.
+fn code_paragraph(out: &mut String, code: Option<&CodeBasis>) {
+    let Some(code) = code else {
+        out.push_str(
+            "<p>No rule set: every limit below is the sheet's own or the program's default \
+             (<code>[requirements] code</code> selects a bundled rule set; <code>wrapcalc codes</code> lists them).</p>\n",
+        );
+        return;
+    };
+    let _ = writeln!(out, "<p><b>{}</b></p>", esc(&code.heading()));
+    for o in &code.overrides {
+        let theirs = o.code_value.map_or_else(|| "not computable for this design".to_string(), |v| format!("{v}"));
+        let _ = writeln!(
+            out,
+            "<p>Overridden by the sheet: <code>{}</code> = {} ({}) instead of the rule set's {} ({}).</p>",
+            esc(&o.key),
+            o.sheet_value,
+            esc(&o.sheet_source),
+            esc(&theirs),
+            esc(&o.clause)
+        );
+    }
+    if !code.missing.is_empty() {
+        let items: Vec<String> =
+            code.missing.iter().map(|m| format!("<li>{}: {}</li>", esc(&m.what), esc(&m.why))).collect();
+        let _ = writeln!(
+            out,
+            "<p>Left out of the rule set (not confirmed from a public source):</p><ul>{}</ul>",
+            items.join("")
+        );
+    }
 }
 
 /// What each level assumes and where it stops being valid.

@@ -186,6 +186,16 @@ fn requirements() -> Table {
             )
             .default(D::Word("code"))
             .words(&["code", "rope-dynamics"]),
+            Key::new("code", Text, "", "the bundled rule set (design code) the limits come from, by id (`wrapcalc codes` lists them)")
+                .note("a limit the sheet gives itself overrides the rule set's"),
+            Key::new("conveyance1_carries", Text, "", "what the side-1 conveyance carries, for a rule set's limits")
+                .words(&crate::sheet::codes::CARRIES),
+            Key::new("conveyance2_carries", Text, "", "what the side-2 conveyance carries, for a rule set's limits")
+                .words(&crate::sheet::codes::CARRIES),
+            Key::new("layout", Text, "", "the hoist's layout, where a rule set distinguishes it")
+                .words(&crate::sheet::codes::LAYOUTS),
+            Key::new("hanging_length_m", Number, "m", "hanging length H of a head rope, for a rule set's formulas")
+                .positive(),
             limit("rope_safety_factor_min", "", "rope safety factor minimum"),
             limit("pulley_d_ratio_min", "", "D/d of the friction pulley, minimum"),
             limit("guide_d_ratio_min", "", "D/d of the guide sheave, minimum"),

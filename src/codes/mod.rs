@@ -1,0 +1,230 @@
+//! Design codes as data: the rule sets bundled with the program (`codes/<id>.toml`, read at build
+//! time), each limit with its value or a [`formula`] of the design's own quantities, the code's
+//! name and edition, the clause and the public source it was taken from; and what each rule set
+//! leaves out because no public source confirms it (`[[missing]]`).
+//!
+//! `[requirements] code = "<id>"` selects a rule set; a limit the sheet gives itself overrides the
+//! rule set's (the report lists the overrides).
+
+pub mod formula;
+pub mod listing;
+
+use crate::requirements::{Limit, Rule};
+use formula::{Formula, FormulaOutcome, Quantities};
+use serde::{Deserialize, Serialize};
+
+/// The bundled rule sets' files, as `(id, text)`.
+const BUNDLED: &[(&str, &str)] = &[
+    ("cn-coal", include_str!("../../codes/cn-coal.toml")),
+    ("au-winding", include_str!("../../codes/au-winding.toml")),
+    ("us-ca-t8", include_str!("../../codes/us-ca-t8.toml")),
+    ("us-va-coal", include_str!("../../codes/us-va-coal.toml")),
+];
+
+/// The `[requirements]` keys a rule set may give a limit for.
+pub const LIMIT_KEYS: &[&str] = &[
+    "static_safety_factor_min",
+    "dynamic_safety_factor_min",
+    "rope_safety_factor_min",
+    "pulley_d_ratio_min",
+    "guide_d_ratio_min",
+    "lining_pressure_max_pa",
+    "lining_peak_pressure_max_pa",
+    "mu_design_max",
+    "static_tension_max_n",
+    "static_tension_difference_max_n",
+    "emergency_decel_lift_min_m_s2",
+    "emergency_decel_lift_max_m_s2",
+    "emergency_decel_lower_min_m_s2",
+    "emergency_decel_lower_max_m_s2",
+];
+
+/// One limit of a rule set as written in its file.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawLimit {
+    key: String,
+    value: Option<f64>,
+    formula: Option<String>,
+    clause: String,
+    source: String,
+    edition: Option<String>,
+    note: Option<String>,
+}
+
+/// A value a rule set leaves out, and why.
+#[derive(Debug, Clone, PartialEq, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct Missing {
+    /// What is missing (the limit, in words, or its `[requirements]` key).
+    pub what: String,
+    /// The value that was looked for, as a lead, if there was one.
+    pub lead: Option<String>,
+    /// Why it is not in the rule set.
+    pub why: String,
+}
+
+/// A rule set's file.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawRuleSet {
+    id: String,
+    code: String,
+    edition: String,
+    covers: String,
+    #[serde(default)]
+    limit: Vec<RawLimit>,
+    #[serde(default)]
+    missing: Vec<Missing>,
+}
+
+/// A limit of a rule set: a `[requirements]` key, its formula, where it comes from.
+#[derive(Debug, Clone)]
+pub struct RuleLimit {
+    /// The `[requirements]` key it sets.
+    pub key: String,
+    /// The value or formula.
+    pub formula: Formula,
+    /// The clause, as the code numbers it.
+    pub clause: String,
+    /// The edition (the rule set's unless the limit names its own).
+    pub edition: String,
+    /// The public source the value was read from.
+    pub source: String,
+    /// A remark on how the limit is applied.
+    pub note: Option<String>,
+}
+
+/// A rule set: a code's limits for friction hoists.
+#[derive(Debug, Clone)]
+pub struct RuleSet {
+    /// The id a sheet names in `[requirements] code`.
+    pub id: String,
+    /// The code's name.
+    pub code: String,
+    /// The edition the rule set was written from.
+    pub edition: String,
+    /// What the rule set covers.
+    pub covers: String,
+    /// Its limits.
+    pub limits: Vec<RuleLimit>,
+    /// What it leaves out, and why.
+    pub missing: Vec<Missing>,
+}
+
+/// The sentence that heads the Basis of a report that uses a rule set.
+pub const CONFIRM_NOTICE: &str =
+    "Limits taken from this rule set must be confirmed against the edition of the code in force for the installation.";
+
+impl RuleSet {
+    /// Reads a rule set from its TOML text; refuses unknown keys, a limit with neither or both of
+    /// value and formula, an empty clause, edition or source, and a formula that does not parse.
+    pub fn from_toml(text: &str) -> Result<Self, String> {
+        let raw: RawRuleSet = toml::from_str(text).map_err(|e| e.to_string())?;
+        let mut limits = Vec::new();
+        for l in raw.limit {
+            let at = format!("limit `{}`", l.key);
+            if !LIMIT_KEYS.contains(&l.key.as_str()) {
+                return Err(format!("{at}: not a [requirements] limit; known: {}", LIMIT_KEYS.join(", ")));
+            }
+            let text = match (&l.value, &l.formula) {
+                (Some(v), None) if v.is_finite() => v.to_string(),
+                (None, Some(f)) => f.clone(),
+                _ => return Err(format!("{at}: give exactly one of `value` (a number) or `formula`")),
+            };
+            let formula = Formula::parse(&text).map_err(|e| format!("{at}: {e}"))?;
+            let edition = l.edition.unwrap_or_else(|| raw.edition.clone());
+            for (field, v) in [("clause", &l.clause), ("source", &l.source), ("edition", &edition)] {
+                if v.trim().is_empty() {
+                    return Err(format!("{at}: `{field}` is empty"));
+                }
+            }
+            limits.push(RuleLimit { key: l.key, formula, clause: l.clause, edition, source: l.source, note: l.note });
+        }
+        Ok(Self { id: raw.id, code: raw.code, edition: raw.edition, covers: raw.covers, limits, missing: raw.missing })
+    }
+
+    /// The limit for `key`, if the rule set has one.
+    pub fn limit(&self, key: &str) -> Option<&RuleLimit> {
+        self.limits.iter().find(|l| l.key == key)
+    }
+}
+
+impl RuleLimit {
+    /// The limit's value for the design's quantities, as a [`Limit`] naming its rule; `Err` says
+    /// which variables the design lacks or why the formula gives no number.
+    pub fn resolve(&self, set: &RuleSet, q: &Quantities) -> Result<Limit, String> {
+        match self.formula.eval(q) {
+            FormulaOutcome::Value(v) => Ok(Limit {
+                value: v,
+                source: format!("{}, {} ({}); read from {}", set.code, self.clause, self.edition, self.source),
+                rule: Rule { code: set.id.clone(), clause: self.clause.clone() },
+            }),
+            FormulaOutcome::Missing(vars) => Err(format!(
+                "rule set `{}` computes {} as {}, which needs {}",
+                set.id,
+                self.key,
+                self.formula.text,
+                vars.join(", ")
+            )),
+            FormulaOutcome::Invalid(why) => {
+                Err(format!("rule set `{}`: {} = {} gives no number: {why}", set.id, self.key, self.formula.text))
+            }
+        }
+    }
+}
+
+/// Every bundled rule set, in the order of their ids.
+pub fn bundled() -> Vec<RuleSet> {
+    BUNDLED
+        .iter()
+        .map(|(id, text)| RuleSet::from_toml(text).unwrap_or_else(|e| panic!("bundled rule set {id} is invalid: {e}")))
+        .collect()
+}
+
+/// The ids of the bundled rule sets.
+pub fn ids() -> Vec<&'static str> {
+    BUNDLED.iter().map(|(id, _)| *id).collect()
+}
+
+/// The bundled rule set `id`.
+pub fn find(id: &str) -> Option<RuleSet> {
+    bundled().into_iter().find(|s| s.id == id)
+}
+
+/// A limit the sheet gives itself although the rule set has one.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Override {
+    /// The `[requirements]` key.
+    pub key: String,
+    /// The sheet's value.
+    pub sheet_value: f64,
+    /// The sheet's source for it.
+    pub sheet_source: String,
+    /// The rule set's value for this design, if it could be computed.
+    pub code_value: Option<f64>,
+    /// The rule set's clause.
+    pub clause: String,
+}
+
+/// The rule set a design is judged by, as the report states it.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct CodeBasis {
+    /// The rule set's id.
+    pub id: String,
+    /// The code's name.
+    pub code: String,
+    /// Its edition.
+    pub edition: String,
+    /// The limits the sheet overrides.
+    pub overrides: Vec<Override>,
+    /// What the rule set leaves out.
+    pub missing: Vec<Missing>,
+}
+
+impl CodeBasis {
+    /// The Basis section's first sentence: the rule set, its edition and the notice.
+    pub fn heading(&self) -> String {
+        format!("Rule set `{}`: {}, edition {}. {CONFIRM_NOTICE}", self.id, self.code, self.edition)
+    }
+}
