@@ -132,11 +132,11 @@ pub fn verdicts(out: &mut String, ctx: &Context) -> io::Result<()> {
             format!("<span class=\"mono\">{}</span>", limit_text(c)),
             checklist::margin(c).map_or_else(|| "—".into(), |m| format!("{:+.1} %", 100.0 * m)),
             verdict_html(c.verdict),
-            esc(&format!("{}: {}", c.code, c.clause)),
+            esc(&rule_text(&c.code, &c.clause)),
             esc(c.governing_case.as_deref().unwrap_or("")),
         ]
     });
-    out.push_str("<h3>Every check</h3>\n<p class=\"note\">Margin: value/limit − 1 for a minimum, 1 − value/limit for a maximum; negative where the limit is violated.</p>\n");
+    out.push_str("<h3>Every check</h3>\n<p class=\"note\">Margin: value/limit − 1 for a minimum, 1 − value/limit for a maximum; negative where the limit is violated. Rule: the rule set and clause a limit comes from; <i>sheet</i> a limit the sheet gives, <i>default</i> wrapcalc's default, <i>computed</i> a limit that follows from the design (the checks by hand give each in full).</p>\n");
     table(
         out,
         "small verdicts",
@@ -144,4 +144,13 @@ pub fn verdicts(out: &mut String, ctx: &Context) -> io::Result<()> {
         rows,
     );
     Ok(())
+}
+
+/// The rule of a limit in the verdicts table: a rule set's id and clause; only the kind for the
+/// sheet's own limits, wrapcalc's defaults and computed limits (their text is in the checks by hand).
+fn rule_text(code: &str, clause: &str) -> String {
+    match code {
+        "sheet" | "default" | "computed" | "none" => code.to_string(),
+        _ => format!("{code}: {clause}"),
+    }
 }

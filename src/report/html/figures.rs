@@ -69,6 +69,9 @@ fn placement(ctx: &Context) -> (Vec<Figure>, Vec<Figure>) {
             }
         }
     }
+    // The figures that share a page first, two to a page; those that fill a page of their own
+    // (the histories) after them, so that none leaves half a page empty.
+    rest.sort_by_key(|f| !FigureKind::of_file(f.file).unwrap_or(FigureKind::Panels).two_per_page());
     (main, rest)
 }
 

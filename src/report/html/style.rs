@@ -58,6 +58,7 @@ nav ol { columns: 2; }
   nav { break-after: page; }
   section#checks, section#figures, section#appendix { break-before: page; }
   section#load-cases table.small { font-size: 7pt; line-height: 1.15; }
+  table.verdicts { font-size: 7pt; line-height: 1.15; }
   table.small td, table.small th { padding: 1px 3px; }
   table.inputs td:first-child { white-space: nowrap; }
   .check { padding: 0.2em 0.6em; margin: 0.4em 0; font-size: 8.5pt; }
