@@ -297,3 +297,47 @@ fn document_errors_name_the_key_and_place() {
     let err = wrapcalc::sheet::parse("doc.toml", &sheet).expect_err("unknown key").to_string();
     assert!(err.contains("document.authr") && err.contains("unknown field"), "{err}");
 }
+
+/// The reference hoist carries warnings (the dynamic factor with the ropes' dynamics below the
+/// minimum that the code value decides) and checks without a requirement: no output may say
+/// "all checks pass", and each gives the same counts, taken from the check records' verdicts.
+#[test]
+fn a_run_with_warnings_never_says_all_checks_pass() {
+    let dir = reference_report();
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).expect("summary")).expect("json");
+    // The counts by hand from every check record of summary.json (the scenes' and the design's).
+    let mut records: Vec<&serde_json::Value> = summary["scenes"]
+        .as_array()
+        .expect("scenes")
+        .iter()
+        .flat_map(|s| s["checks"].as_array().expect("checks"))
+        .collect();
+    records.extend(summary["design_checks"].as_array().expect("design checks"));
+    let count = |f: &dyn Fn(&str) -> bool| records.iter().filter(|c| f(c["verdict"].as_str().unwrap_or(""))).count();
+    let warnings = count(&|v| v.eq_ignore_ascii_case("warning"));
+    let unjudged = count(&|v| {
+        !v.eq_ignore_ascii_case("warning") && !v.eq_ignore_ascii_case("pass") && !v.eq_ignore_ascii_case("fail")
+    });
+    assert!(warnings > 0, "the reference hoist has warnings");
+    assert_eq!(summary["warnings"].as_u64(), Some(warnings as u64));
+    assert_eq!(summary["unjudged"].as_u64(), Some(unjudged as u64));
+    assert_eq!(summary["all_checks_pass"], serde_json::Value::Bool(true), "warnings do not fail the design");
+    let headline = summary["headline"].as_str().expect("headline");
+    assert!(
+        headline.starts_with("all binding checks pass") && headline.contains(&format!("{warnings} warning")),
+        "{headline}"
+    );
+    let html = std::fs::read_to_string(dir.join("report.html")).expect("report");
+    assert!(html.contains(headline), "the report's first page carries the headline");
+    assert!(!html.to_lowercase().contains("all checks pass"), "the report says all checks pass");
+    let sheet = Path::new(env!("CARGO_MANIFEST_DIR")).join("tables/guo2020.toml");
+    let out = common::wrapcalc()
+        .args(["run", "--no-plots", "--no-report", "--out"])
+        .arg(dir.with_file_name("t"))
+        .arg(&sheet)
+        .output()
+        .expect("runs");
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success() && text.contains(headline) && !text.contains("all checks pass"), "{text}");
+}

@@ -262,8 +262,15 @@ pub struct Summary {
     pub title: String,
     /// wrapcalc's version.
     pub version: &'static str,
-    /// Whether no check of the run fails.
+    /// Whether no check of the run fails (every binding check passes; warnings and unjudged
+    /// checks may stand: see `warnings` and `unjudged`).
     pub all_checks_pass: bool,
+    /// Extension: the headline, as the terminal and the report print it.
+    pub headline: String,
+    /// Extension: how many checks are warnings (beyond a limit that does not decide the design).
+    pub warnings: usize,
+    /// Extension: how many checks are not judged (no requirement given, or not evaluated).
+    pub unjudged: usize,
     /// The run's wall time (ms).
     pub runtime_ms: f64,
     /// Extension: the limits the checks used, each with its source.
@@ -285,6 +292,9 @@ impl Summary {
             title: design.title.clone(),
             version: env!("CARGO_PKG_VERSION"),
             all_checks_pass: run.all_checks_pass(),
+            headline: super::checklist::headline(run.all_checks_pass(), &super::checklist::tally(run)),
+            warnings: super::checklist::tally(run).warnings,
+            unjudged: super::checklist::tally(run).unjudged,
             runtime_ms: run.runtime_ms,
             requirements: design.requirements.clone(),
             scenes: run

@@ -64,7 +64,7 @@ pub fn render(title: &str, sheet: &str, run: &RunResult, style: Style) -> String
     let _ = writeln!(
         out,
         "\n{} — {} scene(s) in {:.2} ms",
-        if run.all_checks_pass() { "all checks pass" } else { "SOME CHECKS FAIL" },
+        super::checklist::headline(run.all_checks_pass(), &super::checklist::tally(run)),
         run.scenes.len(),
         run.runtime_ms
     );

@@ -113,7 +113,9 @@ pub fn render(ctx: &Context) -> std::io::Result<String> {
         style::figure_css(),
         crate::report::figure_size::print_css()
     );
-    let verdict = if ctx.run.all_checks_pass() { "ALL CHECKS PASS" } else { "SOME CHECKS FAIL" };
+    let headline =
+        crate::report::checklist::headline(ctx.run.all_checks_pass(), &crate::report::checklist::tally(ctx.run));
+    let verdict = headline.as_str();
     let _ = writeln!(
         out,
         "<header><p class=\"kicker\">Friction hoist design calculation — wrapcalc {}</p><h1>{}</h1>\
