@@ -287,14 +287,15 @@ pub struct Summary {
 impl Summary {
     /// The summary of a run of a design.
     pub fn of(design: &Design, run: &RunResult) -> Self {
+        let tally = super::checklist::tally(run);
         Self {
             sheet: design.sheet.clone(),
             title: design.title.clone(),
             version: env!("CARGO_PKG_VERSION"),
             all_checks_pass: run.all_checks_pass(),
-            headline: super::checklist::headline(run.all_checks_pass(), &super::checklist::tally(run)),
-            warnings: super::checklist::tally(run).warnings,
-            unjudged: super::checklist::tally(run).unjudged,
+            headline: super::checklist::headline(run.all_checks_pass(), &tally),
+            warnings: tally.warnings,
+            unjudged: tally.unjudged,
             runtime_ms: run.runtime_ms,
             requirements: design.requirements.clone(),
             scenes: run
