@@ -33,6 +33,7 @@ pub mod planner;
 pub mod report;
 pub mod requirements;
 pub mod roots;
+pub mod ropes;
 pub mod run;
 pub mod screen;
 pub mod sheet;

@@ -1,0 +1,26 @@
+//! The groove turning tolerance to specify: the largest pitch-diameter difference of one groove
+//! (rope 1's, the others as the sheet gives) before the deviation limit or the worst rope's
+//! anti-slip minimum is reached, by root finding on the whole sharing run.
+
+use super::trip::run;
+use super::{Hoisting, MeanRow, RopeSet};
+use crate::roots::{Holding, RootStats, largest_holding_among};
+
+/// Largest groove diameter difference searched (m): 20 mm, far past any turning tolerance.
+pub const SEARCH_MAX_M: f64 = 0.02;
+
+/// Largest groove pitch-diameter difference of rope 1's groove, on [0, 20 mm], for which the
+/// largest deviation stays within `set.deviation_limit_pct` and every rope's anti-slip safety
+/// factor at or above `sf_min`.
+pub fn groove_tolerance(h: &Hoisting, set: &RopeSet, rows: &[MeanRow], sf_min: f64) -> Holding {
+    let criterion = |dd: f64| {
+        let mut s = set.clone();
+        s.groove_diameter_dev_m[0] = dd;
+        let sharing = run(h, &s, rows);
+        let dev = (set.deviation_limit_pct - sharing.max_deviation_pct()) / set.deviation_limit_pct;
+        let sf = sharing.worst_safety_factor().map_or(f64::INFINITY, |(_, sf)| (sf - sf_min) / sf_min);
+        dev.min(sf)
+    };
+    // 1e-6 of 20 mm = 20 nm: far below any turning tolerance.
+    largest_holding_among(criterion, (0.0, SEARCH_MAX_M), &[], 1e-6, &mut RootStats::default())
+}
