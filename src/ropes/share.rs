@@ -65,15 +65,15 @@ pub fn share(load: SideLoad<'_>, attachment: Attachment) -> Shared {
     let mut answer = solve(&load, &spring, &held);
     for _ in 0..(2 * n + 2) {
         let mut changed = false;
-        for i in 0..n {
-            match held[i] {
+        for (i, h) in held.iter_mut().enumerate() {
+            match *h {
                 None if answer.piston[i].abs() > half => {
-                    held[i] = Some(half.copysign(answer.piston[i]));
+                    *h = Some(half.copysign(answer.piston[i]));
                     changed = true;
                 }
                 // A held piston leaves its stop when the rope's force passes the pressure's way.
                 Some(c) if half > 0.0 && answer.pressure.is_some_and(|p| (answer.tension[i] - p) * c > 0.0) => {
-                    held[i] = None;
+                    *h = None;
                     changed = true;
                 }
                 _ => {}
