@@ -13,7 +13,7 @@ use common::bin::run_wrapcalc;
 use wrapcalc::check::design::ROPE_SF_CHECK;
 use wrapcalc::check::{Check, Verdict};
 use wrapcalc::codes::{self, RuleSet, formula::Quantities};
-use wrapcalc::run::{self, Options, RunResult};
+use wrapcalc::run::RunResult;
 use wrapcalc::sheet;
 
 fn sheet_text(m1: f64, m2: f64, requirements: &str) -> String {
@@ -41,9 +41,7 @@ m2_kg = {m2:?}
 }
 
 fn run_sheet(text: &str) -> RunResult {
-    let d = sheet::parse("codes.toml", text).expect("the test sheet parses");
-    let scenes: Vec<_> = d.scenes.iter().collect();
-    run::run_all(&d, &scenes, Options::default()).expect("runs")
+    common::sheets::run_sheet("codes.toml", text)
 }
 
 fn rope_check(r: &RunResult) -> &Check {

@@ -23,8 +23,7 @@ use wrapcalc::check::design::{
     ROPE_SF_CHECK, TENSION_RATING_CHECK,
 };
 use wrapcalc::check::{Check, Verdict};
-use wrapcalc::run::{self, Options, RunResult};
-use wrapcalc::sheet;
+use wrapcalc::run::RunResult;
 
 fn text(m1: f64, m2: f64, requirements: bool, rope_data: bool) -> String {
     let req = if requirements {
@@ -64,9 +63,7 @@ m2_kg = {m2:?}
 }
 
 fn run_sheet(text: &str) -> RunResult {
-    let d = sheet::parse("checks.toml", text).expect("the test sheet parses");
-    let scenes: Vec<_> = d.scenes.iter().collect();
-    run::run_all(&d, &scenes, Options::default()).expect("runs")
+    common::sheets::run_sheet("checks.toml", text)
 }
 
 fn check<'a>(r: &'a RunResult, name: &str) -> &'a Check {

@@ -23,3 +23,11 @@ macro_rules! base_sheet {
     };
 }
 pub(crate) use base_sheet;
+
+/// Every scene of the sheet `text` (named `file` in its diagnostics) run as `wrapcalc run` runs a
+/// whole sheet, with the design's checks.
+pub fn run_sheet(file: &str, text: &str) -> wrapcalc::run::RunResult {
+    let d = wrapcalc::sheet::parse(file, text).expect("the test sheet parses");
+    let scenes: Vec<_> = d.scenes.iter().collect();
+    wrapcalc::run::run_all(&d, &scenes, wrapcalc::run::Options::default()).expect("runs")
+}
