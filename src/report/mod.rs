@@ -30,6 +30,7 @@ pub mod plot_zones;
 pub mod summary;
 pub mod table;
 pub mod target;
+pub mod verdict;
 pub mod xlsx;
 pub mod xlsx_formulas;
 

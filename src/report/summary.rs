@@ -45,7 +45,8 @@ pub struct SceneSummary {
     pub tension_ratio: f64,
     /// (T_lo − m'v²)(e^{μα} − 1)/(T_hi − T_lo) of this state; `None` when T1 = T2.
     pub safety_factor: Option<f64>,
-    /// The safety factor at rest (a = 0, v = 0).
+    /// The safety factor at rest (a = 0, v = 0); `None` when T1 = T2 at rest or when the scene
+    /// never rests (then `rests` is false).
     pub static_safety_factor: Option<f64>,
     /// The dynamic safety factor (docs/interface.md §3.3); `None` without a state in motion.
     pub dynamic_safety_factor: Option<f64>,
@@ -114,6 +115,8 @@ pub struct SceneSummary {
     pub stopping_time_s: Option<f64>,
     /// Distance from the trip to standstill (m).
     pub stopping_distance_m: Option<f64>,
+    /// Whether the scene has a state at rest (a history that never rests has no static state).
+    pub rests: bool,
 }
 
 impl SceneSummary {
@@ -141,6 +144,7 @@ impl SceneSummary {
             tension_ratio: c.tension_ratio,
             safety_factor: c.safety_factor,
             static_safety_factor: c.static_safety_factor,
+            rests: c.static_state.is_some(),
             dynamic_safety_factor: c.dynamic_safety_factor,
             dynamic_angle_deg: c.dynamic_angle_rad.to_degrees(),
             reserve_angle_deg: c.reserve_angle_rad.to_degrees(),
@@ -271,6 +275,9 @@ pub struct Summary {
     pub warnings: usize,
     /// Extension: how many checks are not judged (no requirement given, or not evaluated).
     pub unjudged: usize,
+    /// Extension: what the verdict rests on — the governing check, and each failure, warning
+    /// and unjudged check with its sentence in engineering terms.
+    pub verdict: super::verdict::Overview,
     /// The run's wall time (ms).
     pub runtime_ms: f64,
     /// Extension: the limits the checks used, each with its source.
@@ -296,6 +303,7 @@ impl Summary {
             headline: super::checklist::headline(run.all_checks_pass(), &tally),
             warnings: tally.warnings,
             unjudged: tally.unjudged,
+            verdict: super::verdict::Overview::of(run),
             runtime_ms: run.runtime_ms,
             requirements: design.requirements.clone(),
             scenes: run
