@@ -10,8 +10,8 @@ pub mod basis;
 pub mod formula;
 pub mod listing;
 
-pub use basis::{CONFIRM_NOTICE, CodeBasis, Missing, Override};
 use crate::requirements::{Limit, Rule};
+pub use basis::{CONFIRM_NOTICE, CodeBasis, Missing, Override};
 use formula::{Formula, FormulaOutcome, Quantities};
 use serde::Deserialize;
 
@@ -177,4 +177,3 @@ pub fn ids() -> Vec<&'static str> {
 pub fn find(id: &str) -> Option<RuleSet> {
     bundled().into_iter().find(|s| s.id == id)
 }
-
