@@ -5,7 +5,7 @@ use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use wrapcalc::design::{Design, Scene};
-use wrapcalc::planner::{Level, Request};
+use wrapcalc::plan::{Level, Request};
 use wrapcalc::report::{self, summary::Summary, table};
 use wrapcalc::run::{self, Options, RunResult};
 use wrapcalc::sheet;
@@ -143,7 +143,7 @@ struct ModelArgs {
     #[arg(long, default_value_t = run::DEFAULT_NODES)]
     nodes: usize,
     /// Refuse, before it starts, a scene whose estimated run time on one core exceeds this.
-    #[arg(long, value_name = "SECONDS", default_value_t = wrapcalc::cost::DEFAULT_LIMIT_S)]
+    #[arg(long, value_name = "SECONDS", default_value_t = wrapcalc::plan::cost::DEFAULT_LIMIT_S)]
     cost_limit_s: u64,
 }
 
@@ -441,7 +441,7 @@ fn run_bar(estimated_s: f64, quiet: bool) -> indicatif::ProgressBar {
     let bar = indicatif::ProgressBar::new((estimated_s * 1e3).ceil() as u64);
     let template = format!(
         "{{bar:40}} {{percent}}% of the estimated {}, {{elapsed}}",
-        wrapcalc::cost::human_duration(estimated_s)
+        wrapcalc::plan::cost::human_duration(estimated_s)
     );
     if let Ok(style) = indicatif::ProgressStyle::with_template(&template) {
         bar.set_style(style);

@@ -31,7 +31,7 @@ use crate::design::{
     Design, Direction, HistorySample, HistoryScene, Lining, Output, Outputs, Pulley, Requirements, Rope, Scene,
     SceneKind, WrapSource,
 };
-use crate::roots::{RootStats, brent};
+use crate::numerics::roots::{RootStats, brent};
 
 /// Friction coefficient.
 pub const MU: f64 = 0.25;

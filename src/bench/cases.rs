@@ -39,7 +39,7 @@ use crate::design::{
 pub use crate::model::history::HistoryRow;
 use crate::model::history::HistorySample;
 use crate::model::level2::Solver;
-use crate::planner::{Level, Request};
+use crate::plan::{Level, Request};
 use crate::run::{self, Options, RunError, RunResult};
 use crate::wrap::Distribution;
 use std::path::Path;

@@ -10,7 +10,7 @@ pub mod basis;
 pub mod formula;
 pub mod listing;
 
-use crate::requirements::{Limit, Rule};
+use crate::design::requirements::{Limit, Rule};
 pub use basis::{CONFIRM_NOTICE, CodeBasis, Missing, Override};
 use formula::{Formula, FormulaOutcome, Quantities};
 use serde::Deserialize;

@@ -1,7 +1,10 @@
 //! The validated design: what a sheet describes once every value has been checked.
 //! All quantities are SI; angles are stored in radians (`_rad`) and reported in degrees.
 
-pub use crate::requirements::{DEFAULT_SAFETY_FACTOR_SOURCE, Limit, Requirements, SafetyFactorBasis};
+pub mod geometry;
+pub mod requirements;
+
+pub use crate::design::requirements::{DEFAULT_SAFETY_FACTOR_SOURCE, Limit, Requirements, SafetyFactorBasis};
 
 mod direction;
 mod scene;

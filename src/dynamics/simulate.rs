@@ -76,7 +76,7 @@ pub fn simulate_streamed(
     if opt.parallel_sides && !opt.energy {
         let plan = super::split::Plan { first_step, t_prev_s: t_prev, steps, keep_step, work_j, dissipated_j };
         let run = super::split::run(p, profile, opt, sides, plan)?;
-        crate::tally::add_increments((steps + 1 - first_step) as u64);
+        crate::numerics::work_tally::add_increments((steps + 1 - first_step) as u64);
         sink(&run.0);
         return Ok(run);
     }
@@ -97,7 +97,7 @@ pub fn simulate_streamed(
     if out.len() > sent {
         sink(&out[sent..]);
     }
-    crate::tally::add_increments((steps + 1 - first_step) as u64);
+    crate::numerics::work_tally::add_increments((steps + 1 - first_step) as u64);
     Ok((out, kept))
 }
 
@@ -125,7 +125,7 @@ pub fn simulate_prefix(
             kept.push(run.checkpoint(step, opt));
         }
     })?;
-    crate::tally::add_increments(last as u64);
+    crate::numerics::work_tally::add_increments(last as u64);
     Ok((out, kept))
 }
 

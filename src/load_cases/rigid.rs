@@ -12,7 +12,7 @@ use crate::model::braking_checks as braking;
 use crate::model::level0::{self, DYNAMIC_CHECK, EndState, euler_limit, safety_factor};
 use crate::model::level4::{self, Level4Error};
 use crate::model::stop::{self, SlipOnset, StopMode, StopReport};
-use crate::planner::Level;
+use crate::plan::Level;
 
 /// Speeds below this are a profile at rest (m/s): the round-off of its stages' integrals.
 pub const MOVING_M_S: f64 = 1e-9;

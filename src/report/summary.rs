@@ -1,16 +1,16 @@
 //! The scalar summary of a run, as written to summary.json and summary.csv (docs/interface.md).
 
 use crate::check::Check;
-use crate::cost::Estimate;
 use crate::design::{Design, Requirements};
-use crate::fit::CreepFit;
 use crate::load_cases::MatrixResult;
 use crate::margins::Margins;
+use crate::margins::fit::CreepFit;
 use crate::model::history::SolverReport;
 use crate::model::level3::Level3Stats;
 use crate::model::stop::StopReport;
-use crate::planner::Level;
-use crate::roots::RootStats;
+use crate::numerics::roots::RootStats;
+use crate::plan::Level;
+use crate::plan::cost::Estimate;
 use crate::run::{RunResult, SceneResult};
 use serde::Serialize;
 

@@ -113,7 +113,7 @@ mod tests {
 
     /// A stop's check with `inputs`; its value and limit do not enter the formulas.
     fn stop_check(name: &'static str, inputs: Vec<crate::check::Quantity>) -> Check {
-        let limit = Limit { value: 1.0, source: "test".into(), rule: crate::requirements::Rule::sheet() };
+        let limit = Limit { value: 1.0, source: "test".into(), rule: crate::design::requirements::Rule::sheet() };
         Check::new(name, "", Some(1.0), "m/s²").inputs(inputs).against(Relation::AtMost, Some(&limit), true)
     }
 

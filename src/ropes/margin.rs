@@ -4,7 +4,7 @@
 
 use super::trip::run;
 use super::{Hoisting, MeanRow, RopeSet};
-use crate::roots::{Holding, RootStats, largest_holding_among};
+use crate::numerics::roots::{Holding, RootStats, largest_holding_among};
 
 /// Largest groove diameter difference searched (m): 20 mm, far past any turning tolerance.
 pub const SEARCH_MAX_M: f64 = 0.02;

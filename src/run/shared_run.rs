@@ -4,8 +4,8 @@
 
 use super::wrap_run::{Kept, WrapCheckpoint, WrapKeep, WrapShare};
 use super::{RunError, SceneResult, schedule, share};
-use crate::cost::Estimate;
 use crate::model::level4::{self, shared::RopePrefix};
+use crate::plan::cost::Estimate;
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicBool, Ordering};
 

@@ -14,7 +14,7 @@ use crate::model::level0::{self, EndState};
 use crate::model::level2::lattice;
 use crate::model::level4::{self, Level4Error, RopeRun};
 use crate::model::stop;
-use crate::planner::{Level, Plan};
+use crate::plan::{Level, Plan};
 
 /// What a level-0 run of a scene with `track_*` keys leaves out, appended to its level reason.
 pub const SKIPPED_TRACKS: &str = "; skipped: track_* (rope elements followed through the wrap need the wrap \
@@ -312,7 +312,7 @@ fn run_samples(
         }
     };
     let ModelRun { run, level3, kept, reused_increments } = done;
-    crate::tally::add_increments(run.stats.increments - reused_increments);
+    crate::numerics::work_tally::add_increments(run.stats.increments - reused_increments);
     result.level3 = level3;
     let mut snapshots: Vec<history::Snapshot> = run.snapshots;
     let last = snapshots.pop();

@@ -4,8 +4,8 @@
 
 use super::diag::Collector;
 use super::raw::RawRequirements;
+use crate::design::requirements::Rule;
 use crate::design::{DEFAULT_SAFETY_FACTOR_SOURCE, Hoist, Limit, Requirements, SafetyFactorBasis};
-use crate::requirements::Rule;
 use toml::Spanned;
 
 /// Source of a limit given as a bare number.

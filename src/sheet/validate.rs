@@ -6,8 +6,8 @@ use super::diag::Collector;
 use super::raw::{RawBrake, RawGuide, RawHoist, RawLoadCases, RawPulley, RawRequirements, RawRope};
 use super::rules::{At, MU_MAX, NON_NEGATIVE, POSITIVE, ROPE_COUNT_MAX, WRAP_ANGLE_MAX_DEG, in_range, required};
 use super::scene::{SceneContext, SceneSlot};
+use crate::design::geometry::wrap_angle_from_guide_rad;
 use crate::design::{Design, Pulley, Rope, STANDARD_GRAVITY_M_S2, WrapSource};
-use crate::geometry::wrap_angle_from_guide_rad;
 use std::ops::Range;
 use toml::Spanned;
 

@@ -21,7 +21,7 @@ use crate::dynamics::{
     self, AT_REST_M_S, Checkpoint, DynSample, DynamicsError, HoistParams, Kinematics, MotionProfile, SimOptions,
 };
 use crate::model::braking::{self, BrakeError};
-use crate::planner::Level;
+use crate::plan::Level;
 use shared::{RopePlan, RopePrefix};
 use std::cell::RefCell;
 
