@@ -36,6 +36,8 @@ pub struct RopeRow {
     pub tension_n: [Vec<f64>; 2],
     /// Each cylinder's piston position from mid-stroke at conveyance 1 and 2 (m).
     pub piston_m: [Vec<f64>; 2],
+    /// Rope each rope slid grossly since the trip's start (m).
+    pub slip_m: Vec<f64>,
 }
 
 /// A rope's totals over the trips run.
@@ -287,7 +289,8 @@ pub fn run_trip(h: &Hoisting, set: &RopeSet, rows: &[MeanRow], mut state: RopeSt
                 tot.safety_factor_min = Some(tot.safety_factor_min.map_or(sf, |m: f64| m.min(sf)));
             }
         }
-        out.push(RopeRow { t_s: row.t_s, speed_m_s: row.speed_m_s, tension_n: t, piston_m: p });
+        let slip_m = totals.iter().map(|r| r.slip_m).collect();
+        out.push(RopeRow { t_s: row.t_s, speed_m_s: row.speed_m_s, tension_n: t, piston_m: p, slip_m });
     }
     let summary = TripSummary { max_deviation_pct: max_dev, stroke_used_m: stroke, ropes: totals, end: state };
     (out, summary)
