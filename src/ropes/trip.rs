@@ -112,6 +112,9 @@ impl Sharing {
 const STEP_FRACTION: f64 = 0.02;
 /// Newton iterations for a rope brought back to the Euler limit.
 const SLIP_ITERATIONS: usize = 12;
+/// Gauss–Seidel sweeps over the ropes past the limit: sliding one rope loads the others, and
+/// two ropes at the limit together converge by a factor of about 1/n per sweep.
+const SLIP_SWEEPS: usize = 60;
 
 /// Every rope's tensions for the state at one instant.
 pub fn tensions(h: &Hoisting, set: &RopeSet, state: &RopeState, row: &MeanRow) -> ([Vec<f64>; 2], [Vec<f64>; 2]) {
@@ -196,7 +199,7 @@ fn excess(h: &Hoisting, t1: f64, t2: f64, v: f64) -> (f64, f64) {
 pub fn relieve_slip(h: &Hoisting, set: &RopeSet, state: &mut RopeState, row: &MeanRow) -> Vec<f64> {
     let n = set.count();
     let mut slid = vec![0.0; n];
-    for _sweep in 0..3 {
+    for _sweep in 0..SLIP_SWEEPS {
         let mut any = false;
         for i in 0..n {
             let (t, _) = tensions(h, set, state, row);
