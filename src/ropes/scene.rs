@@ -50,6 +50,8 @@ pub struct SceneRopes {
     pub hoisting: Hoisting,
     /// The ropes' deviations and attachments.
     pub set: RopeSet,
+    /// The scene's instants the sharing ran on (the mean rope, hanging lengths, acceleration).
+    pub rows: Vec<SceneRow>,
     /// The rows of the first trip and every trip's summary.
     pub sharing: Sharing,
     /// Whether each row of the first trip is at rest.
@@ -117,6 +119,7 @@ pub fn share_scene(h: &Hoisting, set: &RopeSet, rows: &[SceneRow], sf_min: f64) 
     SceneRopes {
         hoisting: *h,
         set: set.clone(),
+        rows: rows.to_vec(),
         sharing,
         at_rest,
         worst_rest,

@@ -199,6 +199,12 @@ fn excess(h: &Hoisting, t1: f64, t2: f64, v: f64) -> (f64, f64) {
 pub fn relieve_slip(h: &Hoisting, set: &RopeSet, state: &mut RopeState, row: &MeanRow) -> Vec<f64> {
     let n = set.count();
     let mut slid = vec![0.0; n];
+    // The usual row: no rope past the limit, one evaluation of the tensions.
+    let (t, _) = tensions(h, set, state, row);
+    let past = |i: usize| excess(h, t[0][i], t[1][i], row.speed_m_s).0 > 1e-9 * (t[0][i] + t[1][i]);
+    if !(0..n).any(past) {
+        return slid;
+    }
     for _sweep in 0..SLIP_SWEEPS {
         let mut any = false;
         for i in 0..n {
@@ -269,14 +275,23 @@ pub fn run_trip(h: &Hoisting, set: &RopeSet, rows: &[MeanRow], mut state: RopeSt
             let prev = &rows[j - 1];
             let dx = 0.5 * (prev.speed_m_s + row.speed_m_s) * (row.t_s - prev.t_s);
             advance(h, set, &mut state, prev, row, dx);
+        }
+        let (mut t, mut p) = tensions(h, set, &state, row);
+        // Only a row with a rope past the limit needs the relief (and its tensions again).
+        if j > 0 && (0..n).any(|i| excess(h, t[0][i], t[1][i], row.speed_m_s).0 > 1e-9 * (t[0][i] + t[1][i])) {
             let slid = relieve_slip(h, set, &mut state, row);
-            let (t, _) = tensions(h, set, &state, row);
-            for i in 0..n {
-                totals[i].slip_m += slid[i];
-                totals[i].creep_m += dx.abs() * (t[0][i] - t[1][i]).abs() / set.ea_n[i];
+            for (tot, s) in totals.iter_mut().zip(&slid) {
+                tot.slip_m += s;
+            }
+            (t, p) = tensions(h, set, &state, row);
+        }
+        if j > 0 {
+            let prev = &rows[j - 1];
+            let dx = 0.5 * (prev.speed_m_s + row.speed_m_s) * (row.t_s - prev.t_s);
+            for (i, tot) in totals.iter_mut().enumerate() {
+                tot.creep_m += dx.abs() * (t[0][i] - t[1][i]).abs() / set.ea_n[i];
             }
         }
-        let (t, p) = tensions(h, set, &state, row);
         for s in 0..2 {
             let mean = if s == 0 { row.t1_n } else { row.t2_n };
             for i in 0..n {
