@@ -10,10 +10,10 @@ mod common;
 use common::run_wrapcalc;
 use std::collections::BTreeMap;
 use std::path::Path;
+use wrapcalc::roots::Holding;
 use wrapcalc::ropes::margin::groove_tolerance_of;
 use wrapcalc::ropes::scene::{SceneRow, share_scene};
 use wrapcalc::ropes::{Attachment, Hoisting, MeanRow, RopeSet};
-use wrapcalc::roots::Holding;
 
 /// A small hoist of three ropes (D = 4 m, μ = 0.25, α = 180°, 5 kg/m, EA = 1e8 N): a lift of
 /// about 26 m from hanging lengths 120 m and 20 m, 2 s at rest, the way back. `ropes` is added
@@ -44,7 +44,9 @@ fn run(dir: &Path, name: &str, text: &str) -> std::path::PathBuf {
 fn csv(path: &Path) -> Vec<BTreeMap<String, String>> {
     let mut r = csv::Reader::from_path(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
     let head = r.headers().expect("a header").clone();
-    r.records().map(|rec| head.iter().zip(rec.expect("a row").iter()).map(|(h, v)| (h.into(), v.into())).collect()).collect()
+    r.records()
+        .map(|rec| head.iter().zip(rec.expect("a row").iter()).map(|(h, v)| (h.into(), v.into())).collect())
+        .collect()
 }
 
 fn num(row: &BTreeMap<String, String>, key: &str) -> f64 {
@@ -170,7 +172,14 @@ fn coulomb_holds_per_rope_in_ropes_csv() {
 /// columns 1 ↔ 2.
 #[test]
 fn mirrored_rows_write_the_mirrored_ropes_csv() {
-    let h = Hoisting { radius_m: 2.0, mu: 0.25, wrap_angle_rad: std::f64::consts::PI, mass_per_m_kg: 5.0, g_m_s2: 9.81, ea_ref_n: 1e8 };
+    let h = Hoisting {
+        radius_m: 2.0,
+        mu: 0.25,
+        wrap_angle_rad: std::f64::consts::PI,
+        mass_per_m_kg: 5.0,
+        g_m_s2: 9.81,
+        ea_ref_n: 1e8,
+    };
     let rows: Vec<SceneRow> = (0..201)
         .map(|i| {
             let x = 0.2 * i as f64;
@@ -213,14 +222,18 @@ fn mirrored_rows_write_the_mirrored_ropes_csv() {
         let mut r = csv::Reader::from_reader(bytes.as_slice());
         let head = r.headers().expect("a header").clone();
         r.records()
-            .map(|rec| head.iter().zip(rec.expect("a row").iter()).map(|(h, v)| (h.to_string(), v.to_string())).collect())
+            .map(|rec| {
+                head.iter().zip(rec.expect("a row").iter()).map(|(h, v)| (h.to_string(), v.to_string())).collect()
+            })
             .collect::<Vec<BTreeMap<String, String>>>()
     };
     let (a, b) = (written(&rows, &set), written(&mirror_rows, &mset));
     assert_eq!(a.len(), b.len());
     let mut moved: f64 = 0.0;
     for (x, y) in a.iter().zip(&b) {
-        for (k, m) in [("t1_n", "t2_n"), ("t2_n", "t1_n"), ("piston1_m", "piston2_m"), ("deviation1_pct", "deviation2_pct")] {
+        for (k, m) in
+            [("t1_n", "t2_n"), ("t2_n", "t1_n"), ("piston1_m", "piston2_m"), ("deviation1_pct", "deviation2_pct")]
+        {
             // Round-off through ~1000 Heun steps on 2e4 N tensions: 1e-6 relative.
             let tol = if k.ends_with("_n") { 2e-2 } else { 1e-9 };
             assert!((num(x, k) - num(y, m)).abs() < tol, "t = {}: {k} {} vs mirrored {m} {}", x["t_s"], x[k], y[m]);
@@ -246,7 +259,14 @@ fn groove_tolerance_meets_the_deviation_limit_in_closed_form() {
     let rho = 0.1 * t * n / ((n - 1.0) * (ea + t) - 0.1 * t);
     let expected = 2.0 * r * rho;
     assert!((expected - 0.569_066_2e-3).abs() < 1e-9, "{expected}");
-    let h = Hoisting { radius_m: r, mu: 0.25, wrap_angle_rad: 187.42f64.to_radians(), mass_per_m_kg: 10.81, g_m_s2: 9.81, ea_ref_n: ea };
+    let h = Hoisting {
+        radius_m: r,
+        mu: 0.25,
+        wrap_angle_rad: 187.42f64.to_radians(),
+        mass_per_m_kg: 10.81,
+        g_m_s2: 9.81,
+        ea_ref_n: ea,
+    };
     // 30 hanging lengths of travel leave e^-30 of the transient: the trip's largest deviation is
     // the steady one.
     let rows: Vec<MeanRow> = (0..301)
@@ -264,12 +284,28 @@ fn groove_tolerance_meets_the_deviation_limit_in_closed_form() {
 fn bad_ropes_keys_are_errors_at_their_line_and_column() {
     let tmp = tempfile::tempdir().expect("a temporary directory");
     let cases = [
-        ("[ropes]\ngroove_diameter_deviation_m = [0.001, 0.0]\n", "ropes.groove_diameter_deviation_m", "expected 3 values, one per rope"),
+        (
+            "[ropes]\ngroove_diameter_deviation_m = [0.001, 0.0]\n",
+            "ropes.groove_diameter_deviation_m",
+            "expected 3 values, one per rope",
+        ),
         ("[ropes]\nea_n = [1.0e8, -1.0, 1.0e8]\n", "ropes.ea_n", "expected an axial stiffness EA > 0 N"),
         ("[ropes]\nmax_deviation_pct = 0.0\n", "ropes.max_deviation_pct", "expected a percentage 0 < x ≤ 100"),
-        ("[ropes.conveyance1]\nattachment = \"springs\"\n", "ropes.conveyance1.attachment", "expected \"rigid\" or \"equalising\""),
-        ("[ropes.conveyance2]\nattachment = \"equalising\"\n", "ropes.conveyance2.stroke_m", "missing; expected the cylinders' full stroke"),
-        ("[ropes.conveyance1]\nattachment = \"rigid\"\nstroke_m = 0.1\n", "ropes.conveyance1.stroke_m", "not a key of a rigid attachment"),
+        (
+            "[ropes.conveyance1]\nattachment = \"springs\"\n",
+            "ropes.conveyance1.attachment",
+            "expected \"rigid\" or \"equalising\"",
+        ),
+        (
+            "[ropes.conveyance2]\nattachment = \"equalising\"\n",
+            "ropes.conveyance2.stroke_m",
+            "missing; expected the cylinders' full stroke",
+        ),
+        (
+            "[ropes.conveyance1]\nattachment = \"rigid\"\nstroke_m = 0.1\n",
+            "ropes.conveyance1.stroke_m",
+            "not a key of a rigid attachment",
+        ),
     ];
     for (i, (ropes, key, message)) in cases.iter().enumerate() {
         let text = sheet(ropes);
@@ -285,7 +321,8 @@ fn bad_ropes_keys_are_errors_at_their_line_and_column() {
         let at = format!("bad{i}.toml:");
         let line = err.lines().find(|l| l.contains(key)).unwrap_or_else(|| panic!("{key} not named: {err}"));
         assert!(line.contains(&at) && line.contains(message), "{key}: {line}");
-        let lc: usize = line.split(&at).nth(1).and_then(|s| s.split(':').next()).and_then(|s| s.parse().ok()).expect("line");
+        let lc: usize =
+            line.split(&at).nth(1).and_then(|s| s.split(':').next()).and_then(|s| s.parse().ok()).expect("line");
         assert!((ropes_line..ropes_line + 3).contains(&lc), "{key}: line {lc}, [ropes] at {ropes_line}: {line}");
     }
 }

@@ -36,7 +36,7 @@ pub fn write_ropes_csv<W: Write>(out: W, ropes: &SceneRopes, mean: &[(f64, f64)]
     let h = &ropes.hoisting;
     let num = super::number::display;
     for ((r, arc), (m1, m2)) in ropes.sharing.rows.iter().zip(&arcs).zip(mean) {
-        for i in 0..ropes.set.count() {
+        for (i, arc_i) in arc.iter().enumerate() {
             let (t1, t2) = (r.tension_n[0][i], r.tension_n[1][i]);
             let sf = crate::ropes::trip::safety_factor(h, t1, t2, r.speed_m_s);
             w.write_record([
@@ -46,7 +46,7 @@ pub fn write_ropes_csv<W: Write>(out: W, ropes: &SceneRopes, mean: &[(f64, f64)]
                 num(t2),
                 num(100.0 * (t1 - m1) / m1),
                 num(100.0 * (t2 - m2) / m2),
-                num(arc[i]),
+                num(*arc_i),
                 sf.map_or_else(String::new, num),
                 num(r.slip_m[i]),
                 num(r.piston_m[0][i]),
@@ -202,10 +202,7 @@ impl RopesJson {
                     creep_m_last_trip: last.map_or(0.0, |t| t.creep_m),
                     slip_m_first_trip: first.map_or(0.0, |t| t.slip_m),
                     slip_m_last_trip: last.map_or(0.0, |t| t.slip_m),
-                    safety_factor_min: trips
-                        .iter()
-                        .filter_map(|t| t.ropes[i].safety_factor_min)
-                        .min_by(f64::total_cmp),
+                    safety_factor_min: trips.iter().filter_map(|t| t.ropes[i].safety_factor_min).min_by(f64::total_cmp),
                     tension_max_n: fold(i, &|t| t.tension_max_n),
                 }
             })
@@ -216,10 +213,11 @@ impl RopesJson {
             max_deviation_pct_per_trip: trips.iter().map(|t| t.max_deviation_pct).collect(),
             worst_at_rest: worst(r.worst_rest),
             worst_in_motion: worst(r.worst_motion),
-            lowest_safety_factor: r
-                .sharing
-                .worst_safety_factor()
-                .map(|(rope, sf)| WorstJson { rope, t_s: None, safety_factor: sf }),
+            lowest_safety_factor: r.sharing.worst_safety_factor().map(|(rope, sf)| WorstJson {
+                rope,
+                t_s: None,
+                safety_factor: sf,
+            }),
             max_tension_n: t_max,
             max_tension_rope: rope,
             rope_safety_factor: min_breaking_force_n.map(|f| f / t_max),

@@ -323,7 +323,10 @@ impl Summary {
                         .as_ref()
                         .map(|o| o.tracks.iter().map(|t| TrackJson::of(t, o.element_length_m)).collect()),
                     max_rope_deviation_pct: s.ropes.as_ref().map(|r| r.sharing.max_deviation_pct()),
-                    ropes: s.ropes.as_ref().map(|r| super::ropes_out::RopesJson::of(r, design.rope.min_breaking_force_n)),
+                    ropes: s
+                        .ropes
+                        .as_ref()
+                        .map(|r| super::ropes_out::RopesJson::of(r, design.rope.min_breaking_force_n)),
                 })
                 .collect(),
             design_checks: run.design.as_ref().map(|d| d.checks.clone()),

@@ -39,10 +39,12 @@ pub fn checks(design: &Design, ropes: &SceneRopes, rope_dynamics: bool, scene: &
     }
     let formula_rest = "σ_s,i = T_lo,i(e^{μα} − 1)/(T_hi,i − T_lo,i), lowest over the ropes i and the instants at rest";
     out.push(worst(ropes, ropes.worst_rest, (WORST_STATIC_CHECK, formula_rest), &req.static_limit(), true));
-    let basis_binding = !rope_dynamics || req.dynamic_safety_factor_basis == crate::design::SafetyFactorBasis::RopeDynamics;
+    let basis_binding =
+        !rope_dynamics || req.dynamic_safety_factor_basis == crate::design::SafetyFactorBasis::RopeDynamics;
     let formula_motion =
         "σ_d,i = (T_lo,i − m'v²)(e^{μα} − 1)/(T_hi,i − T_lo,i), lowest over the ropes i and the instants in motion";
-    let mut motion = worst(ropes, ropes.worst_motion, (WORST_DYNAMIC_CHECK, formula_motion), &req.dynamic_limit(), basis_binding);
+    let mut motion =
+        worst(ropes, ropes.worst_motion, (WORST_DYNAMIC_CHECK, formula_motion), &req.dynamic_limit(), basis_binding);
     if rope_dynamics {
         motion = motion.with_note(if basis_binding {
             "each rope's share of the mean rope's tensions with the suspended ropes' dynamics: binding"
@@ -59,7 +61,11 @@ pub fn checks(design: &Design, ropes: &SceneRopes, rope_dynamics: bool, scene: &
 
 /// The deviation limit with its rule: the program's default or the sheet's own.
 fn deviation_limit(ropes: &SceneRopes) -> Limit {
-    let rule = if ropes.set.deviation_limit_source == DEFAULT_DEVIATION_SOURCE { Rule::default_value() } else { Rule::sheet() };
+    let rule = if ropes.set.deviation_limit_source == DEFAULT_DEVIATION_SOURCE {
+        Rule::default_value()
+    } else {
+        Rule::sheet()
+    };
     Limit { value: ropes.set.deviation_limit_pct, source: ropes.set.deviation_limit_source.clone(), rule }
 }
 
@@ -87,12 +93,20 @@ fn deviation(ropes: &SceneRopes, scene: &str) -> Check {
 fn stroke(ropes: &SceneRopes, side: usize, stroke_m: f64, name: &'static str, scene: &str) -> Check {
     let used = ropes.sharing.stroke_used_m()[side];
     let half = 0.5 * stroke_m;
-    let limit = Limit::computed(half, "half the cylinders' stroke: the pistons start at mid-stroke ([ropes.conveyanceN] stroke_m)");
-    let mut c = Check::new(name, "max |c_i|: largest piston travel from mid-stroke over the ropes and every round trip", Some(used), "m")
-        .inputs(vec![q("stroke_m", stroke_m, "m")])
-        .intermediates(vec![q("stroke available each way", half, "m")])
-        .governed_by(scene)
-        .against(Relation::AtMost, Some(&limit), true);
+    let limit = Limit::computed(
+        half,
+        "half the cylinders' stroke: the pistons start at mid-stroke ([ropes.conveyanceN] stroke_m)",
+    );
+    let mut c = Check::new(
+        name,
+        "max |c_i|: largest piston travel from mid-stroke over the ropes and every round trip",
+        Some(used),
+        "m",
+    )
+    .inputs(vec![q("stroke_m", stroke_m, "m")])
+    .intermediates(vec![q("stroke available each way", half, "m")])
+    .governed_by(scene)
+    .against(Relation::AtMost, Some(&limit), true);
     // A piston at its stop no longer equalises: the ropes on it are rigid from there.
     if used >= half * (1.0 - 1e-9) {
         c.fail();
@@ -101,7 +115,13 @@ fn stroke(ropes: &SceneRopes, side: usize, stroke_m: f64, name: &'static str, sc
     c
 }
 
-fn worst(ropes: &SceneRopes, w: Option<WorstRope>, (name, formula): (&'static str, &'static str), limit: &Limit, binding: bool) -> Check {
+fn worst(
+    ropes: &SceneRopes,
+    w: Option<WorstRope>,
+    (name, formula): (&'static str, &'static str),
+    limit: &Limit,
+    binding: bool,
+) -> Check {
     let c = Check::new(name, formula, None, "");
     let Some(w) = w else {
         return c.not_evaluated("no instant of this kind in the scene, or every rope's end tensions are equal");
@@ -162,13 +182,24 @@ fn groove_tolerance(ropes: &SceneRopes) -> Check {
     ]);
     let source = |what: &str| format!("root finding on the sharing run ({what}); 20 nm tolerance");
     match ropes.groove_tolerance {
-        Holding::Until(x) => {
-            c.against(Relation::AtMost, Some(&Limit::computed(1e3 * x, source("the deviation limit or the anti-slip minimum reached"))), true)
-        }
-        Holding::Throughout => c
-            .against(Relation::AtMost, Some(&Limit::computed(1e3 * super::margin::SEARCH_MAX_M, source("holds up to the search's end, 20 mm"))), true),
-        Holding::NotAtStart => c
-            .against(Relation::AtMost, Some(&Limit::computed(0.0, source("the other ropes' deviations already reach a limit with this groove true"))), true),
+        Holding::Until(x) => c.against(
+            Relation::AtMost,
+            Some(&Limit::computed(1e3 * x, source("the deviation limit or the anti-slip minimum reached"))),
+            true,
+        ),
+        Holding::Throughout => c.against(
+            Relation::AtMost,
+            Some(&Limit::computed(1e3 * super::margin::SEARCH_MAX_M, source("holds up to the search's end, 20 mm"))),
+            true,
+        ),
+        Holding::NotAtStart => c.against(
+            Relation::AtMost,
+            Some(&Limit::computed(
+                0.0,
+                source("the other ropes' deviations already reach a limit with this groove true"),
+            )),
+            true,
+        ),
         Holding::NotFinite | Holding::Failed(_) => c.not_evaluated("the tolerance search did not converge"),
     }
 }

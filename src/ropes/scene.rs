@@ -95,7 +95,8 @@ impl SceneRopes {
     /// Creep (active) arc of each rope at each row of the first trip (deg).
     pub fn creep_arcs_deg(&self) -> Vec<Vec<f64>> {
         let h = &self.hoisting;
-        let arc = |r: &super::trip::RopeRow, i: usize| creep_arc_deg(h, r.tension_n[0][i], r.tension_n[1][i], r.speed_m_s);
+        let arc =
+            |r: &super::trip::RopeRow, i: usize| creep_arc_deg(h, r.tension_n[0][i], r.tension_n[1][i], r.speed_m_s);
         self.sharing.rows.iter().map(|r| (0..self.set.count()).map(|i| arc(r, i)).collect()).collect()
     }
 }

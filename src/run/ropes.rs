@@ -52,7 +52,13 @@ pub(super) fn share(
             .rows
             .iter()
             .map(|r| SceneRow {
-                mean: MeanRow { t_s: r.t_s, t1_n: r.t1_n, t2_n: r.t2_n, speed_m_s: r.speed_m_s, length_m: lengths(r.t_s) },
+                mean: MeanRow {
+                    t_s: r.t_s,
+                    t1_n: r.t1_n,
+                    t2_n: r.t2_n,
+                    speed_m_s: r.speed_m_s,
+                    length_m: lengths(r.t_s),
+                },
                 accel_m_s2: r.accel_m_s2,
             })
             .collect(),
@@ -60,7 +66,13 @@ pub(super) fn share(
             .iter()
             .zip(kinematics)
             .map(|(s, k)| SceneRow {
-                mean: MeanRow { t_s: s.t_s, t1_n: s.t1_n, t2_n: s.t2_n, speed_m_s: s.speed_m_s, length_m: lengths(s.t_s) },
+                mean: MeanRow {
+                    t_s: s.t_s,
+                    t1_n: s.t1_n,
+                    t2_n: s.t2_n,
+                    speed_m_s: s.speed_m_s,
+                    length_m: lengths(s.t_s),
+                },
                 accel_m_s2: k.accel_m_s2,
             })
             .collect(),
@@ -70,7 +82,11 @@ pub(super) fn share(
         return Err(non_finite("ropes.hanging_length_m"));
     }
     let out = share_scene(&hoisting(design), set, &rows, design.requirements.dynamic_safety_factor_min);
-    let finite = out.sharing.rows.iter().all(|r| r.tension_n.iter().flatten().chain(r.piston_m.iter().flatten()).all(|x| x.is_finite()))
+    let finite = out
+        .sharing
+        .rows
+        .iter()
+        .all(|r| r.tension_n.iter().flatten().chain(r.piston_m.iter().flatten()).all(|x| x.is_finite()))
         && out.sharing.max_deviation_pct().is_finite();
     if !finite {
         return Err(non_finite("ropes.t1_n"));

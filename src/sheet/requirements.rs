@@ -146,7 +146,12 @@ fn parse_limit(c: &mut Collector, key: &str, v: &Spanned<toml::Value>, allowed: 
 }
 
 /// [`parse_limit`] for the key at `path` (its dotted path in the sheet).
-pub(super) fn parse_limit_at(c: &mut Collector, path: &str, v: &Spanned<toml::Value>, allowed: Allowed) -> Option<Limit> {
+pub(super) fn parse_limit_at(
+    c: &mut Collector,
+    path: &str,
+    v: &Spanned<toml::Value>,
+    allowed: Allowed,
+) -> Option<Limit> {
     let expected =
         format!("expected {} or {{ value = {}, source = \"where the limit comes from\" }}", allowed.what, allowed.what);
     let number = |x: &toml::Value| match x {
@@ -176,7 +181,7 @@ pub(super) fn parse_limit_at(c: &mut Collector, path: &str, v: &Spanned<toml::Va
     match value {
         Some(x) if x.is_finite() && (allowed.ok)(x) => Some(Limit::sheet(x, source)),
         _ => {
-            c.push(Some(v.span()), None, &path, expected);
+            c.push(Some(v.span()), None, path, expected);
             None
         }
     }

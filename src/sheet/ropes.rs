@@ -47,10 +47,15 @@ pub struct RawAttachment {
     pub stiffness_n_per_m: Option<Spanned<f64>>,
 }
 
-const PERCENT: Allowed = Allowed { ok: |x| x > 0.0 && x <= DEVIATION_LIMIT_MAX_PCT, what: "a percentage 0 < x ≤ 100" };
+const PERCENT: Allowed =
+    Allowed { ok: |x| x > 0.0 && x <= DEVIATION_LIMIT_MAX_PCT, what: "a percentage 0 < x ≤ 100" };
 
 /// The validated section: `Some(None)` without one, `None` when it has an error.
-pub(super) fn ropes(c: &mut Collector, raw: &Option<Spanned<RawRopes>>, rope: Option<&Rope>) -> Option<Option<RopeSet>> {
+pub(super) fn ropes(
+    c: &mut Collector,
+    raw: &Option<Spanned<RawRopes>>,
+    rope: Option<&Rope>,
+) -> Option<Option<RopeSet>> {
     let Some(raw) = raw else { return Some(None) };
     let span = raw.span();
     let r = raw.get_ref();
@@ -101,17 +106,15 @@ pub(super) fn ropes(c: &mut Collector, raw: &Option<Spanned<RawRopes>>, rope: Op
     let a1 = attachment(c, &r.conveyance1, "conveyance1", &span);
     let a2 = attachment(c, &r.conveyance2, "conveyance2", &span);
     let (limit, round_trips, a1, a2) = (limit?, round_trips?, a1?, a2?);
-    ok.then(|| {
-        Some(RopeSet {
-            groove_diameter_dev_m: groove,
-            length_dev_m: length,
-            ea_n: ea,
-            attachment: [a1, a2],
-            deviation_limit_pct: limit.0,
-            deviation_limit_source: limit.1,
-            round_trips,
-        })
-    })
+    ok.then_some(Some(RopeSet {
+        groove_diameter_dev_m: groove,
+        length_dev_m: length,
+        ea_n: ea,
+        attachment: [a1, a2],
+        deviation_limit_pct: limit.0,
+        deviation_limit_source: limit.1,
+        round_trips,
+    }))
 }
 
 /// One conveyance's attachment: rigid (the default), or equalising with its stroke and stiffness.
@@ -139,7 +142,12 @@ fn attachment(
             let mut ok = true;
             for (key, v) in [("stroke_m", &a.stroke_m), ("stiffness_n_per_m", &a.stiffness_n_per_m)] {
                 if let Some(v) = v {
-                    c.push(Some(v.span()), None, &at.key(key), "not a key of a rigid attachment; only with \"equalising\"");
+                    c.push(
+                        Some(v.span()),
+                        None,
+                        &at.key(key),
+                        "not a key of a rigid attachment; only with \"equalising\"",
+                    );
                     ok = false;
                 }
             }

@@ -82,10 +82,15 @@ fn conveyance(path: &'static str, side: u8) -> Table {
                 .positive()
                 .max(STROKE_MAX_M, true)
                 .note("only with \"equalising\""),
-            Key::new("stiffness_n_per_m", Number, "N/m", "stiffness of one cylinder's oil column, in series with its rope")
-                .default(D::Described("incompressible (infinite)".into()))
-                .positive()
-                .note("only with \"equalising\""),
+            Key::new(
+                "stiffness_n_per_m",
+                Number,
+                "N/m",
+                "stiffness of one cylinder's oil column, in series with its rope",
+            )
+            .default(D::Described("incompressible (infinite)".into()))
+            .positive()
+            .note("only with \"equalising\""),
         ],
         one_of: Vec::new(),
     }
