@@ -58,9 +58,10 @@ pub fn write_ropes_csv<W: Write>(out: W, ropes: &SceneRopes, mean: &[(f64, f64)]
     Ok(())
 }
 
-/// The dash of rope `i` (size, gap in px): solid first, then ever different dashes.
+/// The dash of rope `i` (size, gap in px): every rope dashed, each differently, so that the mean
+/// rope is the only solid line.
 fn dash(i: usize) -> (u32, u32) {
-    const DASHES: [(u32, u32); 8] = [(1, 0), (18, 6), (6, 6), (28, 8), (3, 5), (12, 12), (22, 4), (9, 3)];
+    const DASHES: [(u32, u32); 8] = [(18, 6), (6, 6), (28, 8), (3, 5), (12, 12), (22, 4), (9, 3), (40, 10)];
     DASHES[i % DASHES.len()]
 }
 
@@ -87,24 +88,19 @@ pub fn plot_ropes(path: &Path, title: &str, ropes: &SceneRopes, mean: &[(f64, f6
                 let (size, gap) = dash(i);
                 let style = color.stroke_width(2);
                 let label = format!("rope {}", i + 1);
-                if gap == 0 {
-                    let drawn = chart.draw_series(LineSeries::new(points, style)).map_err(e)?;
-                    drawn.label(label).legend(move |(px, py)| PathElement::new(vec![(px, py), (px + 36, py)], style));
-                } else {
-                    let dashed = DashedPathElement::new(points, size, gap, style);
-                    let drawn = chart.draw_series(std::iter::once(dashed)).map_err(e)?;
-                    drawn.label(label).legend(move |(px, py)| {
-                        DashedPathElement::new(vec![(px, py), (px + 36, py)], size, gap, style)
-                    });
-                }
+                let dashed = DashedPathElement::new(points, size, gap, style);
+                let drawn = chart.draw_series(std::iter::once(dashed)).map_err(e)?;
+                drawn
+                    .label(label)
+                    .legend(move |(px, py)| DashedPathElement::new(vec![(px, py), (px + 24, py)], size, gap, style));
             }
             let black = RGBColor(0, 0, 0).stroke_width(2);
             chart
                 .draw_series(LineSeries::new(mean_line, black))
                 .map_err(e)?
                 .label("mean rope")
-                .legend(move |(px, py)| PathElement::new(vec![(px, py), (px + 36, py)], black));
-            draw_legend(&mut chart, SeriesLabelPosition::UpperRight, text_sizes(1200).0)?;
+                .legend(move |(px, py)| PathElement::new(vec![(px, py), (px + 24, py)], black));
+            draw_legend(&mut chart, SeriesLabelPosition::UpperLeft, text_sizes(1200).0)?;
         }
         Ok(())
     })
