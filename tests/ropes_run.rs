@@ -326,3 +326,49 @@ fn bad_ropes_keys_are_errors_at_their_line_and_column() {
         assert!((ropes_line..ropes_line + 3).contains(&lc), "{key}: line {lc}, [ropes] at {ropes_line}: {line}");
     }
 }
+
+/// The checks of the trip of `sheet(ropes)`, by name.
+fn checks_of(ropes: &str) -> (wrapcalc::run::SceneResult, Vec<wrapcalc::check::Check>) {
+    let d = wrapcalc::sheet::parse("ropes.toml", &sheet(ropes)).expect("the sheet parses");
+    let scenes: Vec<_> = d.scenes.iter().collect();
+    let mut r = wrapcalc::run::run(&d, &scenes, wrapcalc::run::Options::default()).expect("runs");
+    let scene = r.scenes.remove(0);
+    let checks = scene.classical.checks.clone();
+    (scene, checks)
+}
+
+#[test]
+fn equalising_cylinders_within_their_stroke_share_equally_and_pass_past_it_fail() {
+    use wrapcalc::check::Verdict;
+    use wrapcalc::ropes::checks::{DEVIATION_CHECK, STROKE1_CHECK};
+    let groove =
+        "[ropes]\ngroove_diameter_deviation_m = [0.001, 0.0, 0.0]\n[ropes.conveyance1]\nattachment = \"equalising\"\n";
+    // A 1 m stroke: the pistons take up rope 1's extra rope, ρx/(1 + ε) ≈ 2.5e-4 × 26 m ≈ 6.5 mm
+    // over the lift at most (ρ = 0.5 mm/2 m); side 1's ropes carry exactly the mean rope.
+    let (scene, checks) = checks_of(&format!("{groove}stroke_m = 1.0\n"));
+    let ropes = scene.ropes.as_ref().expect("the sharing ran");
+    for (r, m) in ropes.sharing.rows.iter().zip(&ropes.rows) {
+        for t in &r.tension_n[0] {
+            // Free pistons carry one pressure: round-off of 1e4 N (1e-6 N).
+            assert!((t - m.mean.t1_n).abs() < 1e-6, "t = {}: {t} vs {}", r.t_s, m.mean.t1_n);
+        }
+    }
+    let stroke = checks.iter().find(|c| c.name == STROKE1_CHECK).expect("the stroke check");
+    assert_eq!(stroke.verdict, Verdict::Pass, "{stroke:?}");
+    assert_eq!(stroke.limit, Some(0.5), "half of the 1 m stroke each way");
+    let used = stroke.value.expect("a value");
+    assert!(used > 1e-3 && used < 0.05, "piston travel {used} m");
+    // A 1 mm stroke (±0.5 mm) is used up within the first metres: the pistons rest at their stops,
+    // the check fails and the ropes on side 1 are rigid from there (they deviate).
+    let (scene, checks) = checks_of(&format!("{groove}stroke_m = 0.001\n"));
+    let stroke = checks.iter().find(|c| c.name == STROKE1_CHECK).expect("the stroke check");
+    assert_eq!(stroke.verdict, Verdict::Fail, "{stroke:?}");
+    let ropes = scene.ropes.as_ref().expect("the sharing ran");
+    let spread = ropes.sharing.rows.iter().map(|r| (r.tension_n[0][0] - r.tension_n[0][1]).abs()).fold(0.0, f64::max);
+    assert!(spread > 1.0, "past the stroke the side-1 tensions differ ({spread} N)");
+    // The deviation check is judged against the default 10 % with its rule.
+    let dev = checks.iter().find(|c| c.name == DEVIATION_CHECK).expect("the deviation check");
+    assert_eq!(dev.limit, Some(10.0));
+    assert_eq!(dev.code, "default");
+    assert_eq!(dev.value, Some(ropes.sharing.max_deviation_pct()));
+}
