@@ -91,6 +91,16 @@ pub(super) fn share(
     if !finite {
         return Err(non_finite("ropes.t1_n"));
     }
+    // A rope whose tension falls to m'v² leaves its groove: outside the model (and its creep
+    // arc and safety factor have no value).
+    let m = design.rope.mass_per_m_kg;
+    let slack =
+        out.sharing.rows.iter().any(|r| r.tension_n.iter().flatten().any(|t| *t <= m * r.speed_m_s * r.speed_m_s));
+    if slack {
+        return Err(non_finite(
+            "ropes: a rope's tension at or below m'v² (a slack rope; smaller deviations in [ropes])",
+        ));
+    }
     let rope_dynamics = result.plan.level == crate::planner::Level::Dynamic4;
     result.classical.checks.extend(checks::checks(design, &out, rope_dynamics, &result.name));
     result.ropes = Some(Box::new(out));
