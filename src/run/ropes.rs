@@ -34,19 +34,40 @@ fn travel_at(samples: &[HistorySample], kinematics: &[Kinematics], t_s: f64) -> 
     }
 }
 
+/// Which samples to keep: the first, the last, and the first in each interval of `step_s`.
+fn thinned(samples: &[HistorySample], step_s: f64) -> Vec<bool> {
+    let mut last_cell = f64::NEG_INFINITY;
+    let n = samples.len();
+    samples
+        .iter()
+        .enumerate()
+        .map(|(i, s)| {
+            let cell = (s.t_s / step_s).floor();
+            let keep = i == 0 || i + 1 == n || cell > last_cell;
+            if keep {
+                last_cell = cell;
+            }
+            keep
+        })
+        .collect()
+}
+
 /// Runs the sharing of `set` on a duty cycle's result and appends its checks; `samples` and
-/// `kinematics` are the trip's, `params` the hoist at the trip's start.
+/// `kinematics` are the trip's, `params` the hoist at the trip's start, `step_s` the scene's
+/// output step.
 pub(super) fn share(
     design: &Design,
     set: &RopeSet,
     result: &mut SceneResult,
     (samples, kinematics): (&[HistorySample], &[Kinematics]),
     params: &HoistParams,
+    step_s: f64,
 ) -> Result<(), RunError> {
     let lengths = |t_s: f64| {
         let x = travel_at(samples, kinematics, t_s);
         [params.hanging_length_m(Side::One, x), params.hanging_length_m(Side::Two, x)]
     };
+    let keep = thinned(samples, step_s);
     let rows: Vec<SceneRow> = match &result.history {
         Some(h) => h
             .rows
@@ -62,10 +83,14 @@ pub(super) fn share(
                 accel_m_s2: r.accel_m_s2,
             })
             .collect(),
+        // Level 0: the trip's samples (dense, those of the rigid ropes' motion) thinned to the
+        // scene's output step, as a history's rows would be; the sharing steps by travel, not by row.
         None => samples
             .iter()
             .zip(kinematics)
-            .map(|(s, k)| SceneRow {
+            .enumerate()
+            .filter(|(i, _)| keep[*i])
+            .map(|(_, (s, k))| SceneRow {
                 mean: MeanRow {
                     t_s: s.t_s,
                     t1_n: s.t1_n,
