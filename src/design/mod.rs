@@ -47,6 +47,9 @@ pub struct Design {
     pub load_cases: Option<LoadCases>,
     /// Figures overlaying one quantity from several scenes (`[[compare]]`).
     pub compare: Vec<Compare>,
+    /// The ropes' deviations and attachments of a multi-rope hoist (`[ropes]`), when the sheet
+    /// has the section: duty cycles then share their load among the ropes ([`crate::ropes`]).
+    pub ropes: Option<crate::ropes::RopeSet>,
 }
 
 /// A `[[compare]]` figure: one quantity of several time scenes over time, side by side.

@@ -27,6 +27,7 @@ pub mod plot_series;
 pub mod plot_track;
 pub mod plot_wrap;
 pub mod plot_zones;
+pub mod ropes_out;
 pub mod summary;
 pub mod table;
 pub mod target;
@@ -209,6 +210,9 @@ fn write_scene(
             plot_track::plot_tracks(&scene_dir.join("track.png"), &title, &tracks.tracks, scene.classical.mu)?;
         }
     }
+    if let (Some(ropes), Some(history)) = (&scene.ropes, &scene.history) {
+        write_ropes(&scene_dir, &scene.name, ropes, history, options.plots)?;
+    }
     if options.plots {
         let at = scene.t_s.map_or_else(String::new, |t| format!("t = {t} s, "));
         let title = format!(
@@ -258,6 +262,26 @@ fn write_scene(
                 )?;
             }
         }
+    }
+    Ok(())
+}
+
+/// A multi-rope scene's ropes.csv and (with plots) ropes.png, on the history's instants.
+fn write_ropes(
+    scene_dir: &Path,
+    name: &str,
+    ropes: &crate::ropes::scene::SceneRopes,
+    history: &crate::run::HistoryOutput,
+    plots: bool,
+) -> Result<(), ReportError> {
+    let mean: Vec<(f64, f64)> = history.rows.iter().map(|r| (r.t1_n, r.t2_n)).collect();
+    let path = scene_dir.join("ropes.csv");
+    let f = File::create(&path).map_err(io(&path))?;
+    ropes_out::write_ropes_csv(BufWriter::new(f), ropes, &mean)
+        .map_err(|source| ReportError::Csv { path: path.display().to_string(), source })?;
+    if plots {
+        let title = format!("{name} — each rope's end tensions ({} ropes) and the mean rope", ropes.set.count());
+        ropes_out::plot_ropes(&scene_dir.join("ropes.png"), &title, ropes, &mean)?;
     }
     Ok(())
 }

@@ -205,6 +205,13 @@ pub struct SceneJson {
     /// Rope elements followed through the wrap (scenes with `track_*` keys only).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub tracks: Option<Vec<TrackJson>>,
+    /// Multi-rope load sharing (duty cycles of a sheet with `[ropes]` only): the largest
+    /// deviation of a rope's tension from the mean over every round trip run (%).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub max_rope_deviation_pct: Option<f64>,
+    /// Multi-rope load sharing: the worst rope, each rope's totals, the cylinders' stroke.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub ropes: Option<super::ropes_out::RopesJson>,
 }
 
 /// One followed element in summary.json: when it was on the pulley, its largest forces, its
@@ -323,6 +330,11 @@ impl Summary {
                         .tracks
                         .as_ref()
                         .map(|o| o.tracks.iter().map(|t| TrackJson::of(t, o.element_length_m)).collect()),
+                    max_rope_deviation_pct: s.ropes.as_ref().map(|r| r.sharing.max_deviation_pct()),
+                    ropes: s
+                        .ropes
+                        .as_ref()
+                        .map(|r| super::ropes_out::RopesJson::of(r, design.rope.min_breaking_force_n)),
                 })
                 .collect(),
             design_checks: run.design.as_ref().map(|d| d.checks.clone()),

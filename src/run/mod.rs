@@ -9,6 +9,7 @@ mod derive;
 mod design_checks;
 mod loads;
 mod pipelined;
+mod ropes;
 mod schedule;
 mod share;
 mod shared_run;
@@ -247,6 +248,8 @@ pub struct SceneResult {
     pub hanging_kg: Option<[f64; 2]>,
     /// Rope elements followed through the wrap (time scenes whose sheet asks for them).
     pub tracks: Option<track::TrackOutput>,
+    /// Duty cycles on a sheet with `[ropes]`: each rope's share of the load.
+    pub ropes: Option<Box<crate::ropes::scene::SceneRopes>>,
 }
 
 impl SceneResult {
@@ -440,6 +443,7 @@ fn empty(scene: &Scene, plan: Plan, classical: Classical) -> SceneResult {
         rope_dynamics_safety_factor: None,
         hanging_kg: None,
         tracks: None,
+        ropes: None,
     }
 }
 

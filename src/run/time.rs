@@ -134,6 +134,9 @@ pub(super) fn run_duty_cycle(
     if let Some(stop) = &result.stop {
         trip::push_stop_checks(design, &mut result.classical, stop, &trip, &scene.name);
     }
+    if let Some(set) = &design.ropes {
+        super::ropes::share(design, set, &mut result, (&trip.samples, &trip.kinematics), &params, cycle.output_step_s)?;
+    }
     Ok(DutyCycleRun { result, ropes: dynamics.map(|(ropes, _)| ropes), kept })
 }
 

@@ -29,6 +29,7 @@ pub struct Sections {
     pub load_cases: Option<Spanned<RawLoadCases>>,
     pub document: Option<Spanned<super::document::RawDocument>>,
     pub compare: Option<Spanned<Vec<Spanned<super::raw::RawCompare>>>>,
+    pub ropes: Option<Spanned<super::ropes::RawRopes>>,
 }
 
 pub fn design(c: &mut Collector, s: Sections) -> Option<Design> {
@@ -90,6 +91,8 @@ pub fn design(c: &mut Collector, s: Sections) -> Option<Design> {
             None
         }
     };
+    let ropes = super::ropes::ropes(c, &s.ropes, rope.as_ref());
+    let ropes = if s.present.contains(&"ropes") && s.ropes.is_none() { None } else { ropes };
     let lining = super::lining::lining_section(c, &s.lining, &s.present, &s.rope, rope.as_ref());
     let document = super::document::document(c, &s.document);
     let compare = super::compare::compare(c, &s.compare, s.present.contains(&"compare"), scenes.as_deref());
@@ -107,6 +110,7 @@ pub fn design(c: &mut Collector, s: Sections) -> Option<Design> {
         machine: machine?,
         load_cases: load_cases?,
         compare: compare?,
+        ropes: ropes?,
     })
 }
 

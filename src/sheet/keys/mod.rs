@@ -3,6 +3,7 @@
 //! (`docs/sheet.md`) and the JSON Schema (`wrapcalc schema`) are generated from this registry,
 //! and tests hold it equal to what the parser accepts.
 
+mod ropes;
 mod scene;
 mod sections;
 
@@ -325,6 +326,7 @@ pub struct SceneKind {
 /// Every table of the sheet, the top level first, in the order of the reference.
 pub fn tables() -> Vec<Table> {
     let mut out = sections::tables();
+    out.extend(ropes::tables());
     out.push(scene::table());
     out
 }

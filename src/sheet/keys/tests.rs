@@ -61,7 +61,7 @@ fn registry(path: &str) -> BTreeSet<&'static str> {
 
 #[test]
 fn every_table_has_the_parsers_keys_and_no_other() {
-    let parser: [(&str, BTreeSet<&str>); 13] = [
+    let parser: [(&str, BTreeSet<&str>); 16] = [
         ("", crate::sheet::TOP_LEVEL_KEYS.iter().copied().collect()),
         ("pulley", fields::<RawPulley>()),
         ("pulley.guide", fields::<RawGuide>()),
@@ -75,6 +75,9 @@ fn every_table_has_the_parsers_keys_and_no_other() {
         ("load_cases", fields::<RawLoadCases>()),
         ("compare", fields::<RawCompare>()),
         ("scene", fields::<RawScene>()),
+        ("ropes", fields::<crate::sheet::ropes::RawRopes>()),
+        ("ropes.conveyance1", fields::<crate::sheet::ropes::RawAttachment>()),
+        ("ropes.conveyance2", fields::<crate::sheet::ropes::RawAttachment>()),
     ];
     for (path, keys) in &parser {
         assert!(!keys.is_empty(), "no fields recorded for {path:?}");
@@ -193,6 +196,7 @@ fn the_registrys_ranges_are_the_parsers() {
         ("hoist.stage", "[[hoist.stage]]"),
         ("requirements", ""),
         ("load_cases", ""),
+        ("ropes", ""),
     ];
     let all = tables();
     let mut probed = 0;
