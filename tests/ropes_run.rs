@@ -10,7 +10,7 @@ mod common;
 use common::run_wrapcalc;
 use std::collections::BTreeMap;
 use std::path::Path;
-use wrapcalc::roots::Holding;
+use wrapcalc::numerics::roots::Holding;
 use wrapcalc::ropes::margin::groove_tolerance_of;
 use wrapcalc::ropes::scene::{SceneRow, share_scene};
 use wrapcalc::ropes::{Attachment, Hoisting, MeanRow, RopeSet};

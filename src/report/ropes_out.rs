@@ -220,9 +220,9 @@ impl RopesJson {
             stroke_used_m: r.sharing.stroke_used_m(),
             stroke_available_m: [half(r.set.attachment[0]), half(r.set.attachment[1])],
             groove_tolerance_m: match r.groove_tolerance {
-                crate::roots::Holding::Until(x) => Some(x),
-                crate::roots::Holding::Throughout => Some(crate::ropes::margin::SEARCH_MAX_M),
-                crate::roots::Holding::NotAtStart => Some(0.0),
+                crate::numerics::roots::Holding::Until(x) => Some(x),
+                crate::numerics::roots::Holding::Throughout => Some(crate::ropes::margin::SEARCH_MAX_M),
+                crate::numerics::roots::Holding::NotAtStart => Some(0.0),
                 _ => None,
             },
             groove_tolerance_rope: r.tolerance_rope + 1,

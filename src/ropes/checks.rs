@@ -7,9 +7,9 @@
 use super::scene::{SceneRopes, WorstRope};
 use super::{Attachment, DEFAULT_DEVIATION_SOURCE};
 use crate::check::{Check, Relation, q};
+use crate::design::requirements::Rule;
 use crate::design::{Design, Limit};
-use crate::requirements::Rule;
-use crate::roots::Holding;
+use crate::numerics::roots::Holding;
 
 /// Name of the check of the largest deviation from the mean tension.
 pub const DEVIATION_CHECK: &str = "rope tension deviation from the mean";

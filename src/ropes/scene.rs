@@ -6,7 +6,7 @@
 use super::margin::groove_tolerance_of;
 use super::trip::{Sharing, creep_arc_deg, run, safety_factor};
 use super::{Hoisting, MeanRow, RopeSet};
-use crate::roots::Holding;
+use crate::numerics::roots::Holding;
 
 /// One instant of the scene: the mean rope and whether the hoist is at rest (v = 0, a = 0).
 #[derive(Debug, Clone, Copy, PartialEq)]

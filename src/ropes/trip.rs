@@ -253,7 +253,9 @@ pub fn relieve_slip(h: &Hoisting, set: &RopeSet, state: &mut RopeState, row: &Me
 pub fn safety_factor(h: &Hoisting, t1: f64, t2: f64, v: f64) -> Option<f64> {
     let (hi, lo) = (t1.max(t2), t1.min(t2));
     let c = h.mass_per_m_kg * v * v;
-    (hi > lo).then(|| (lo - c) * ((h.mu * h.wrap_angle_rad).exp() - 1.0) / (hi - lo))
+    // Equal to rounding is equal (see `level0::safety_factor`): no factor of 10¹⁵.
+    (hi - lo > crate::model::level0::EQUAL_TENSIONS_REL * hi.abs())
+        .then(|| (lo - c) * ((h.mu * h.wrap_angle_rad).exp() - 1.0) / (hi - lo))
 }
 
 /// Creep arc of one rope (deg), capped at the wrap.

@@ -126,7 +126,7 @@ pub(super) fn share(
             "ropes: a rope's tension at or below m'v² (a slack rope; smaller deviations in [ropes])",
         ));
     }
-    let rope_dynamics = result.plan.level == crate::planner::Level::Dynamic4;
+    let rope_dynamics = result.plan.level == crate::plan::Level::Dynamic4;
     result.classical.checks.extend(checks::checks(design, &out, rope_dynamics, &result.name));
     result.ropes = Some(Box::new(out));
     Ok(())
