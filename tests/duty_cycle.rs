@@ -71,7 +71,7 @@ fn first_row_is_the_static_equilibrium() {
     let d = design();
     let r = &run_scenes(&d, &["duty-MID"])[0];
     let history = r.history.as_ref().unwrap();
-    let row = history.rows[0];
+    let row = &history.rows[0];
     assert_eq!(history.anchors_n.len(), history.rows.len(), "an anchor pair for every row");
     let cage = (65_000.0 + 30_000.0 + 69.0 * 28.25) * 9.81 / 6.0;
     let counterweight = (95_000.0 + 69.0 * 453.25) * 9.81 / 6.0;

@@ -223,13 +223,13 @@ fn mirror_law(mu: f64, wrap_deg: f64, m_per_m: f64, samples: &[HistorySample]) -
         sa.reverse_arc_rad,
         sb.positive_arc_rad
     );
-    // The JDP is read from θ = 0 (the first sign change): it mirrors where friction
-    // changes sign once, positive then reverse.
-    let single = |f: &TensionField| sign_changes(f, mu, c) == 1;
-    if single(&a)
-        && single(&b)
-        && let (Some(ja), Some(jb)) = (sa.jdp_rad, sb.jdp_rad)
-    {
+    // Every demarcation mirrors (the mirror's, mapped back in reverse order, ends the stick gap
+    // that starts at the original's), and so does the principal one, the JDP, whatever the
+    // number of sign changes.
+    prop_assert_eq!(sa.demarcations_rad.len(), sb.demarcations_rad.len(), "demarcations");
+    let pairs = sa.demarcations_rad.iter().copied().zip(sb.demarcations_rad.iter().rev().copied());
+    prop_assert_eq!(sa.jdp_rad.is_some(), sb.jdp_rad.is_some(), "a JDP in both or neither");
+    for (ja, jb) in pairs.chain(sa.jdp_rad.zip(sb.jdp_rad)) {
         // The mirror's JDP, mapped back, ends the stick gap that starts at the original's.
         // Both are placed to the arcs' 1e-6°: a shorter gap is no gap.
         let place = 1e-6f64.to_radians();
@@ -302,27 +302,6 @@ fn final_state(p: Params, samples: &[HistorySample], start: f64) -> (TensionFiel
     sim.settle().expect("settles");
     sim.advance_to(samples[samples.len() - 1].t_s).expect("a valid history runs");
     (sim.profile.field(), sim.gross_slip)
-}
-
-/// How often friction changes sign along the wrap (stretches above the arc threshold only),
-/// read piece by piece (at both ends and the middle of each) so that no sliver is missed.
-fn sign_changes(field: &TensionField, mu: f64, c: f64) -> usize {
-    let law = ContactLaw::new(mu, c);
-    let mut last = 0.0;
-    let mut changes = 0;
-    for p in &field.pieces {
-        for th in [p.theta0_rad, 0.5 * (p.theta0_rad + p.theta1_rad), p.theta1_rad] {
-            if law.utilization(p, th) < 1e-3 {
-                continue;
-            }
-            let s = p.friction_n_per_rad(th).signum();
-            if last != 0.0 && s != last {
-                changes += 1;
-            }
-            last = s;
-        }
-    }
-    changes
 }
 
 fn summary(field: &TensionField, mu: f64, c: f64) -> wrapcalc::wrap::summary::WrapSummary {

@@ -471,6 +471,7 @@ mod tests {
             speed_m_s: 0.0,
             accel_m_s2: 0.0,
             jdp_deg: None,
+            demarcations_deg: Vec::new(),
             positive_arc_deg: pos,
             reverse_arc_deg: 0.0,
             max_utilization: 0.0,

@@ -74,7 +74,7 @@ pub enum CompareQuantity {
 
 /// The columns of history.csv in order (docs/interface.md), each with whether a `[[compare]]`
 /// figure can overlay it (every number but the time).
-pub const HISTORY_COLUMNS: [(&str, bool); 15] = [
+pub const HISTORY_COLUMNS: [(&str, bool); 16] = [
     ("t_s", false),
     ("t1_n", true),
     ("t2_n", true),
@@ -90,6 +90,7 @@ pub const HISTORY_COLUMNS: [(&str, bool); 15] = [
     ("anchor2_n", true),
     ("mid1_n", true),
     ("mid2_n", true),
+    ("demarcations_deg", false),
 ];
 
 /// The history.csv columns a `[[compare]]` figure can overlay, in history.csv's order.

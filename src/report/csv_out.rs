@@ -71,7 +71,7 @@ pub fn write_history<W: Write>(
         row.num(r.t_s).num(r.t1_n).num(r.t2_n).num(r.speed_m_s).num(r.accel_m_s2).opt(r.jdp_deg);
         row.num(r.positive_arc_deg).num(r.reverse_arc_deg).num(r.max_utilization).opt(r.safety_factor);
         row.flag(r.gross_slip).opt(anchors.map(|a| a[0])).opt(anchors.map(|a| a[1]));
-        row.opt(mids.map(|a| a[0])).opt(mids.map(|a| a[1])).end()?;
+        row.opt(mids.map(|a| a[0])).opt(mids.map(|a| a[1])).demarcations(&r.demarcations_deg).end()?;
     }
     row.finish()
 }
@@ -137,6 +137,18 @@ impl<W: Write> Rows<W> {
             Some(x) => self.num(x),
             None => self.text(""),
         }
+    }
+
+    /// Demarcation points (deg) in one field, separated by `;` (empty without one).
+    fn demarcations(&mut self, degrees: &[f64]) -> &mut Self {
+        let mut field = Vec::new();
+        for (i, d) in degrees.iter().enumerate() {
+            if i > 0 {
+                field.push(b';');
+            }
+            number::write(*d, &mut field);
+        }
+        self.text(&String::from_utf8_lossy(&field))
     }
 
     /// `true` or `false`.

@@ -208,6 +208,7 @@ mod tests {
             speed_m_s,
             accel_m_s2: 0.0,
             jdp_deg: None,
+            demarcations_deg: Vec::new(),
             positive_arc_deg: 90.0,
             reverse_arc_deg: 90.0,
             max_utilization: 1.0,

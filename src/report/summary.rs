@@ -205,6 +205,9 @@ pub struct SceneJson {
     /// Rope elements followed through the wrap (scenes with `track_*` keys only).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub tracks: Option<Vec<TrackJson>>,
+    /// Every demarcation point of the reported state's wrap, in θ order (deg); the scalar
+    /// `jdp_deg` is the principal one (docs/physics.md, JDP).
+    pub demarcations_deg: Vec<f64>,
     /// Multi-rope load sharing (duty cycles of a sheet with `[ropes]` only): the largest
     /// deviation of a rope's tension from the mean over every round trip run (%).
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -319,6 +322,11 @@ impl Summary {
                 .map(|s| SceneJson {
                     summary: SceneSummary::of(s),
                     checks: s.classical.checks.clone(),
+                    demarcations_deg: s
+                        .wrap
+                        .as_ref()
+                        .map(|w| w.summary.demarcations_rad.iter().map(|r| r.to_degrees()).collect())
+                        .unwrap_or_default(),
                     root_finding: s.wrap.as_ref().map(|w| w.summary.roots),
                     solver: s.history.as_ref().map(|h| h.stats),
                     level3_solver: s.level3,

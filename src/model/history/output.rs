@@ -13,7 +13,7 @@ use serde::Serialize;
 pub const MAP_COLUMNS: usize = 181;
 
 /// One row of history.csv.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct HistoryRow {
     /// Time of the row in the history (s).
     pub t_s: f64,
@@ -25,7 +25,8 @@ pub struct HistoryRow {
     pub speed_m_s: f64,
     /// Acceleration, positive in the direction of v > 0 (m/s²).
     pub accel_m_s2: f64,
-    /// Demarcation point (JDP, deg; none without a sign change of the friction).
+    /// Demarcation point (JDP, deg; none without a sign change of the friction), the principal
+    /// one where there are several.
     pub jdp_deg: Option<f64>,
     /// Length of the positive-friction arc (deg).
     pub positive_arc_deg: f64,
@@ -37,6 +38,8 @@ pub struct HistoryRow {
     pub safety_factor: Option<f64>,
     /// Whether the rope slips over the whole wrap.
     pub gross_slip: bool,
+    /// Every demarcation point of the row's wrap, in θ order (deg).
+    pub demarcations_deg: Vec<f64>,
 }
 
 /// The wrap at one reported time.
@@ -93,6 +96,7 @@ impl HistoryRun {
             speed_m_s: end.speed_m_s,
             accel_m_s2: end.accel_m_s2,
             jdp_deg: summary.jdp_rad.map(f64::to_degrees),
+            demarcations_deg: summary.demarcations_rad.iter().map(|r| r.to_degrees()).collect(),
             positive_arc_deg: summary.positive_arc_rad.to_degrees(),
             reverse_arc_deg: summary.reverse_arc_rad.to_degrees(),
             max_utilization: summary.max_utilization,

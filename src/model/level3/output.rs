@@ -8,7 +8,7 @@ use crate::model::history::{
 };
 use crate::numerics::roots::{RootError, RootStats, brent};
 use crate::wrap::contact::{ARC_THRESHOLD, ContactLaw, SLIP_UTILIZATION};
-use crate::wrap::summary::{ArcTally, WrapSummary, ZoneRuns};
+use crate::wrap::summary::{ArcTally, WrapSummary, ZoneRuns, principal};
 use crate::wrap::{Distribution, Sample};
 
 /// The elastic-lining model as the history runner sees it: one distribution row per segment
@@ -128,8 +128,6 @@ pub fn summarize(state: &State, mu: f64, zones: bool) -> Result<WrapSummary, Roo
     let mut roots = RootStats::default();
     let mut runs = ZoneRuns::default();
     let law = ContactLaw::new(mu, 0.0);
-    let mut last_positive: Option<usize> = None;
-    let mut jdp = None;
     for k in 0..n {
         let u = state.utilization(k, mu);
         let q = state.friction_n[k];
@@ -137,22 +135,20 @@ pub fn summarize(state: &State, mu: f64, zones: bool) -> Result<WrapSummary, Roo
         let (a, b) = (k as f64 * h, (k + 1) as f64 * h);
         let above = u >= ARC_THRESHOLD;
         arcs.add(a, b, above, q > 0.0);
-        if above && q > 0.0 {
-            last_positive = Some(k);
-        }
-        if above
-            && q < 0.0
-            && jdp.is_none()
-            && let Some(p) = last_positive
-        {
-            jdp = Some(sign_change(state, p, k, &mut roots)?);
-        }
         if zones {
             runs.push(a, b, law.state(if u >= SLIP_UTILIZATION { 1.0 } else { 0.0 }, q));
         }
     }
-    // The JDP is the sign change found above, not the end of the positive arc.
-    Ok(WrapSummary { jdp_rad: jdp, ..arcs.summary(max_u, runs, roots) })
+    // Each demarcation at the sign change of q between its runs' segments, not at the end of
+    // the positive run's last segment; the JDP the principal one of these.
+    let segment = |theta: f64| (theta / h).round() as usize;
+    let mut marks = arcs.demarcations();
+    for d in &mut marks {
+        d.at_rad = sign_change(state, segment(d.at_rad) - 1, segment(d.gap_end_rad), &mut roots)?;
+    }
+    let jdp_rad = principal(&marks, state.wrap_angle_rad).map(|d| d.at_rad);
+    let demarcations_rad = marks.iter().map(|d| d.at_rad).collect();
+    Ok(WrapSummary { jdp_rad, demarcations_rad, ..arcs.summary(max_u, runs, roots) })
 }
 
 /// The first zero of the piecewise linear q(θ) through the midpoints of segments `p` (q > 0)
