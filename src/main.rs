@@ -289,7 +289,10 @@ fn execute(cli: Cli) -> anyhow::Result<bool> {
         Command::Run(args) => run_command(args),
         Command::Bench(args) => bench_command(args).map(|()| true),
         Command::Check(args) => {
-            let design = sheet::load(&args.sheet)?;
+            let design = match sheet::load_sheet(&args.sheet)? {
+                sheet::Sheet::Hoist(design) => design,
+                sheet::Sheet::Lift(lift) => return lift_command(&lift, None, args.format, false),
+            };
             let scenes: Vec<&Scene> = design.scenes.iter().collect();
             let options = Options { request: Request::ChecksOnly, ..Options::default() };
             let result =
@@ -359,6 +362,13 @@ fn bench_command(args: BenchArgs) -> anyhow::Result<()> {
 
 /// A sweep exits 0 once it ran, whatever the checks at its points say (they are in sweep.csv).
 fn sweep_command(args: SweepArgs) -> anyhow::Result<()> {
+    if let sheet::Sheet::Lift(_) = sheet::load_sheet(&args.sheet)? {
+        anyhow::bail!(
+            "{}: sweep is not available for lift sheets ([lift]); run the sheet with `wrapcalc run`, \
+             whose traction cases give the critical friction coefficient and the car load at which traction is lost",
+            args.sheet.display()
+        );
+    }
     let shard = args.shard.as_deref().map(sweep::grid::Shard::parse).transpose()?;
     let forced_level = args.model.level.forced();
     let spec = sweep::Spec {
@@ -450,8 +460,44 @@ fn run_bar(estimated_s: f64, quiet: bool) -> indicatif::ProgressBar {
     bar
 }
 
+/// A lift sheet's `run` (with a report directory) or `check` (without): EN 81-50's checks and
+/// each traction case's wrap; `Ok(pass)` as for a hoist.
+fn lift_command(
+    lift: &wrapcalc::lift::Lift,
+    out: Option<(&Path, bool)>,
+    format: Format,
+    quiet: bool,
+) -> anyhow::Result<bool> {
+    use wrapcalc::lift::output;
+    let run = output::evaluate(lift).map_err(|e| anyhow::anyhow!("{}: {e}", lift.sheet))?;
+    if let Some((dir, plots)) = out {
+        output::write(dir, lift, &run, plots)?;
+    }
+    match format {
+        Format::Json => println!("{}", output::LiftSummary::of(lift, &run).to_json()),
+        Format::Table if !quiet => {
+            print!("{}", output::table(lift, &run));
+            if let Some((dir, _)) = out {
+                println!("report written to {}", dir.display());
+            }
+        }
+        Format::Table => {}
+    }
+    Ok(run.all_checks_pass())
+}
+
 fn run_command(args: RunArgs) -> anyhow::Result<bool> {
-    let design = sheet::load(&args.sheet)?;
+    let design = match sheet::load_sheet(&args.sheet)? {
+        sheet::Sheet::Hoist(design) => *design,
+        sheet::Sheet::Lift(lift) => {
+            if !args.scenes.is_empty() {
+                anyhow::bail!("{}: --scene is not available for lift sheets: every traction case runs", lift.sheet);
+            }
+            let out_dir = args.out.clone().unwrap_or_else(|| default_out_dir(&args.sheet));
+            refuse_foreign(&out_dir)?;
+            return lift_command(&lift, Some((&out_dir, !args.no_plots)), args.format, args.quiet);
+        }
+    };
     let scenes = design.select_scenes(&args.scenes).map_err(|e| anyhow::anyhow!("{}: {e}", design.sheet))?;
     let forced_level = args.model.level.forced();
     let options = Options {

@@ -3,6 +3,7 @@
 //! (`docs/sheet.md`) and the JSON Schema (`wrapcalc schema`) are generated from this registry,
 //! and tests hold it equal to what the parser accepts.
 
+mod lift;
 mod scene;
 mod sections;
 
@@ -326,6 +327,7 @@ pub struct SceneKind {
 pub fn tables() -> Vec<Table> {
     let mut out = sections::tables();
     out.push(scene::table());
+    out.extend(lift::tables());
     out
 }
 

@@ -61,7 +61,7 @@ fn registry(path: &str) -> BTreeSet<&'static str> {
 
 #[test]
 fn every_table_has_the_parsers_keys_and_no_other() {
-    let parser: [(&str, BTreeSet<&str>); 13] = [
+    let parser: [(&str, BTreeSet<&str>); 15] = [
         ("", crate::sheet::TOP_LEVEL_KEYS.iter().copied().collect()),
         ("pulley", fields::<RawPulley>()),
         ("pulley.guide", fields::<RawGuide>()),
@@ -75,6 +75,8 @@ fn every_table_has_the_parsers_keys_and_no_other() {
         ("load_cases", fields::<RawLoadCases>()),
         ("compare", fields::<RawCompare>()),
         ("scene", fields::<RawScene>()),
+        ("lift", fields::<crate::sheet::lift::RawLift>()),
+        ("lift.pulley", fields::<crate::sheet::lift::RawLiftPulley>()),
     ];
     for (path, keys) in &parser {
         assert!(!keys.is_empty(), "no fields recorded for {path:?}");
