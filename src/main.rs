@@ -469,7 +469,7 @@ fn lift_command(
     quiet: bool,
 ) -> anyhow::Result<bool> {
     use wrapcalc::lift::output;
-    let run = output::evaluate(lift).map_err(|e| anyhow::anyhow!("{}: {e}", lift.sheet))?;
+    let run = output::evaluate(lift, out.is_some()).map_err(|e| anyhow::anyhow!("{}: {e}", lift.sheet))?;
     if let Some((dir, plots)) = out {
         output::write(dir, lift, &run, plots)?;
     }

@@ -45,7 +45,7 @@ pub enum Groove {
 }
 
 /// Why a groove's angles are outside its formula's range.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum GrooveError {
     /// β is outside its range.
     #[error("the undercut angle β must satisfy {0}")]
@@ -53,6 +53,9 @@ pub enum GrooveError {
     /// γ is outside its range.
     #[error("the groove angle γ must satisfy {0}")]
     Gamma(&'static str),
+    /// β + γ reaches 180°: the undercut leaves no seat (cos(γ/2) ≤ sin(β/2)).
+    #[error("β + γ must stay below 180° (the undercut leaves no seat for the rope); here it is {0:.1}°")]
+    Sum(f64),
 }
 
 /// The range of β of the semicircular/undercut and the unhardened V formulas.
@@ -70,8 +73,9 @@ impl Groove {
         match groove {
             Groove::Semicircular { gamma_rad } if !angle(gamma_rad) => Err(GrooveError::Gamma(GAMMA_U_RANGE)),
             Groove::Undercut { beta_rad, .. } if !angle(beta_rad) => Err(GrooveError::Beta(BETA_RANGE)),
-            Groove::Undercut { beta_rad, gamma_rad } if !angle(gamma_rad) || beta_rad + gamma_rad >= PI => {
-                Err(GrooveError::Gamma(GAMMA_U_RANGE))
+            Groove::Undercut { gamma_rad, .. } if !angle(gamma_rad) => Err(GrooveError::Gamma(GAMMA_U_RANGE)),
+            Groove::Undercut { beta_rad, gamma_rad } if beta_rad + gamma_rad >= PI => {
+                Err(GrooveError::Sum((beta_rad + gamma_rad).to_degrees()))
             }
             Groove::VHardened { gamma_rad } if !(gamma_rad > 0.0 && gamma_rad < PI) => {
                 Err(GrooveError::Gamma(GAMMA_V_RANGE))

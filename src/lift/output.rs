@@ -5,7 +5,7 @@
 
 use super::cases::Case;
 use super::checks::{self, Limits, Traction};
-use super::wrap::{CaseWrap, case_wrap};
+use super::wrap::{CaseWrap, Margins, case_wrap, margins};
 use super::{Lift, RULE_SET};
 use crate::check::{Check, Verdict};
 use crate::report::{self, ReportError, csv_out, io, plot_distribution, target::ReportKind};
@@ -25,7 +25,7 @@ pub struct CaseSummary {
     pub name: &'static str,
     /// Always `"traction-case"`.
     pub kind: &'static str,
-    /// The model level of the distribution (1: creep theory).
+    /// The model level: 0 (`check`: the capstan law only), 1 (`run`: the distribution by creep theory).
     pub level: u8,
     /// Side-1 tension per rope at the sheave (N).
     pub t1_n: f64,
@@ -46,20 +46,20 @@ pub struct CaseSummary {
     /// `T_hi/T_lo` (null when the lower tension is 0).
     pub tension_ratio: Option<f64>,
     /// Active (creep) arc ln(T_hi/T_lo)/f (deg).
-    pub dynamic_angle_deg: f64,
+    pub dynamic_angle_deg: Option<f64>,
     /// α − ln(T_hi/T_lo)/f (deg; negative: arc missing to hold).
-    pub reserve_angle_deg: f64,
-    /// Idle (stick) arc (deg).
-    pub idle_arc_deg: f64,
-    /// Arc of positive friction (deg).
-    pub positive_arc_deg: f64,
-    /// Arc of reverse friction (deg).
-    pub reverse_arc_deg: f64,
-    /// Demarcation point (deg from the side-1 tangent point), null without one.
+    pub reserve_angle_deg: Option<f64>,
+    /// Idle (stick) arc (deg; level 1).
+    pub idle_arc_deg: Option<f64>,
+    /// Arc of positive friction (deg; level 1).
+    pub positive_arc_deg: Option<f64>,
+    /// Arc of reverse friction (deg; level 1).
+    pub reverse_arc_deg: Option<f64>,
+    /// Demarcation point (deg from the side-1 tangent point; level 1), null without one.
     pub jdp_deg: Option<f64>,
-    /// Peak friction utilization |q|/(fn).
-    pub max_utilization: f64,
-    /// Whether the ropes slide over the whole wrap.
+    /// Peak friction utilization |q|/(fn) (level 1).
+    pub max_utilization: Option<f64>,
+    /// Whether the ropes slide over the whole wrap (the ratio exceeds e^{fα}).
     pub gross_slip: bool,
     /// Whether the case requires the ropes to slip (car stalled).
     pub must_slip: bool,
@@ -71,13 +71,24 @@ pub struct CaseSummary {
     pub checks_pass: bool,
 }
 
+/// One traction case of a run.
+#[derive(Debug, Clone)]
+pub struct LiftCase {
+    /// The case's tensions and verdict.
+    pub traction: Traction,
+    /// Its margins (level 0).
+    pub margins: Margins,
+    /// Its wrap at level 1 (`None` for `check`).
+    pub wrap: Option<CaseWrap>,
+}
+
 /// A lift run: the checks and the cases with their wraps.
 #[derive(Debug, Clone)]
 pub struct LiftRun {
     /// Every check, in report order.
     pub checks: Vec<Check>,
-    /// The traction cases.
-    pub cases: Vec<(Traction, CaseWrap)>,
+    /// The traction cases: each with its margins and, at level 1, its wrap.
+    pub cases: Vec<LiftCase>,
     /// Run time (ms).
     pub runtime_ms: f64,
 }
@@ -89,22 +100,28 @@ impl LiftRun {
     }
 }
 
-/// Runs the checks and each case's level-1 wrap.
-pub fn evaluate(lift: &Lift) -> Result<LiftRun, String> {
+/// Runs the checks and, with `wraps`, each case's level-1 wrap.
+pub fn evaluate(lift: &Lift, wraps: bool) -> Result<LiftRun, String> {
     let start = std::time::Instant::now();
     let limits = Limits::of(lift)?;
     let (checks, cases) = checks::all(lift, &limits);
-    let cases =
-        cases.into_iter().map(|t| case_wrap(lift, &t, NODES).map(|w| (t, w))).collect::<Result<Vec<_>, String>>()?;
+    let cases = cases
+        .into_iter()
+        .map(|t| {
+            let wrap = if wraps { Some(case_wrap(lift, &t, NODES)?) } else { None };
+            Ok(LiftCase { margins: margins(lift, &t), traction: t, wrap })
+        })
+        .collect::<Result<Vec<_>, String>>()?;
     Ok(LiftRun { checks, cases, runtime_ms: start.elapsed().as_secs_f64() * 1e3 })
 }
 
-fn case_summary(lift: &Lift, t: &Traction, w: &CaseWrap) -> CaseSummary {
+fn case_summary(lift: &Lift, case: &LiftCase) -> CaseSummary {
     let deg = f64::to_degrees;
+    let (t, m, w) = (&case.traction, &case.margins, case.wrap.as_ref());
     CaseSummary {
         name: t.case.name(),
         kind: "traction-case",
-        level: 1,
+        level: u8::from(w.is_some()),
         t1_n: t.tensions.t1_n,
         t2_n: t.tensions.t2_n,
         speed_m_s: t.tensions.speed_m_s,
@@ -114,17 +131,17 @@ fn case_summary(lift: &Lift, t: &Traction, w: &CaseWrap) -> CaseSummary {
         wrap_angle_deg: deg(lift.wrap_angle_rad),
         euler_limit: t.euler_limit,
         tension_ratio: t.ratio,
-        dynamic_angle_deg: deg(lift.wrap_angle_rad - w.reserve_arc_rad),
-        reserve_angle_deg: deg(w.reserve_arc_rad),
-        idle_arc_deg: deg(w.summary.idle_arc_rad),
-        positive_arc_deg: deg(w.summary.positive_arc_rad),
-        reverse_arc_deg: deg(w.summary.reverse_arc_rad),
-        jdp_deg: w.summary.jdp_rad.map(deg),
-        max_utilization: w.summary.max_utilization,
-        gross_slip: w.gross_slip,
+        dynamic_angle_deg: m.reserve_arc_rad.map(|r| deg(lift.wrap_angle_rad - r)),
+        reserve_angle_deg: m.reserve_arc_rad.map(deg),
+        idle_arc_deg: w.map(|w| deg(w.summary.idle_arc_rad)),
+        positive_arc_deg: w.map(|w| deg(w.summary.positive_arc_rad)),
+        reverse_arc_deg: w.map(|w| deg(w.summary.reverse_arc_rad)),
+        jdp_deg: w.and_then(|w| w.summary.jdp_rad.map(deg)),
+        max_utilization: w.map(|w| w.summary.max_utilization),
+        gross_slip: t.ratio.is_none_or(|r| r > t.euler_limit),
         must_slip: t.case.must_slip(),
-        critical_mu: w.critical_mu,
-        traction_loss_load_kg: w.traction_loss_load_kg,
+        critical_mu: m.critical_mu,
+        traction_loss_load_kg: m.traction_loss_load_kg,
         checks_pass: t.holds(),
     }
 }
@@ -183,7 +200,7 @@ impl LiftSummary {
             headline,
             runtime_ms: run.runtime_ms,
             code: crate::codes::find(RULE_SET).map(|s| CodeRef { id: RULE_SET, code: s.code, edition: s.edition }),
-            scenes: run.cases.iter().map(|(t, w)| case_summary(lift, t, w)).collect(),
+            scenes: run.cases.iter().map(|c| case_summary(lift, c)).collect(),
             checks: run.checks.clone(),
         }
     }
@@ -207,7 +224,7 @@ pub fn write(dir: &Path, lift: &Lift, run: &LiftRun, plots: bool) -> Result<(), 
             w.serialize(s).map_err(|source| ReportError::Csv { path: csv_path.display().to_string(), source })?;
         }
         w.flush().map_err(io(&csv_path))?;
-        for (t, wrap) in &run.cases {
+        for (t, wrap) in run.cases.iter().filter_map(|c| Some((&c.traction, c.wrap.as_ref()?))) {
             let case_dir = staged.join(t.case.name());
             fs::create_dir_all(&case_dir).map_err(io(&case_dir))?;
             let path = case_dir.join("distribution.csv");
@@ -237,21 +254,21 @@ pub fn table(lift: &Lift, run: &LiftRun) -> String {
     }
     let _ = writeln!(
         out,
-        "\nCases (level 1, f in place of μ):\n  {:<22} {:>9} {:>9} {:>8} {:>8} {:>9} {:>8} {:>8} {:>10}",
+        "\nCases (f in place of μ; arcs and JDP at level 1, by `run`):\n  {:<22} {:>9} {:>9} {:>8} {:>8} {:>9} {:>8} {:>8} {:>10}",
         "case", "T1/T2", "e^fα", "f", "idle°", "reserve°", "JDP°", "μ_crit", "slip"
     );
-    for (t, w) in &run.cases {
-        let s = case_summary(lift, t, w);
+    for case in &run.cases {
+        let s = case_summary(lift, case);
         let opt = |x: Option<f64>, p: usize| x.map_or_else(|| "—".to_string(), |v| format!("{v:.p$}"));
         let _ = writeln!(
             out,
-            "  {:<22} {:>9} {:>9.4} {:>8.4} {:>8.1} {:>9.1} {:>8} {:>8} {:>10}",
+            "  {:<22} {:>9} {:>9.4} {:>8.4} {:>8} {:>9} {:>8} {:>8} {:>10}",
             s.name,
             opt(s.tension_ratio, 4),
             s.euler_limit,
             s.groove_factor,
-            s.idle_arc_deg,
-            s.reserve_angle_deg,
+            opt(s.idle_arc_deg, 1),
+            opt(s.reserve_angle_deg, 1),
             opt(s.jdp_deg, 1),
             opt(s.critical_mu, 4),
             if s.gross_slip { "gross slip" } else { "holds" }

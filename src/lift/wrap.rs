@@ -28,15 +28,30 @@ pub struct CaseWrap {
     pub gross_slip: bool,
     /// Active (creep) arc β = ln(T1/T2)/f (rad), α in gross slip.
     pub active_arc_rad: f64,
+}
+
+/// A case's margins from its end tensions alone (level 0): the friction coefficient at which
+/// it starts to slip and the car load at which traction is lost.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Margins {
     /// Reserve arc α − ln(T1/T2)/f (rad; negative: the arc missing to hold).
-    pub reserve_arc_rad: f64,
+    pub reserve_arc_rad: Option<f64>,
     /// The friction coefficient μ at which this state starts to slip (`None`: above
     /// [`MU_SEARCH_MAX`], or the ratio is unbounded).
     pub critical_mu: Option<f64>,
     /// The load in the car at which traction is lost in this case's position and motion
-    /// (`None` for the cases without a load to vary, or when traction holds for any load up to
-    /// the search's end).
+    /// (`None` for the cases without a load to vary, when traction fails already with the empty
+    /// car, or when it holds for any load up to the search's end).
     pub traction_loss_load_kg: Option<f64>,
+}
+
+/// The margins of one case.
+pub fn margins(lift: &Lift, t: &Traction) -> Margins {
+    Margins {
+        reserve_arc_rad: t.ratio.map(|r| lift.wrap_angle_rad - r.ln() / t.f),
+        critical_mu: t.ratio.and_then(|r| critical_mu(lift, r)),
+        traction_loss_load_kg: traction_loss_load(lift, t),
+    }
 }
 
 /// The rope's direction of travel over the wrap for a state at rest: the way the car last ran.
@@ -68,16 +83,7 @@ pub fn case_wrap(lift: &Lift, t: &Traction, nodes: usize) -> Result<CaseWrap, St
     let summary = summarize(&rolling.field, &rolling.law).map_err(|e| format!("{}: {e}", t.case.name()))?;
     let distribution =
         distribution(0.0, &rolling.field, &rolling.law, &summary, nodes, rolling.gross_slip, |_, _| None);
-    let ratio = state.tension_ratio();
-    Ok(CaseWrap {
-        summary,
-        distribution,
-        gross_slip: rolling.gross_slip,
-        active_arc_rad: rolling.active_arc_rad,
-        reserve_arc_rad: alpha - ratio.ln() / t.f,
-        critical_mu: critical_mu(lift, ratio),
-        traction_loss_load_kg: traction_loss_load(lift, t),
-    })
+    Ok(CaseWrap { summary, distribution, gross_slip: rolling.gross_slip, active_arc_rad: rolling.active_arc_rad })
 }
 
 /// The μ at which `e^{f(μ)α}` equals `ratio`, by Brent's method on `[0, MU_SEARCH_MAX]`.

@@ -84,7 +84,7 @@ pub(super) fn lift_sheet(c: &mut Collector, root: Spanned<DeTable<'_>>) -> Optio
                 raw = super::section::<RawLift>(c, value, "lift");
                 lift_broken = raw.is_none();
             }
-            "hoist" => c.push(
+            "hoist" => c.push_at(
                 Some(key_span),
                 None,
                 "hoist",
@@ -334,7 +334,9 @@ fn groove(c: &mut Collector, at: At, r: &RawLift) -> Option<Groove> {
     Groove::new(g)
         .map_err(|e| {
             let (key, value) = match e {
-                GrooveError::Beta(_) => ("groove_undercut_angle_deg", &r.groove_undercut_angle_deg),
+                GrooveError::Beta(_) | GrooveError::Sum(_) => {
+                    ("groove_undercut_angle_deg", &r.groove_undercut_angle_deg)
+                }
                 GrooveError::Gamma(_) => ("groove_angle_deg", &r.groove_angle_deg),
             };
             let span = value.as_ref().map(Spanned::span).or(Some(at.table_span.clone()));
