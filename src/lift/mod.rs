@@ -17,13 +17,16 @@
 //! * [`rope`]: the equivalent number of pulleys and Sf;
 //! * [`checks`]: every verdict as a [`crate::check::Check`] record with the rule set `en81-50`;
 //! * [`wrap`]: each case's level-1 distribution, critical μ and load at traction loss;
-//! * [`output`]: the run's summary (JSON, CSV) and terminal table.
+//! * [`output`]: the run's summary (JSON, CSV) and terminal table;
+//! * [`workbook`]: checks.xlsx, whose formulas recompute every case; [`html`]: report.html.
 
 pub mod cases;
 pub mod checks;
 pub mod groove;
+pub mod html;
 pub mod output;
 pub mod rope;
+pub mod workbook;
 pub mod wrap;
 
 use crate::design::Side;

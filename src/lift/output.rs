@@ -236,6 +236,11 @@ pub fn write(dir: &Path, lift: &Lift, run: &LiftRun, plots: bool) -> Result<(), 
                 plot_distribution::plot_distribution(&case_dir.join("distribution.png"), &title, &wrap.distribution)?;
             }
         }
+        let path = staged.join("report.html");
+        fs::write(&path, super::html::render(lift, run, plots)).map_err(io(&path))?;
+        let path = staged.join("checks.xlsx");
+        super::workbook::write(&path, lift, run)
+            .map_err(|source| ReportError::Xlsx { path: path.display().to_string(), source })?;
         Ok(())
     })
 }
