@@ -464,14 +464,14 @@ fn run_bar(estimated_s: f64, quiet: bool) -> indicatif::ProgressBar {
 /// each traction case's wrap; `Ok(pass)` as for a hoist.
 fn lift_command(
     lift: &wrapcalc::lift::Lift,
-    out: Option<(&Path, bool)>,
+    out: Option<(&Path, wrapcalc::lift::output::WriteOptions)>,
     format: Format,
     quiet: bool,
 ) -> anyhow::Result<bool> {
     use wrapcalc::lift::output;
     let run = output::evaluate(lift, out.is_some()).map_err(|e| anyhow::anyhow!("{}: {e}", lift.sheet))?;
-    if let Some((dir, plots)) = out {
-        output::write(dir, lift, &run, plots)?;
+    if let Some((dir, options)) = out {
+        output::write(dir, lift, &run, options)?;
     }
     match format {
         Format::Json => println!("{}", output::LiftSummary::of(lift, &run).to_json()),
@@ -495,7 +495,8 @@ fn run_command(args: RunArgs) -> anyhow::Result<bool> {
             }
             let out_dir = args.out.clone().unwrap_or_else(|| default_out_dir(&args.sheet));
             refuse_foreign(&out_dir)?;
-            return lift_command(&lift, Some((&out_dir, !args.no_plots)), args.format, args.quiet);
+            let options = wrapcalc::lift::output::WriteOptions { plots: !args.no_plots, document: !args.no_report };
+            return lift_command(&lift, Some((&out_dir, options)), args.format, args.quiet);
         }
     };
     let scenes = design.select_scenes(&args.scenes).map_err(|e| anyhow::anyhow!("{}: {e}", design.sheet))?;

@@ -211,8 +211,18 @@ impl LiftSummary {
     }
 }
 
+/// What a lift run writes besides summary.json, summary.csv and the distributions.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct WriteOptions {
+    /// Draw each case's distribution.png.
+    pub plots: bool,
+    /// Write report.html and checks.xlsx.
+    pub document: bool,
+}
+
 /// Writes the report of a lift run to `dir`, whole or not at all.
-pub fn write(dir: &Path, lift: &Lift, run: &LiftRun, plots: bool) -> Result<(), ReportError> {
+pub fn write(dir: &Path, lift: &Lift, run: &LiftRun, options: WriteOptions) -> Result<(), ReportError> {
+    let plots = options.plots;
     let summary = LiftSummary::of(lift, run);
     report::write_dir(dir, ReportKind::Run, |staged| {
         let json = staged.join("summary.json");
@@ -235,6 +245,9 @@ pub fn write(dir: &Path, lift: &Lift, run: &LiftRun, plots: bool) -> Result<(), 
                 let title = format!("{} — level 1 with the groove factor f = {:.4}", t.case.name(), t.f);
                 plot_distribution::plot_distribution(&case_dir.join("distribution.png"), &title, &wrap.distribution)?;
             }
+        }
+        if !options.document {
+            return Ok(());
         }
         let path = staged.join("report.html");
         fs::write(&path, super::html::render(lift, run, plots)).map_err(io(&path))?;
