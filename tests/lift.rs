@@ -248,3 +248,57 @@ fn run_json_lists_the_traction_and_sf_checks() {
     assert_eq!(summary["scenes"].as_array().map(Vec::len), Some(4));
     assert!(out_dir.join("car-loading/distribution.csv").exists());
 }
+
+/// Creep theory puts the creep (active) arc where the rope leaves the sheave and the idle arc
+/// where it comes on. Braking the loaded car near the bottom, the car (side 1) travels down: the
+/// rope runs side 2 → side 1, comes on at θ = α and leaves at θ = 0, so the tension is constant
+/// over [β, α] and changes over [0, β], β = ln 1.5100688/0.14333034 = 0.4121552/0.14333034
+/// = 2.8755616 rad = 164.758°. Braking the empty car near the top it travels up: the rope comes on at
+/// θ = 0 — but that case slips over the whole wrap (1.6809 > 1.5688), the tension decaying from
+/// the high side (side 2) all the way. β to 1e-6 (8-digit hand values); tensions to 1e-9 relative
+/// (the idle stretch is constant, no grid error).
+#[test]
+fn creep_arc_lies_where_the_rope_leaves_the_sheave() {
+    let lift = example();
+    let run = evaluate(&lift, true).expect("runs");
+    let case = |c: Case| run.cases.iter().find(|x| x.traction.case == c).expect("case");
+    let loaded = case(Case::BrakingLoadedBottom);
+    let (w, t) = (loaded.wrap.as_ref().expect("wrap"), &loaded.traction.tensions);
+    assert!(t.speed_m_s < 0.0 && !w.gross_slip);
+    assert!(close(w.active_arc_rad, 2.8755616, 1e-6), "{}", w.active_arc_rad);
+    for s in &w.distribution.samples {
+        if s.theta_deg.to_radians() > w.active_arc_rad + 1e-9 {
+            assert!(close(s.tension_n, t.t2_n, 1e-9), "idle at {}°: {} vs T2 {}", s.theta_deg, s.tension_n, t.t2_n);
+        }
+    }
+    let first = w.distribution.samples.first().expect("θ = 0");
+    assert!(close(first.tension_n, t.t1_n, 1e-9));
+    let empty = case(Case::BrakingEmptyTop);
+    let w = empty.wrap.as_ref().expect("wrap");
+    assert!(w.gross_slip && w.summary.idle_arc_rad < 1e-9);
+}
+
+/// `check` on a lift sheet prints the verdicts at level 0, writes nothing and exits as `run`
+/// does (2: a binding check fails); `--no-report` leaves report.html and checks.xlsx out.
+#[test]
+fn check_and_no_report_on_a_lift_sheet() {
+    let sheet = Path::new(env!("CARGO_MANIFEST_DIR")).join("tables/lift-example.toml");
+    let out = run_wrapcalc(["check".as_ref(), sheet.as_os_str(), "--format".as_ref(), "json".as_ref()]);
+    assert_eq!(out.status.code(), Some(2));
+    let json: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    assert!(json["scenes"].as_array().expect("scenes").iter().all(|s| s["level"] == 0 && s["idle_arc_deg"].is_null()));
+    let dir = tempfile::tempdir().expect("tempdir");
+    let report = dir.path().join("r");
+    let out = run_wrapcalc([
+        "run".as_ref(),
+        sheet.as_os_str(),
+        "--out".as_ref(),
+        report.as_os_str(),
+        "--no-report".as_ref(),
+        "--no-plots".as_ref(),
+        "--quiet".as_ref(),
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(report.join("summary.json").exists() && report.join("car-loading/distribution.csv").exists());
+    assert!(!report.join("report.html").exists() && !report.join("checks.xlsx").exists());
+}
