@@ -13,7 +13,21 @@ pub fn tables() -> Vec<Table> {
 }
 
 fn lift() -> Table {
-    let keys = vec![
+    let mut keys = masses_and_ropes();
+    keys.extend(sheave_and_cases());
+    Table {
+        path: "lift",
+        array: false,
+        meaning: "A traction lift, judged by EN 81-50 (rule set en81-50): makes the sheet a lift sheet, which has only \
+                  title and g_m_s2 beside it.",
+        keys,
+        one_of: vec![vec!["counterweight_mass_kg"], vec!["balance_ratio"]],
+    }
+}
+
+/// The car, load, counterweight, roping, travel and the ropes, compensation and cable.
+fn masses_and_ropes() -> Vec<Key> {
+    vec![
         Key::new("car_mass_kg", Number, "kg", "mass of the empty car P (with its sling and fittings)")
             .required()
             .positive(),
@@ -67,6 +81,12 @@ fn lift() -> Table {
         )
         .default(D::Number(0.0))
         .non_negative(),
+    ]
+}
+
+/// The sheave, its groove, the pulleys and what the cases need beside the masses.
+fn sheave_and_cases() -> Vec<Key> {
+    vec![
         Key::new("sheave_diameter_mm", Number, "mm", "traction sheave pitch diameter D_t").required().positive(),
         Key::new("wrap_angle_deg", Number, "deg", "wrap angle α of the ropes on the sheave (single or double wrap)")
             .required()
@@ -101,15 +121,7 @@ fn lift() -> Table {
             .min(1.0, true)
             .max(2.0, true),
         Key::new("pulley", Tables, "", "deflection and diverting pulleys").items(0, MAX_PULLEYS),
-    ];
-    Table {
-        path: "lift",
-        array: false,
-        meaning: "A traction lift, judged by EN 81-50 (rule set en81-50): makes the sheet a lift sheet, which has only \
-                  title and g_m_s2 beside it.",
-        keys,
-        one_of: vec![vec!["counterweight_mass_kg"], vec!["balance_ratio"]],
-    }
+    ]
 }
 
 fn pulley() -> Table {
