@@ -7,7 +7,7 @@ use std::hint::black_box;
 use wrapcalc::model::history::{HistorySample, Output};
 use wrapcalc::model::level2::envelope::Envelopes;
 use wrapcalc::model::level2::{Params, Profile, Solver, clamp, qp, run_history};
-use wrapcalc::roots::RootStats;
+use wrapcalc::numerics::roots::RootStats;
 
 const MU: f64 = 0.25;
 

@@ -5,7 +5,7 @@
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
 use std::path::Path;
-use wrapcalc::planner::Request;
+use wrapcalc::plan::Request;
 use wrapcalc::run::{self, Options};
 
 fn levels(c: &mut Criterion) {

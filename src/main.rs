@@ -5,7 +5,7 @@ use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use wrapcalc::design::{Design, Scene};
-use wrapcalc::planner::{Level, Request};
+use wrapcalc::plan::{Level, Request};
 use wrapcalc::report::{self, summary::Summary, table};
 use wrapcalc::run::{self, Options, RunResult};
 use wrapcalc::sheet;
@@ -143,7 +143,7 @@ struct ModelArgs {
     #[arg(long, default_value_t = run::DEFAULT_NODES)]
     nodes: usize,
     /// Refuse, before it starts, a scene whose estimated run time on one core exceeds this.
-    #[arg(long, value_name = "SECONDS", default_value_t = wrapcalc::cost::DEFAULT_LIMIT_S)]
+    #[arg(long, value_name = "SECONDS", default_value_t = wrapcalc::plan::cost::DEFAULT_LIMIT_S)]
     cost_limit_s: u64,
 }
 
@@ -291,7 +291,9 @@ fn execute(cli: Cli) -> anyhow::Result<bool> {
         Command::Check(args) => {
             let design = match sheet::load_sheet(&args.sheet)? {
                 sheet::Sheet::Hoist(design) => design,
-                sheet::Sheet::Lift(lift) => return lift_command(&lift, None, args.format, false),
+                sheet::Sheet::Lift(lift) => {
+                    return Ok(wrapcalc::lift::command::execute(&lift, None, lift_print(args.format, false))?);
+                }
             };
             let scenes: Vec<&Scene> = design.scenes.iter().collect();
             let options = Options { request: Request::ChecksOnly, ..Options::default() };
@@ -363,11 +365,7 @@ fn bench_command(args: BenchArgs) -> anyhow::Result<()> {
 /// A sweep exits 0 once it ran, whatever the checks at its points say (they are in sweep.csv).
 fn sweep_command(args: SweepArgs) -> anyhow::Result<()> {
     if let sheet::Sheet::Lift(_) = sheet::load_sheet(&args.sheet)? {
-        anyhow::bail!(
-            "{}: sweep is not available for lift sheets ([lift]); run the sheet with `wrapcalc run`, \
-             whose traction cases give the critical friction coefficient and the car load at which traction is lost",
-            args.sheet.display()
-        );
+        anyhow::bail!("{}: {}", args.sheet.display(), wrapcalc::lift::command::SWEEP_REFUSED);
     }
     let shard = args.shard.as_deref().map(sweep::grid::Shard::parse).transpose()?;
     let forced_level = args.model.level.forced();
@@ -451,7 +449,7 @@ fn run_bar(estimated_s: f64, quiet: bool) -> indicatif::ProgressBar {
     let bar = indicatif::ProgressBar::new((estimated_s * 1e3).ceil() as u64);
     let template = format!(
         "{{bar:40}} {{percent}}% of the estimated {}, {{elapsed}}",
-        wrapcalc::cost::human_duration(estimated_s)
+        wrapcalc::plan::cost::human_duration(estimated_s)
     );
     if let Ok(style) = indicatif::ProgressStyle::with_template(&template) {
         bar.set_style(style);
@@ -460,30 +458,14 @@ fn run_bar(estimated_s: f64, quiet: bool) -> indicatif::ProgressBar {
     bar
 }
 
-/// A lift sheet's `run` (with a report directory) or `check` (without): EN 81-50's checks and
-/// each traction case's wrap; `Ok(pass)` as for a hoist.
-fn lift_command(
-    lift: &wrapcalc::lift::Lift,
-    out: Option<(&Path, wrapcalc::lift::output::WriteOptions)>,
-    format: Format,
-    quiet: bool,
-) -> anyhow::Result<bool> {
-    use wrapcalc::lift::output;
-    let run = output::evaluate(lift, out.is_some()).map_err(|e| anyhow::anyhow!("{}: {e}", lift.sheet))?;
-    if let Some((dir, options)) = out {
-        output::write(dir, lift, &run, options)?;
-    }
+/// What a lift sheet's `run` or `check` prints.
+fn lift_print(format: Format, quiet: bool) -> wrapcalc::lift::command::Print {
+    use wrapcalc::lift::command::Print;
     match format {
-        Format::Json => println!("{}", output::LiftSummary::of(lift, &run).to_json()),
-        Format::Table if !quiet => {
-            print!("{}", output::table(lift, &run));
-            if let Some((dir, _)) = out {
-                println!("report written to {}", dir.display());
-            }
-        }
-        Format::Table => {}
+        Format::Json => Print::Json,
+        Format::Table if quiet => Print::Nothing,
+        Format::Table => Print::Table,
     }
-    Ok(run.all_checks_pass())
 }
 
 fn run_command(args: RunArgs) -> anyhow::Result<bool> {
@@ -496,7 +478,8 @@ fn run_command(args: RunArgs) -> anyhow::Result<bool> {
             let out_dir = args.out.clone().unwrap_or_else(|| default_out_dir(&args.sheet));
             refuse_foreign(&out_dir)?;
             let options = wrapcalc::lift::output::WriteOptions { plots: !args.no_plots, document: !args.no_report };
-            return lift_command(&lift, Some((&out_dir, options)), args.format, args.quiet);
+            let print = lift_print(args.format, args.quiet);
+            return Ok(wrapcalc::lift::command::execute(&lift, Some((&out_dir, options)), print)?);
         }
     };
     let scenes = design.select_scenes(&args.scenes).map_err(|e| anyhow::anyhow!("{}: {e}", design.sheet))?;

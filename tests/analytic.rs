@@ -7,12 +7,12 @@
 //! * the number of digits written in the comment where the expected value is a rounded hand
 //!   figure (e.g. 5.966400 ± 5e-7).
 
-use wrapcalc::contact::NodeState;
 use wrapcalc::design::Design;
-use wrapcalc::geometry::wrap_angle_from_guide_rad;
-use wrapcalc::planner::Request;
+use wrapcalc::design::geometry::wrap_angle_from_guide_rad;
+use wrapcalc::plan::Request;
 use wrapcalc::run::{self, Options, RunResult, SceneResult};
 use wrapcalc::sheet;
+use wrapcalc::wrap::contact::NodeState;
 
 fn close(actual: f64, expected: f64, rel: f64) -> bool {
     (actual - expected).abs() <= rel * expected.abs().max(1e-300)
@@ -313,6 +313,6 @@ fn check_only_request_builds_no_distribution() {
     let scenes: Vec<_> = d.scenes.iter().collect();
     let r =
         run::run(&d, &scenes, Options { request: Request::ChecksOnly, nodes: 90, ..Options::default() }).expect("run");
-    assert_eq!(r.scenes[0].plan.level, wrapcalc::planner::Level::Closed0);
+    assert_eq!(r.scenes[0].plan.level, wrapcalc::plan::Level::Closed0);
     assert!(r.scenes[0].wrap.is_none());
 }

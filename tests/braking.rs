@@ -14,7 +14,7 @@
 
 use wrapcalc::design::{Design, SceneKind};
 use wrapcalc::model::{braking, level4, stop};
-use wrapcalc::planner::{Level, Request};
+use wrapcalc::plan::{Level, Request};
 use wrapcalc::run::{self, Options, SceneResult};
 use wrapcalc::sheet;
 

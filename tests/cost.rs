@@ -4,11 +4,11 @@
 
 use std::path::Path;
 use std::sync::Mutex;
-use wrapcalc::cost::{self, DEFAULT_LIMIT_S};
 use wrapcalc::design::{Design, SceneKind};
 use wrapcalc::model::level4;
+use wrapcalc::plan::cost::{self, DEFAULT_LIMIT_S};
 use wrapcalc::run::{self, Options, RunError};
-use wrapcalc::{planner, sheet, tally};
+use wrapcalc::{numerics::work_tally, plan, sheet};
 
 /// The increment tally is process-wide: tests that read it take turns.
 static TALLY: Mutex<()> = Mutex::new(());
@@ -32,7 +32,7 @@ fn duty_mid(time_step_s: f64) -> Design {
 
 fn estimate_of(design: &Design, name: &str, options: Options) -> cost::Estimate {
     let scene = design.scenes.iter().find(|s| s.name == name).expect("scene");
-    let plan = planner::plan_with_lining(scene, options.request, design.lining.is_some()).expect("plan");
+    let plan = plan::plan_with_lining(scene, options.request, design.lining.is_some()).expect("plan");
     cost::estimate(design, scene, &plan, options.nodes, options.solver)
 }
 
@@ -45,9 +45,9 @@ fn a_scene_over_the_limit_is_refused_before_its_first_increment() {
     let _turn = TALLY.lock().unwrap_or_else(|e| e.into_inner());
     let design = duty_mid(2.5e-5);
     let scenes: Vec<_> = design.scenes.iter().collect();
-    let before = tally::increments();
+    let before = work_tally::increments();
     let refused = run::run(&design, &scenes, Options { cost_limit_s: 1, ..Options::default() });
-    assert_eq!(tally::increments(), before, "no increment computed before the refusal");
+    assert_eq!(work_tally::increments(), before, "no increment computed before the refusal");
     match refused {
         Err(RunError::Costly { ref estimate, limit_s: 1, .. }) => {
             assert!(estimate.seconds > 1.0, "{estimate:?}");
@@ -62,9 +62,9 @@ fn a_scene_over_the_limit_is_refused_before_its_first_increment() {
     // The other direction: within the limit it runs, and the tally counts its steps.
     let design = duty_mid(2.5e-4);
     let scenes: Vec<_> = design.scenes.iter().collect();
-    let before = tally::increments();
+    let before = work_tally::increments();
     run::run(&design, &scenes, Options { nodes: 30, ..Options::default() }).expect("runs within the limit");
-    assert!(tally::increments() - before >= (64.03f64 / 2.5e-4) as u64, "the run's steps are counted");
+    assert!(work_tally::increments() - before >= (64.03f64 / 2.5e-4) as u64, "the run's steps are counted");
 }
 
 /// Level 4's measure is rope elements × the steps the dynamics take: 2 × 12 × the steps the
@@ -75,13 +75,13 @@ fn level4_estimate_is_rope_elements_times_the_steps_taken() {
     let design = duty_mid(1e-3);
     let SceneKind::DutyCycle(cycle) = design.scenes[0].kind.clone() else { panic!("a duty cycle") };
     let hoist = design.hoist.clone().expect("a hoist");
-    let before = tally::increments();
+    let before = work_tally::increments();
     level4::suspended_ropes(&design, &hoist, &cycle).expect("the ropes run");
-    let steps = tally::increments() - before;
+    let steps = work_tally::increments() - before;
     let e = estimate_of(&design, "duty-MID", Options::default());
     let ropes = e.parts.iter().find(|p| p.unit == "rope element-steps").expect("a rope part");
     assert_eq!(ropes.work, 24.0 * steps as f64, "{e:?}");
-    assert_eq!(e.level, wrapcalc::planner::Level::Dynamic4);
+    assert_eq!(e.level, wrapcalc::plan::Level::Dynamic4);
 }
 
 /// A duty cycle that continues from a start shared with other scenes is ordered by what

@@ -54,7 +54,7 @@ proptest! {
             prop_assert!(x.tension_n.is_finite() && x.normal_n_per_rad.is_finite() && x.friction_n_per_rad.is_finite());
             prop_assert!(x.friction_n_per_rad.abs() <= mu * x.normal_n_per_rad, "θ = {}", x.theta_deg);
             prop_assert!((0.0..=1.0).contains(&x.utilization));
-            prop_assert_eq!(x.state != wrapcalc::contact::NodeState::Stick, x.utilization >= 0.999);
+            prop_assert_eq!(x.state != wrapcalc::wrap::contact::NodeState::Stick, x.utilization >= 0.999);
         }
         let alpha = design.pulley.wrap_angle_rad;
         let total = w.summary.positive_arc_rad + w.summary.reverse_arc_rad + w.summary.idle_arc_rad;

@@ -7,7 +7,7 @@
 use std::path::Path;
 use wrapcalc::design::{Design, SceneKind};
 use wrapcalc::run::{self, Options, SceneResult};
-use wrapcalc::{sheet, tally};
+use wrapcalc::{numerics::work_tally, sheet};
 
 fn design() -> Design {
     sheet::load(Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/tables/guo2020.toml")))
@@ -47,10 +47,10 @@ fn a_wrap_run_beside_the_ropes_is_the_wrap_run_after_them() {
         (&slipping, "emergency-MID", false),
     ];
     for (design, name, kept) in cases {
-        let before = tally::wraps_beside();
+        let before = work_tally::wraps_beside();
         let beside = alone(design, name, false);
         assert_eq!(
-            tally::wraps_beside() - before,
+            work_tally::wraps_beside() - before,
             u64::from(kept),
             "{name}: the run beside the ropes kept or made again"
         );

@@ -6,14 +6,14 @@
 //! round-off: 1e-9 relative on tensions and 1e-7° on arcs (a Brent root to 1e-14 rad in angle,
 //! accumulated over a few hundred pieces, stays far below both).
 
-use wrapcalc::contact::ContactLaw;
-use wrapcalc::derived;
 use wrapcalc::design::Direction;
 use wrapcalc::model::history::{HistorySample, Output};
 use wrapcalc::model::level0::EndState;
 use wrapcalc::model::level1::steady_rolling;
 use wrapcalc::model::level2::{Params, Profile, Simulation, Solver, run_history};
 use wrapcalc::wrap::TensionField;
+use wrapcalc::wrap::contact::ContactLaw;
+use wrapcalc::wrap::summary;
 
 const MU: f64 = 0.25;
 const ALPHA_DEG: f64 = 187.42;
@@ -40,8 +40,8 @@ fn final_field(p: Params, samples: &[HistorySample]) -> (TensionField, Simulatio
     (sim.profile.field(), sim)
 }
 
-fn summary(field: &TensionField, c: f64) -> derived::WrapSummary {
-    derived::summarize(field, &ContactLaw::new(MU, c)).expect("summary")
+fn summary(field: &TensionField, c: f64) -> summary::WrapSummary {
+    summary::summarize(field, &ContactLaw::new(MU, c)).expect("summary")
 }
 
 fn assert_deg(actual_rad: f64, expected_rad: f64, what: &str) {
@@ -126,7 +126,7 @@ fn steady_rolling_is_reached_from_a_uniform_start_in_both_directions() {
         let end = EndState { t1_n: t1, t2_n: t2, speed_m_s: v, accel_m_s2: 0.0, centrifugal_n: 10.0 * v * v };
         let creep = steady_rolling(MU, alpha(), &end, Direction::of_speed(v).expect("moving"), p.ea_n);
         let law = ContactLaw::new(MU, end.centrifugal_n);
-        let exact = derived::summarize(&creep.field, &law).expect("summary");
+        let exact = summary::summarize(&creep.field, &law).expect("summary");
         let got = &run.last().summary;
         assert_deg(got.positive_arc_rad, exact.positive_arc_rad, "positive arc");
         assert_deg(got.reverse_arc_rad, exact.reverse_arc_rad, "reverse arc");
@@ -191,9 +191,14 @@ fn rope_entering_during_a_linear_ramp_holds_the_ramp_whatever_the_sampling() {
     let t_exit_stuck = |th: f64| 55_000.0 - 1000.0 * th;
     // Exit zone [θb, α]: 50 000 e^{μ(α − θ)} meets the stuck line at θb.
     let zone = |th: f64| 50_000.0 * (MU * (alpha - th)).exp();
-    let theta_b =
-        wrapcalc::roots::bracketed(|th| t_exit_stuck(th) - zone(th), 0.0, alpha, 1e-15, &mut Default::default())
-            .expect("the exit zone starts inside the wrap");
+    let theta_b = wrapcalc::numerics::roots::bracketed(
+        |th| t_exit_stuck(th) - zone(th),
+        0.0,
+        alpha,
+        1e-15,
+        &mut Default::default(),
+    )
+    .expect("the exit zone starts inside the wrap");
     let exact = |th: f64| if th < theta_b { t_exit_stuck(th) } else { zone(th) };
     let mut arcs = Vec::new();
     for n in [2, 11, 101, 1001] {
@@ -210,7 +215,7 @@ fn rope_entering_during_a_linear_ramp_holds_the_ramp_whatever_the_sampling() {
                 assert!((q - 1000.0).abs() < 1e-6, "{n} samples: q = {q} at {:.3}°", th.to_degrees());
             }
         }
-        let sum = derived::summarize(&field, &law).expect("summary");
+        let sum = summary::summarize(&field, &law).expect("summary");
         assert_deg(sum.positive_arc_rad, alpha, "positive arc");
         arcs.push(sum.positive_arc_rad);
     }

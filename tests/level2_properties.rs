@@ -6,13 +6,13 @@
 mod common;
 
 use proptest::prelude::*;
-use wrapcalc::contact::ContactLaw;
 use wrapcalc::design::HistorySample;
 use wrapcalc::model::history::Output;
 use wrapcalc::model::level2::{Params, Profile, Simulation, Solver, run_history};
 use wrapcalc::run::{self, Options};
 use wrapcalc::sheet;
 use wrapcalc::wrap::TensionField;
+use wrapcalc::wrap::contact::ContactLaw;
 
 /// A random history: 2–40 samples, tensions 1 N … 1e8 N scale, ratios up to beyond gross slip,
 /// speeds of either sign up to 2 m/s (kept below the contact-loss limit; the rope travels up
@@ -325,8 +325,8 @@ fn sign_changes(field: &TensionField, mu: f64, c: f64) -> usize {
     changes
 }
 
-fn summary(field: &TensionField, mu: f64, c: f64) -> wrapcalc::derived::WrapSummary {
-    wrapcalc::derived::summarize(field, &ContactLaw::new(mu, c)).expect("summary")
+fn summary(field: &TensionField, mu: f64, c: f64) -> wrapcalc::wrap::summary::WrapSummary {
+    wrapcalc::wrap::summary::summarize(field, &ContactLaw::new(mu, c)).expect("summary")
 }
 
 /// Every `loads` scene of a sheet, at level 2 (a long steady run) and at level 1 (creep theory):
@@ -372,7 +372,7 @@ speed_m_s = -6.0
     let scenes: Vec<_> = design.scenes.iter().collect();
     let at = |level: u8| {
         let options = Options {
-            request: wrapcalc::planner::Request::Full { forced_level: wrapcalc::planner::Level::from_number(level) },
+            request: wrapcalc::plan::Request::Full { forced_level: wrapcalc::plan::Level::from_number(level) },
             nodes: 360,
             ..Options::default()
         };

@@ -7,7 +7,7 @@ mod common;
 use common::{assert_coulomb, mirror, mirror_gap, params, run_to_end};
 use wrapcalc::model::history::HistorySample;
 use wrapcalc::model::level2::Solver;
-use wrapcalc::planner::Request;
+use wrapcalc::plan::Request;
 use wrapcalc::run::{Options, RunResult, SceneResult, run};
 
 /// Balanced ends (T1 = T2 = 50 kN) while the rope decelerates from 9 m/s to rest in 10 ms:
@@ -104,7 +104,7 @@ fn run_sheet(text: &str, solver: Solver, scenes: &[&str]) -> RunResult {
     let design = wrapcalc::sheet::parse("near.toml", text).expect("valid sheet");
     let chosen: Vec<_> = design.scenes.iter().filter(|s| scenes.contains(&s.name.as_str())).collect();
     let options = Options {
-        request: Request::Full { forced_level: Some(wrapcalc::planner::Level::Elastic3) },
+        request: Request::Full { forced_level: Some(wrapcalc::plan::Level::Elastic3) },
         nodes: 120,
         solver,
         ..Options::default()

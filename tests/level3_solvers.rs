@@ -7,10 +7,10 @@ mod common;
 
 use common::{EA_N, T0_N, assert_coulomb, at_rest, mirror, mirror_gap, params};
 use wrapcalc::bench::walk::random_walk;
-use wrapcalc::contact::SLIP_UTILIZATION;
 use wrapcalc::model::history::HistorySample;
 use wrapcalc::model::level2::Solver;
 use wrapcalc::model::level3::{Params, Simulation, State};
+use wrapcalc::wrap::contact::SLIP_UTILIZATION;
 
 /// clarabel stops 1e-11 (scaled) short of the bounds it touches and settles N to 1e-9; the
 /// active set converges to 1e-12 of the tension: 1e-7 of the tension covers both.

@@ -4,14 +4,14 @@
 //! rigid-rope tensions T1 = m1(g + a)/n, T2 = m2(g − a)/n; the fit against a distribution
 //! synthesized here from creep theory's own formula.
 
-use wrapcalc::contact::NodeState;
 use wrapcalc::design::{Design, Direction, Output, Outputs, Scene};
-use wrapcalc::fit::{FitFriction, creep_fit};
+use wrapcalc::margins::fit::{FitFriction, creep_fit};
 use wrapcalc::margins::{self, MarginVerdict};
 use wrapcalc::model::level0::EndState;
-use wrapcalc::planner::{self, Level, Request};
+use wrapcalc::plan::{self, Level, Request};
 use wrapcalc::run::{self, Options};
 use wrapcalc::sheet;
+use wrapcalc::wrap::contact::NodeState;
 use wrapcalc::wrap::{Distribution, Sample};
 
 const G: f64 = 9.81;
@@ -122,22 +122,20 @@ fn planner_maps_kind_and_outputs_to_the_cheapest_level() {
         ("duty-MID", 4),
     ];
     for (name, level) in expected {
-        let plan = planner::plan(scene(&d, name), auto).expect("plans");
+        let plan = plan::plan(scene(&d, name), auto).expect("plans");
         assert_eq!(plan.level.number(), level, "{name}: {}", plan.reason);
         assert!(!plan.reason.is_empty());
     }
     // `wrapcalc check` is level 0 everywhere; --level overrides, within what a kind allows.
     for s in &d.scenes {
-        assert_eq!(planner::plan(s, Request::ChecksOnly).unwrap().level, Level::Closed0, "{}", s.name);
+        assert_eq!(plan::plan(s, Request::ChecksOnly).unwrap().level, Level::Closed0, "{}", s.name);
     }
     assert_eq!(
-        planner::plan(scene(&d, "loads-checks"), Request::Full { forced_level: Some(Level::Rigid2) }).unwrap().level,
+        plan::plan(scene(&d, "loads-checks"), Request::Full { forced_level: Some(Level::Rigid2) }).unwrap().level,
         Level::Rigid2
     );
-    assert!(
-        planner::plan(scene(&d, "history-history"), Request::Full { forced_level: Some(Level::Capstan1) }).is_err()
-    );
-    assert!(planner::plan(scene(&d, "loads-checks"), Request::Full { forced_level: Some(Level::Dynamic4) }).is_err());
+    assert!(plan::plan(scene(&d, "history-history"), Request::Full { forced_level: Some(Level::Capstan1) }).is_err());
+    assert!(plan::plan(scene(&d, "loads-checks"), Request::Full { forced_level: Some(Level::Dynamic4) }).is_err());
     // The default outputs of each kind.
     assert_eq!(
         scene(&d, "mid-rest").outputs,
@@ -415,18 +413,18 @@ fn lining_raises_only_the_wrap_outputs_to_level_3() {
     let text = std::fs::read_to_string(file).expect("lining sheet");
     let d = sheet::parse(file, &format!("{text}\n{PLANNED}")).expect("parses");
     let auto = Request::Full { forced_level: None };
-    let level = |name: &str| planner::plan_with_lining(scene(&d, name), auto, d.lining.is_some()).unwrap().level;
+    let level = |name: &str| plan::plan_with_lining(scene(&d, name), auto, d.lining.is_some()).unwrap().level;
     assert_eq!(level("history-history"), Level::Elastic3);
     assert_eq!(level("history-distribution"), Level::Elastic3);
     assert_eq!(level("history-checks"), Level::Closed0);
     assert_eq!(level("duty-checks"), Level::Closed0);
-    let duty = planner::plan_with_lining(scene(&d, "duty-history"), auto, true).unwrap();
+    let duty = plan::plan_with_lining(scene(&d, "duty-history"), auto, true).unwrap();
     assert_eq!(duty.level, Level::Dynamic4);
     assert!(duty.reason.contains("level 3"), "{}", duty.reason);
-    assert_eq!(planner::wrap_level(&duty, true), Level::Elastic3);
+    assert_eq!(plan::wrap_level(&duty, true), Level::Elastic3);
     assert_eq!(level("loads-distribution"), Level::Capstan1, "constant loads stay with creep theory");
     // Without a lining, --level 3 is an error naming the section.
     let forced = Request::Full { forced_level: Some(Level::Elastic3) };
-    let e = planner::plan_with_lining(scene(&d, "history-history"), forced, false).unwrap_err();
+    let e = plan::plan_with_lining(scene(&d, "history-history"), forced, false).unwrap_err();
     assert!(e.to_string().contains("[lining]"), "{e}");
 }

@@ -80,14 +80,26 @@ fn report_prints_to_pdf_with_verdicts_and_the_governing_case() {
     println!("report.html of the reference hoist prints on {pages} A4 pages: main body {main_body}, whole {pages}");
     assert!(main_body <= 25, "the main body prints on {main_body} pages, more than 25");
     assert!(pages <= 60, "the whole document prints on {pages} pages, more than 60");
+    // Page 1: the headline with its counts and the governing check with its case.
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).expect("summary")).expect("json");
+    let page1 = words(text.split('\u{c}').next().unwrap_or_default());
+    let headline = summary["headline"].as_str().expect("a headline");
+    assert!(headline.contains(&format!("{} warning", summary["warnings"])), "{headline}");
+    assert!(page1.contains(&words(headline)), "page 1 lacks the headline {headline:?}");
+    let g = &summary["verdict"]["governing"];
+    let case = g["governing_case"]
+        .as_str()
+        .map_or_else(|| format!("scene {}", g["group"].as_str().unwrap_or("")), str::to_string);
+    assert!(page1.contains(&words(&case)), "page 1 lacks the governing case {case:?}");
+    assert!(page1.contains(&words(g["check"].as_str().expect("the governing check"))));
+    println!("page 1: {headline}; governing check {} at {case}", g["check"]);
     let text = words(&text);
     for heading in ["6. Verdicts", "Every check", "7. The checks, to be redone by hand", "9. Software and accuracy"] {
         assert!(text.contains(heading), "the PDF lacks {heading:?}");
     }
     assert!(text.contains(&format!("page 2 of {pages}")), "page numbers in the margin");
     // The governing case of the design's dynamic safety factor, its value and the tensions behind it.
-    let summary: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).expect("summary")).expect("json");
     let check = summary["design_checks"]
         .as_array()
         .and_then(|cs| cs.iter().find(|c| c["name"] == "dynamic safety factor"))

@@ -1,13 +1,13 @@
 //! The rigid-lining state's summaries, which screen each piece against the arc and slip
-//! thresholds by m'v² ranges held beside it (`wrapcalc::screen`), against the summary that
+//! thresholds by m'v² ranges held beside it (`wrapcalc::wrap::piece_ranges`), against the summary that
 //! evaluates every piece: the same peak utilization, JDP and zones, and the same arcs to the
 //! round-off of their sums, at every row of histories that accelerate, reverse, slip at the
 //! ends and step m'v², lifting and lowering (the mirror image).
 
-use wrapcalc::contact::NodeState;
-use wrapcalc::derived::{self, WrapSummary};
 use wrapcalc::model::history::{HistorySample, WrapModel};
 use wrapcalc::model::level2::{Params, Profile, Simulation, Solver};
+use wrapcalc::wrap::contact::NodeState;
+use wrapcalc::wrap::summary::{self, WrapSummary};
 
 mod common;
 
@@ -72,7 +72,7 @@ fn screened_summaries_are_the_full_summaries() {
                 sim.advance_to(t).expect("steps");
                 for zones in [false, true] {
                     let screened = WrapModel::summary(&sim, zones).expect("summary");
-                    let full = derived::summarize_pieces(sim.profile.pieces(), &sim.law(), zones).expect("summary");
+                    let full = summary::summarize_pieces(sim.profile.pieces(), &sim.law(), zones).expect("summary");
                     let at = format!("top {top} m/s, swing {swing}, sign {sign}, t = {t} s, zones {zones}");
                     assert_same(&screened, &full, &at);
                     slipping += usize::from(full.zones.iter().any(|z| z.state != NodeState::Stick));

@@ -10,7 +10,7 @@ use std::path::Path;
 use wrapcalc::design::{Design, DutyCycleScene, SceneKind};
 use wrapcalc::model::level4::shared::RopePlan;
 use wrapcalc::run::{self, Options, SceneResult};
-use wrapcalc::{sheet, tally};
+use wrapcalc::{numerics::work_tally, sheet};
 
 /// The increment tally is process-wide: tests that read it take turns.
 static TALLY: std::sync::Mutex<()> = std::sync::Mutex::new(());
@@ -61,13 +61,13 @@ fn timeless(mut r: SceneResult) -> SceneResult {
 /// Runs `scenes` together, then each alone, asserts that each result is the same to the last
 /// bit (`context` names the case) and returns the increments the run together saved.
 fn same_together_as_alone(d: &Design, scenes: &[&wrapcalc::design::Scene], options: Options, context: &str) -> u64 {
-    let before = tally::increments();
+    let before = work_tally::increments();
     let together = run::run(d, scenes, options).expect("runs").scenes;
-    let shared = tally::increments() - before;
-    let before = tally::increments();
+    let shared = work_tally::increments() - before;
+    let before = work_tally::increments();
     let alone: Vec<SceneResult> =
         scenes.iter().map(|s| run::run(d, &[*s], options).expect("runs").scenes.remove(0)).collect();
-    let separate = tally::increments() - before;
+    let separate = work_tally::increments() - before;
     for (a, b) in together.into_iter().zip(alone) {
         let name = a.name.clone();
         assert_eq!(timeless(a), timeless(b), "{name}{context}");
@@ -96,9 +96,9 @@ fn scenes_sharing_a_start_give_what_each_gives_alone() {
     // increments, at most all of them (a trip alone counts its 64 030 rope steps of 1 ms and
     // its wrap's increments).
     let wrap_of = |scene: &[&wrapcalc::design::Scene]| {
-        let before = tally::increments();
+        let before = work_tally::increments();
         run::run(&d, scene, options).expect("runs");
-        tally::increments() - before - 64_030
+        work_tally::increments() - before - 64_030
     };
     let (lift_wrap, lower_wrap) = (wrap_of(&scenes[..1]), wrap_of(&scenes[4..5]));
     let most = saved_steps + 3 * lift_wrap + lower_wrap;
@@ -125,9 +125,9 @@ fn a_stop_goes_on_from_its_trip_s_wrap_at_another_row_interval() {
         let scenes: Vec<_> = [trip, stop].iter().map(|n| d.scenes.iter().find(|s| s.name == *n).unwrap()).collect();
         assert_eq!((cycle(&d, trip).output_step_s, cycle(&d, stop).output_step_s), (0.05, 0.02));
         let saved = same_together_as_alone(&d, &scenes, options, &format!(" ({trip} with {stop})"));
-        let before = tally::increments();
+        let before = work_tally::increments();
         run::run(&d, &scenes[..1], options).expect("runs");
-        let trip_wrap = tally::increments() - before - 64_030;
+        let trip_wrap = work_tally::increments() - before - 64_030;
         assert!(saved > 29_995 && saved <= 29_995 + trip_wrap, "{trip}: {saved} against 29 995 + {trip_wrap}");
     }
     // The mirror of the brake trip: the MID lowering trip stopped by the brake at 30 s.
@@ -139,9 +139,9 @@ fn a_stop_goes_on_from_its_trip_s_wrap_at_another_row_interval() {
     assert!(cycle(&d, "down-braked").brake_stop_s.is_some(), "a stop by the brake");
     let scenes: Vec<_> = d.scenes.iter().collect();
     let saved = same_together_as_alone(&d, &scenes, options, " (lowering, stopped by the brake)");
-    let before = tally::increments();
+    let before = work_tally::increments();
     run::run(&d, &scenes[..1], options).expect("runs");
-    let trip_wrap = tally::increments() - before - 64_030;
+    let trip_wrap = work_tally::increments() - before - 64_030;
     assert!(saved > 29_995 && saved <= 29_995 + trip_wrap, "lowering: {saved} against 29 995 + {trip_wrap}");
 }
 

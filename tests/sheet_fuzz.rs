@@ -7,7 +7,7 @@
 mod common;
 
 use proptest::prelude::*;
-use wrapcalc::planner::Request;
+use wrapcalc::plan::Request;
 use wrapcalc::run::{self, Options};
 use wrapcalc::sheet;
 

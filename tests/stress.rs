@@ -11,14 +11,14 @@
 mod common;
 
 use proptest::prelude::*;
-use wrapcalc::contact::ContactLaw;
 use wrapcalc::design::{Design, SceneKind};
 use wrapcalc::model::history::{HistorySample, Output};
 use wrapcalc::model::level2::envelope::Envelopes;
 use wrapcalc::model::level2::{Params, Profile, Simulation, Solver, clamp, repair, run_history};
-use wrapcalc::roots::RootStats;
+use wrapcalc::numerics::roots::RootStats;
 use wrapcalc::run::{self, Options, RunResult};
 use wrapcalc::sheet;
+use wrapcalc::wrap::contact::ContactLaw;
 
 /// Slack on Coulomb's law |q| ≤ μn, relative: the pieces are exact closed forms evaluated in
 /// floating point (an exponential and a product: a few ulps each); a stretch at the limit

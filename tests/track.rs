@@ -12,11 +12,11 @@ use track_common::{
     RAMPS_IMPULSE_N_S, REST_SCENE, TURN_ENTRY_S, TURN_OMEGA, TURN_SCENE, assert_at_rest, ramps_scene,
     tiling_starts_deg, turn_down_s,
 };
-use wrapcalc::contact::NodeState;
 use wrapcalc::design::Design;
 use wrapcalc::model::track::Track;
 use wrapcalc::run::{self, Options, RunError, SceneResult};
 use wrapcalc::sheet;
+use wrapcalc::wrap::contact::NodeState;
 
 const MU: f64 = 0.25;
 const R: f64 = 2.5;
@@ -266,6 +266,6 @@ fn tracks_refuse_a_scene_that_runs_below_the_wrap_model() {
     // A scene that asks for its checks only runs at level 0 and says that it skipped the
     // followed elements, which need the wrap model (`wrapcalc check` runs every bundled sheet so).
     let r = run_one(&d).expect("runs at level 0");
-    assert_eq!(r.plan.level, wrapcalc::planner::Level::Closed0);
+    assert_eq!(r.plan.level, wrapcalc::plan::Level::Closed0);
     assert!(r.plan.reason.contains("skipped: track_*") && r.tracks.is_none(), "{}", r.plan.reason);
 }

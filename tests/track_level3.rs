@@ -14,11 +14,11 @@ use track_common::{
     RAMPS_IMPULSE_N_S, REST_SCENE, TURN_SCENE, assert_at_rest, ramps_scene, tiling_starts_deg, turn_down_s,
     turn_force_n,
 };
-use wrapcalc::contact::NodeState;
 use wrapcalc::design::Design;
 use wrapcalc::model::track::Track;
 use wrapcalc::run::{self, Options, SceneResult};
 use wrapcalc::sheet;
+use wrapcalc::wrap::contact::NodeState;
 
 const MU: f64 = 0.25;
 const R: f64 = 2.5;
@@ -42,7 +42,7 @@ fn run_one(d: &Design, nodes: usize) -> SceneResult {
 
 fn tracks(d: &Design) -> Vec<Track> {
     let scene = run_one(d, 180);
-    assert_eq!(scene.plan.level, wrapcalc::planner::Level::Elastic3, "the scene runs on the elastic lining");
+    assert_eq!(scene.plan.level, wrapcalc::plan::Level::Elastic3, "the scene runs on the elastic lining");
     scene.tracks.expect("the scene follows elements").tracks
 }
 

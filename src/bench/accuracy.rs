@@ -5,7 +5,7 @@
 
 use super::cases::{self, Case};
 use crate::model::level2::Solver;
-use crate::planner::Level;
+use crate::plan::Level;
 use crate::report::accuracy::{Evidence, NODES};
 use crate::run::RunError;
 

@@ -31,7 +31,7 @@ use crate::design::{
     Design, Direction, HistorySample, HistoryScene, Lining, Output, Outputs, Pulley, Requirements, Rope, Scene,
     SceneKind, WrapSource,
 };
-use crate::roots::{RootStats, brent};
+use crate::numerics::roots::{RootStats, brent};
 
 /// Friction coefficient.
 pub const MU: f64 = 0.25;
@@ -102,6 +102,7 @@ fn design(name: &str, samples: Vec<HistorySample>) -> Design {
         machine: crate::design::Machine::default(),
         load_cases: None,
         compare: Vec::new(),
+        ropes: None,
         document: crate::design::Document::default(),
         // The model levels are timed: the derived margins and fit are left out.
         scenes: vec![Scene {

@@ -39,7 +39,7 @@ use crate::design::{
 pub use crate::model::history::HistoryRow;
 use crate::model::history::HistorySample;
 use crate::model::level2::Solver;
-use crate::planner::{Level, Request};
+use crate::plan::{Level, Request};
 use crate::run::{self, Options, RunError, RunResult};
 use crate::wrap::Distribution;
 use std::path::Path;
@@ -164,6 +164,7 @@ fn bench_design(name: &str, kind: SceneKind) -> Design {
         machine: crate::design::Machine::default(),
         load_cases: None,
         compare: Vec::new(),
+        ropes: None,
         // The model levels are timed: the derived margins and fit are left out.
         scenes: vec![Scene {
             name: name.into(),

@@ -19,7 +19,7 @@ pub mod table;
 pub mod walk;
 
 use crate::model::level2::{Level2Error, Solver};
-use crate::planner::Level;
+use crate::plan::Level;
 use crate::run::RunError;
 use crate::sheet::SheetError;
 use cases::{Case, Outcome};

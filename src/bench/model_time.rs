@@ -10,12 +10,12 @@
 //! so the slope of `model_ms` against N shows whether the model's cost depends on the grid.
 
 use super::cases::{Case, ROLL_SPEED_M_S, ROLL_T1_N, ROLL_T2_N, T0_N, design_of};
-use crate::contact::ContactLaw;
-use crate::derived;
 use crate::design::{Direction, HistorySample, SceneKind};
 use crate::model::level0::EndState;
 use crate::model::level1;
 use crate::model::level2::{Level2Error, Params, Profile, Simulation, Solver};
+use crate::wrap::contact::ContactLaw;
+use crate::wrap::summary;
 
 /// What the level-2 model of a case runs through: its parameters, history and initial state.
 #[derive(Debug, Clone)]
@@ -73,7 +73,7 @@ impl ModelRun {
             let law = ContactLaw::new(self.params.mu, sim.centrifugal_n);
             std::hint::black_box({
                 let (held, carried) = sim.profile.screened();
-                derived::summarize_screened(&held, carried, &law, false)
+                summary::summarize_screened(&held, carried, &law, false)
             }?);
         }
         Ok((sim.stats.increments, sim.profile))
@@ -93,8 +93,8 @@ mod tests {
         for case in [Case::StandstillStep, Case::NestedUnloading, Case::SteadyRolling] {
             let (increments, profile) =
                 ModelRun::of(case, Solver::Fast).expect("a level-2 closed form").run().expect("runs");
-            let full = super::super::cases::run_closed_form(case, crate::planner::Level::Rigid2, Solver::Fast, 64)
-                .expect("runs");
+            let full =
+                super::super::cases::run_closed_form(case, crate::plan::Level::Rigid2, Solver::Fast, 64).expect("runs");
             if let Some(steps) = full.steps {
                 assert_eq!(increments, steps, "{case:?}");
             }

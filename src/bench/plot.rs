@@ -3,7 +3,7 @@
 
 use super::BenchRow;
 use crate::model::level2::Solver;
-use crate::planner::Level;
+use crate::plan::Level;
 use crate::report::plot::{PlotError, draw_legend, font, render};
 use plotters::prelude::*;
 use std::path::Path;

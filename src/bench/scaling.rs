@@ -2,7 +2,7 @@
 
 use super::{BenchRow, Sweep, TABLE};
 use crate::model::level2::Solver;
-use crate::planner::Level;
+use crate::plan::Level;
 use serde::Serialize;
 
 /// The measured scaling of one sweep: log–log slopes of run time and of peak memory (above the

@@ -2,7 +2,7 @@
 
 use super::cases::Case;
 use crate::model::level2::Solver;
-use crate::planner::Level;
+use crate::plan::Level;
 
 /// What a point varies along its sweep.
 #[derive(Debug, Clone, Copy, PartialEq)]

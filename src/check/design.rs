@@ -42,6 +42,10 @@ pub const PEAK_PRESSURE_CHECK: &str = "peak pressure on the lining";
 pub const MU_CAP_CHECK: &str = "friction coefficient against the design cap";
 /// Name of the machine rating's largest static tension check.
 pub const TENSION_RATING_CHECK: &str = "largest static tension (machine rating)";
+/// The input of [`PROFILE_END_CHECK`]: the profile's signed speed at its end.
+pub const PROFILE_END_SPEED: &str = "v at t_end";
+/// Name of the check that the `[hoist]` motion profile brings the hoist to rest.
+pub const PROFILE_END_CHECK: &str = "motion profile ends at rest";
 /// Name of the machine rating's largest static tension difference check.
 pub const DIFFERENCE_RATING_CHECK: &str = "largest static tension difference (machine rating)";
 

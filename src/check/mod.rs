@@ -12,7 +12,7 @@
 pub mod design;
 
 use crate::design::Limit;
-use crate::requirements::Rule;
+use crate::design::requirements::Rule;
 use serde::Serialize;
 
 /// A number with a name and a unit, as printed in a check.

@@ -6,12 +6,14 @@
 //! `[requirements] code = "<id>"` selects a rule set; a limit the sheet gives itself overrides the
 //! rule set's (the report lists the overrides).
 
+pub mod basis;
 pub mod formula;
 pub mod listing;
 
-use crate::requirements::{Limit, Rule};
+use crate::design::requirements::{Limit, Rule};
+pub use basis::{CONFIRM_NOTICE, CodeBasis, Missing, Override};
 use formula::{Formula, FormulaOutcome, Quantities};
-use serde::{Deserialize, Serialize};
+use serde::Deserialize;
 
 /// The bundled rule sets' files, as `(id, text)`.
 const BUNDLED: &[(&str, &str)] = &[
@@ -64,18 +66,6 @@ struct RawLimit {
     note: Option<String>,
 }
 
-/// A value a rule set leaves out, and why.
-#[derive(Debug, Clone, PartialEq, Deserialize, Serialize)]
-#[serde(deny_unknown_fields)]
-pub struct Missing {
-    /// What is missing (the limit, in words, or its `[requirements]` key).
-    pub what: String,
-    /// The value that was looked for, as a lead, if there was one.
-    pub lead: Option<String>,
-    /// Why it is not in the rule set.
-    pub why: String,
-}
-
 /// A rule set's file.
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -123,10 +113,6 @@ pub struct RuleSet {
     /// What it leaves out, and why.
     pub missing: Vec<Missing>,
 }
-
-/// The sentence that heads the Basis of a report that uses a rule set.
-pub const CONFIRM_NOTICE: &str =
-    "Limits taken from this rule set must be confirmed against the edition of the code in force for the installation.";
 
 impl RuleSet {
     /// Reads a rule set from its TOML text; refuses unknown keys, a limit with neither or both of
@@ -206,41 +192,4 @@ pub fn ids() -> Vec<&'static str> {
 /// The bundled rule set `id`.
 pub fn find(id: &str) -> Option<RuleSet> {
     bundled().into_iter().find(|s| s.id == id)
-}
-
-/// A limit the sheet gives itself although the rule set has one.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct Override {
-    /// The `[requirements]` key.
-    pub key: String,
-    /// The sheet's value.
-    pub sheet_value: f64,
-    /// The sheet's source for it.
-    pub sheet_source: String,
-    /// The rule set's value for this design, if it could be computed.
-    pub code_value: Option<f64>,
-    /// The rule set's clause.
-    pub clause: String,
-}
-
-/// The rule set a design is judged by, as the report states it.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct CodeBasis {
-    /// The rule set's id.
-    pub id: String,
-    /// The code's name.
-    pub code: String,
-    /// Its edition.
-    pub edition: String,
-    /// The limits the sheet overrides.
-    pub overrides: Vec<Override>,
-    /// What the rule set leaves out.
-    pub missing: Vec<Missing>,
-}
-
-impl CodeBasis {
-    /// The Basis section's first sentence: the rule set, its edition and the notice.
-    pub fn heading(&self) -> String {
-        format!("Rule set `{}`: {}, edition {}. {CONFIRM_NOTICE}", self.id, self.code, self.edition)
-    }
 }

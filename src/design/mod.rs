@@ -1,7 +1,10 @@
 //! The validated design: what a sheet describes once every value has been checked.
 //! All quantities are SI; angles are stored in radians (`_rad`) and reported in degrees.
 
-pub use crate::requirements::{DEFAULT_SAFETY_FACTOR_SOURCE, Limit, Requirements, SafetyFactorBasis};
+pub mod geometry;
+pub mod requirements;
+
+pub use crate::design::requirements::{DEFAULT_SAFETY_FACTOR_SOURCE, Limit, Requirements, SafetyFactorBasis};
 
 mod direction;
 mod scene;
@@ -44,6 +47,9 @@ pub struct Design {
     pub load_cases: Option<LoadCases>,
     /// Figures overlaying one quantity from several scenes (`[[compare]]`).
     pub compare: Vec<Compare>,
+    /// The ropes' deviations and attachments of a multi-rope hoist (`[ropes]`), when the sheet
+    /// has the section: duty cycles then share their load among the ropes ([`crate::ropes`]).
+    pub ropes: Option<crate::ropes::RopeSet>,
 }
 
 /// A `[[compare]]` figure: one quantity of several time scenes over time, side by side.

@@ -22,7 +22,7 @@
 //! The run ends when the speed reaches zero (the brake then holds), the exact instant found by
 //! linear interpolation of v within the last step, which is shortened to it.
 
-use super::simulate::{Checkpoint, Side2, coeffs, sample_of, step_sides};
+use super::state::{Checkpoint, Side2, coeffs, sample_of, step_sides};
 use super::{DynSample, DynamicsError, HoistParams, Kinematics, SimOptions};
 
 /// What the pulley as a body needs beside the ropes.

@@ -21,8 +21,8 @@
 //! 2⁻⁵⁴, and the closed form at power 0, `1/(λ₊·1)`, is `1/λ₊` to the last bit, as it is at
 //! any power at or below 2⁻⁵⁴ (both `1 − ρ^{i+1}` and `1 − ρ^{i+2}` round to 1 there).
 
+use super::pivots::{Pivots, SETTLED};
 use super::rope::{Coeffs, SideState};
-use super::sweep::{Pivots, SETTLED};
 
 /// `K` numbers, one per side.
 type Lanes<const K: usize> = [f64; K];
@@ -114,74 +114,6 @@ pub(super) fn sweep<const N: usize, const K: usize>(sides: [(&mut SideState, &Co
         let q_new: Lanes<K> = lanes(|k| mid_q[i][k] + h2 * a_new[k]);
         for (k, (side, _, _)) in nodes.iter_mut().enumerate() {
             (side.v[i], side.q[i], side.a[i]) = (v_new[k], q_new[k], a_new[k]);
-        }
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::super::rope::{Coeffs, SideState};
-    use super::super::sweep::{Pivots, sweep_nodes};
-
-    /// A side of `n` nodes in equilibrium under `c`, then set moving: every node displaced,
-    /// moving and accelerating by amounts that differ from node to node.
-    fn side(c: &Coeffs, n: usize, seed: f64) -> SideState {
-        let mut s = SideState::at_equilibrium(c, n);
-        for i in 0..n {
-            let x = seed * (1.0 + i as f64).sqrt();
-            s.q[i] += 1e-3 * x.sin();
-            s.v[i] = 0.1 * x.cos();
-            s.a[i] = -0.05 * (2.0 * x).sin();
-        }
-        s
-    }
-
-    /// The step for a mesh of known size is the loop over the nodes' step to the last bit, for
-    /// both usual sizes, one side alone and two together, a long soft side (off-diagonal
-    /// o > 0, the pivots settle within the mesh) and a short stiff one (o < 0, they do not).
-    #[test]
-    fn the_fixed_size_step_is_the_node_loop_s_bit_for_bit() {
-        // Ropes of the reference hoist (6 × 10.81 kg/m, 6 × 2.634e8 N) at 460 m and 51 m.
-        let coeffs = |length_m: f64, n: usize, end_kg: f64| {
-            let (rho, ea) = (64.86, 6.0 * 2.634e8);
-            let h = length_m / n as f64;
-            Coeffs {
-                ke: ea * n as f64 / length_m,
-                me: rho * h / 6.0,
-                end_mass_kg: end_kg,
-                beta_s: 0.01 * length_m / 460.0,
-                w_n: rho * 9.2 * h,
-                end_load_n: end_kg * 9.2,
-            }
-        };
-        let dt = 1e-3;
-        for n in [12, 24] {
-            let (long, short) = (coeffs(463.56, n, 97_000.0), coeffs(51.34, n, 126_000.0));
-            for (k, c) in [long, short].iter().enumerate() {
-                let mut by_nodes = side(c, n, 0.7 + k as f64);
-                let mut fixed = by_nodes.clone();
-                sweep_nodes([(&mut by_nodes, c, Pivots::of(c, dt))], dt);
-                match n {
-                    12 => super::sweep::<12, 1>([(&mut fixed, c, Pivots::of(c, dt))], dt),
-                    _ => super::sweep::<24, 1>([(&mut fixed, c, Pivots::of(c, dt))], dt),
-                }
-                assert_eq!(
-                    (&fixed.q, &fixed.v, &fixed.a),
-                    (&by_nodes.q, &by_nodes.v, &by_nodes.a),
-                    "n = {n}, side {k}"
-                );
-            }
-            let (mut a, mut b) = (side(&long, n, 0.3), side(&short, n, 1.9));
-            let (mut fa, mut fb) = (a.clone(), b.clone());
-            sweep_nodes([(&mut a, &long, Pivots::of(&long, dt)), (&mut b, &short, Pivots::of(&short, dt))], dt);
-            let pair = [(&mut fa, &long, Pivots::of(&long, dt)), (&mut fb, &short, Pivots::of(&short, dt))];
-            match n {
-                12 => super::sweep::<12, 2>(pair, dt),
-                _ => super::sweep::<24, 2>(pair, dt),
-            }
-            assert_eq!((&fa.q, &fa.v, &fa.a), (&a.q, &a.v, &a.a), "n = {n}, long side of the pair");
-            assert_eq!((&fb.q, &fb.v, &fb.a), (&b.q, &b.v, &b.a), "n = {n}, short side of the pair");
-            assert_ne!(fa.q, side(&long, n, 0.3).q, "the step moves the state");
         }
     }
 }

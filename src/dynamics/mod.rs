@@ -57,18 +57,20 @@
 
 mod braked;
 mod fixed;
+mod pivots;
 mod profile;
 mod rope;
 mod simulate;
 mod split;
+mod state;
 mod sweep;
 
 pub use braked::{PulleyBody, braked_stop};
 pub use profile::{AT_REST_M_S, Kinematics, MotionProfile, Stage};
 pub use simulate::{
-    Checkpoint, DynSample, STREAM_CHUNK, SimOptions, recorded_times, simulate, simulate_prefix, simulate_resumable,
-    simulate_streamed, simulate_with,
+    STREAM_CHUNK, recorded_times, simulate, simulate_prefix, simulate_resumable, simulate_streamed, simulate_with,
 };
+pub use state::{Checkpoint, DynSample, SimOptions};
 
 pub use crate::design::Side;
 use serde::{Deserialize, Serialize};

@@ -123,20 +123,19 @@ fn solve_tridiag(d_int: f64, d_last: f64, off: f64, rhs: &mut [f64], scratch: &m
     solve_tridiag_k([((d_int, d_last, off), rhs, scratch)]);
 }
 
-/// The steps of two sides of equal element count ([`SideState::step`] each), their nodes
-/// visited side by side: each side's elimination is a chain of dependent operations, and
-/// independent chains in one loop keep the processor busy while any one waits. Without the
-/// energy balance, the step is [`super::sweep::sweep`] (eliminating from both ends of each
-/// side); the results are those of each side stepped alone
-/// ([`super::sweep::step_alone`]), bit for bit.
-pub(crate) fn step_pair(sides: [(&mut SideState, &Coeffs, &Coeffs); 2], dt: f64, energy: bool) -> [(f64, f64); 2] {
+/// The steps of two sides ([`SideState::step`] each) with the energy balance, their nodes
+/// visited side by side when their element counts are equal: each side's elimination is a
+/// chain of dependent operations, and independent chains in one loop keep the processor busy
+/// while any one waits. Without the energy balance [`super::sweep::step_pair`] takes the sweep
+/// instead; the results are those of each side stepped alone, bit for bit.
+pub(crate) fn step_pair_energy(
+    sides: [(&mut SideState, &Coeffs, &Coeffs); 2],
+    dt: f64,
+    energy: bool,
+) -> [(f64, f64); 2] {
     let [(a, a_before, a_c), (b, b_before, b_c)] = sides;
     if a.q.len() != b.q.len() || a.q.len() < 2 {
         return [a.step(a_before, a_c, dt, energy), b.step(b_before, b_c, dt, energy)];
-    }
-    if !energy {
-        super::sweep::sweep([(a, a_c), (b, b_c)], dt);
-        return [(0.0, 0.0); 2];
     }
     let ma = a.predict(a_c, dt);
     let mb = b.predict(b_c, dt);

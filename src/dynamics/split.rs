@@ -5,11 +5,10 @@
 //! the paired run takes ([`super::sweep::step_alone`]), so the samples, the checkpoint and the
 //! first error are those of [`super::simulate_resumable`]'s paired run, bit for bit.
 
+use super::pivots::Pivots;
 use super::rope::Coeffs;
-use super::simulate::{
-    Checkpoint, DynSample, Side2, SideSample, SimOptions, coeffs, sample_from, sample_of, step_time_s,
-};
-use super::sweep::{Pivots, step_alone};
+use super::state::{Checkpoint, DynSample, Side2, SideSample, SimOptions, coeffs, sample_from, sample_of, step_time_s};
+use super::sweep::step_alone;
 use super::{DynamicsError, HoistParams, MotionProfile};
 
 /// The steps of a run and where it starts: shared by both sides.

@@ -21,10 +21,11 @@
 //! eliminated as it is). The eliminated right-hand side is `r_i = b_i/piv_i − c_i r_{i−1}` and
 //! the substitution `a_i = r_i − c_i a_{i+1}`.
 
+use super::pivots::{Pivots, SETTLED};
 use super::rope::{Coeffs, SideState};
 
 /// One step of one side without the energy balance, as the paired steps take it
-/// ([`super::rope::step_pair`]), so a side stepped alone gives the same numbers bit for bit;
+/// ([`step_pair`]), so a side stepped alone gives the same numbers bit for bit;
 /// `pivots` are [`Pivots::of`] the step's coefficients and `dt`.
 pub(crate) fn step_alone(side: &mut SideState, c: &Coeffs, pivots: &Pivots, dt: f64) {
     if side.q.len() < 2 {
@@ -32,6 +33,19 @@ pub(crate) fn step_alone(side: &mut SideState, c: &Coeffs, pivots: &Pivots, dt: 
     } else {
         sweep_with([(side, c, *pivots)], dt);
     }
+}
+
+/// The steps of two sides of equal element count: without the energy balance
+/// [`sweep`] (the sides' rows side by side); with it, or for sides of different lengths,
+/// [`super::rope::step_pair_energy`]. Returns each side's work and dissipation (zero without
+/// the energy balance).
+pub(crate) fn step_pair(sides: [(&mut SideState, &Coeffs, &Coeffs); 2], dt: f64, energy: bool) -> [(f64, f64); 2] {
+    let [(a, a_before, a_c), (b, b_before, b_c)] = sides;
+    if !energy && a.q.len() == b.q.len() && a.q.len() >= 2 {
+        sweep([(a, a_c), (b, b_c)], dt);
+        return [(0.0, 0.0); 2];
+    }
+    super::rope::step_pair_energy([(a, a_before, a_c), (b, b_before, b_c)], dt, energy)
 }
 
 /// The step of `K` sides of `n ≥ 2` nodes each (the same `n`), to their end coefficients.
@@ -46,33 +60,6 @@ fn sweep_with<const K: usize>(sides: [(&mut SideState, &Coeffs, Pivots); K], dt:
         12 => super::fixed::sweep::<12, K>(sides, dt),
         24 => super::fixed::sweep::<24, K>(sides, dt),
         _ => sweep_nodes(sides, dt),
-    }
-}
-
-/// What the elimination of a step needs of a side's effective matrix beyond its coefficients:
-/// the last diagonal, the off-diagonal `o`, `λ₊`, `ρ` and `1/λ₊`. They depend on the
-/// coefficients and the step only, not on the state, so a run can form those of several steps
-/// ahead together, where their roots and divisions overlap.
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct Pivots {
-    pub(super) last: f64,
-    pub(super) off: f64,
-    pub(super) lambda: f64,
-    pub(super) rho: f64,
-    pub(super) settled_inv: f64,
-}
-
-impl Pivots {
-    /// The pivots of a step of `dt` to the coefficients `c`.
-    pub(crate) fn of(c: &Coeffs, dt: f64) -> Self {
-        let h2 = 0.25 * dt * dt;
-        let gamma = 0.5 * dt * c.beta_s + h2;
-        let (d, last, off) =
-            (4.0 * c.me + 2.0 * gamma * c.ke, 2.0 * c.me + c.end_mass_kg + gamma * c.ke, c.me - gamma * c.ke);
-        let lambda = 0.5 * (d + (d * d - 4.0 * off * off).sqrt());
-        let settled_inv = 1.0 / lambda;
-        let rho = (off * settled_inv) * (off * settled_inv);
-        Self { last, off, lambda, rho, settled_inv }
     }
 }
 
@@ -95,9 +82,6 @@ pub(super) fn sweep_nodes<const K: usize>(sides: [(&mut SideState, &Coeffs, Pivo
         }
     }
 }
-
-/// `ρ^{i+1}` at and below which the closed-form pivot is `1/λ₊` to the last bit.
-pub(super) const SETTLED: f64 = 1.0 / (1u64 << 54) as f64;
 
 /// One side's state as slices of one length, for [`sweep`].
 struct Lanes<'a> {
@@ -203,6 +187,8 @@ impl<'a> Lanes<'a> {
 
 #[cfg(test)]
 mod tests {
+    use super::SETTLED;
+
     /// The closed-form inverse pivots `(1 − ρ^{i+1})/(λ₊(1 − ρ^{i+2}))` against the
     /// elimination's own recurrence `1/(d − o·c_{i−1})`, `c_i = o/(d − o·c_{i−1})`, for soft and
     /// stiff elements (o > 0 and o < 0) and nearly balanced ones (|o| close to d/2, where the
@@ -221,11 +207,81 @@ mod tests {
                 let ulps = ((closed - recurrence) / recurrence).abs() / f64::EPSILON;
                 assert!(ulps <= 8.0, "d = {d}, o = {o}, row {i}: {ulps} ulp");
                 // Where the sweep takes the settled pivot, it is the formula's own value.
-                if power / rho <= super::SETTLED {
+                if power / rho <= SETTLED {
                     assert_eq!(closed, 1.0 / lambda, "d = {d}, o = {o}, row {i}");
                 }
                 c_prev = o * recurrence;
             }
+        }
+    }
+}
+
+#[cfg(test)]
+mod fixed_size_tests {
+    use super::super::fixed;
+    use super::super::pivots::Pivots;
+    use super::super::rope::{Coeffs, SideState};
+    use super::sweep_nodes;
+
+    /// A side of `n` nodes in equilibrium under `c`, then set moving: every node displaced,
+    /// moving and accelerating by amounts that differ from node to node.
+    fn side(c: &Coeffs, n: usize, seed: f64) -> SideState {
+        let mut s = SideState::at_equilibrium(c, n);
+        for i in 0..n {
+            let x = seed * (1.0 + i as f64).sqrt();
+            s.q[i] += 1e-3 * x.sin();
+            s.v[i] = 0.1 * x.cos();
+            s.a[i] = -0.05 * (2.0 * x).sin();
+        }
+        s
+    }
+
+    /// The step for a mesh of known size is the loop over the nodes' step to the last bit, for
+    /// both usual sizes, one side alone and two together, a long soft side (off-diagonal
+    /// o > 0, the pivots settle within the mesh) and a short stiff one (o < 0, they do not).
+    #[test]
+    fn the_fixed_size_step_is_the_node_loop_s_bit_for_bit() {
+        // Ropes of the reference hoist (6 × 10.81 kg/m, 6 × 2.634e8 N) at 460 m and 51 m.
+        let coeffs = |length_m: f64, n: usize, end_kg: f64| {
+            let (rho, ea) = (64.86, 6.0 * 2.634e8);
+            let h = length_m / n as f64;
+            Coeffs {
+                ke: ea * n as f64 / length_m,
+                me: rho * h / 6.0,
+                end_mass_kg: end_kg,
+                beta_s: 0.01 * length_m / 460.0,
+                w_n: rho * 9.2 * h,
+                end_load_n: end_kg * 9.2,
+            }
+        };
+        let dt = 1e-3;
+        for n in [12, 24] {
+            let (long, short) = (coeffs(463.56, n, 97_000.0), coeffs(51.34, n, 126_000.0));
+            for (k, c) in [long, short].iter().enumerate() {
+                let mut by_nodes = side(c, n, 0.7 + k as f64);
+                let mut by_size = by_nodes.clone();
+                sweep_nodes([(&mut by_nodes, c, Pivots::of(c, dt))], dt);
+                match n {
+                    12 => fixed::sweep::<12, 1>([(&mut by_size, c, Pivots::of(c, dt))], dt),
+                    _ => fixed::sweep::<24, 1>([(&mut by_size, c, Pivots::of(c, dt))], dt),
+                }
+                assert_eq!(
+                    (&by_size.q, &by_size.v, &by_size.a),
+                    (&by_nodes.q, &by_nodes.v, &by_nodes.a),
+                    "n = {n}, side {k}"
+                );
+            }
+            let (mut a, mut b) = (side(&long, n, 0.3), side(&short, n, 1.9));
+            let (mut fa, mut fb) = (a.clone(), b.clone());
+            sweep_nodes([(&mut a, &long, Pivots::of(&long, dt)), (&mut b, &short, Pivots::of(&short, dt))], dt);
+            let pair = [(&mut fa, &long, Pivots::of(&long, dt)), (&mut fb, &short, Pivots::of(&short, dt))];
+            match n {
+                12 => fixed::sweep::<12, 2>(pair, dt),
+                _ => fixed::sweep::<24, 2>(pair, dt),
+            }
+            assert_eq!((&fa.q, &fa.v, &fa.a), (&a.q, &a.v, &a.a), "n = {n}, long side of the pair");
+            assert_eq!((&fb.q, &fb.v, &fb.a), (&b.q, &b.v, &b.a), "n = {n}, short side of the pair");
+            assert_ne!(fa.q, side(&long, n, 0.3).q, "the step moves the state");
         }
     }
 }

@@ -7,7 +7,7 @@ use super::cases::{Case, Loading, Tensions, rated_load_at_bottom, tensions};
 use super::{Lift, RULE_SET, rope};
 use crate::check::{Check, Quantity, Relation, q};
 use crate::codes::{self, formula::Quantities};
-use crate::requirements::Limit;
+use crate::design::Limit;
 
 /// Name of the car-loading traction check.
 pub const LOADING_CHECK: &str = "traction: car loading";

@@ -18,10 +18,12 @@
 //! * [`checks`]: every verdict as a [`crate::check::Check`] record with the rule set `en81-50`;
 //! * [`wrap`]: each case's level-1 distribution, critical μ and load at traction loss;
 //! * [`output`]: the run's summary (JSON, CSV) and terminal table;
-//! * [`workbook`]: checks.xlsx, whose formulas recompute every case; [`html`]: report.html.
+//! * [`workbook`]: checks.xlsx, whose formulas recompute every case; [`html`]: report.html;
+//! * [`command`]: what `run` and `check` do with a lift sheet.
 
 pub mod cases;
 pub mod checks;
+pub mod command;
 pub mod groove;
 pub mod html;
 pub mod output;

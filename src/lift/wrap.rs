@@ -1,18 +1,18 @@
 //! Beyond the verdicts: each traction case's wrap by the level-1 creep model
 //! ([`crate::model::level1`]) with the groove factor f in place of μ — the idle (stick) and
 //! creep arcs, the reserve arc, the demarcation point (JDP) — and, by root finding
-//! ([`crate::roots`]), the critical friction coefficient of the case and the car load at which
+//! ([`crate::numerics::roots`]), the critical friction coefficient of the case and the car load at which
 //! traction is lost.
 
 use super::Lift;
 use super::cases::{Case, Loading, tensions};
 use super::checks::Traction;
-use crate::derived::{WrapSummary, distribution, summarize};
 use crate::design::{Direction, Side};
 use crate::model::level0::EndState;
 use crate::model::level1::steady_rolling;
-use crate::roots::{Holding, RootStats, brent, largest_holding};
+use crate::numerics::roots::{Holding, RootStats, brent, largest_holding};
 use crate::wrap::Distribution;
+use crate::wrap::summary::{WrapSummary, distribution, summarize};
 
 /// Largest friction coefficient searched for the critical μ.
 pub const MU_SEARCH_MAX: f64 = 2.0;

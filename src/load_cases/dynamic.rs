@@ -15,7 +15,7 @@ use crate::dynamics::{self, DynSample, HoistParams, SimOptions};
 use crate::model::level0::{DYNAMIC_CHECK, EndState, euler_limit, safety_factor};
 use crate::model::level4::{self, ELEMENTS_PER_SIDE, Level4Error, ROPE_DYNAMICS_CHECK, WRAP_SAMPLE_S};
 use crate::model::stop::{self, StopMode};
-use crate::planner::Level;
+use crate::plan::Level;
 
 /// Every level-4 case, and the number of rope-dynamics runs it took.
 pub fn cases(

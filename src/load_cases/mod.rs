@@ -20,7 +20,7 @@ use crate::design::{Design, Direction, Phase};
 use crate::model::level0::EndState;
 use crate::model::level4::Level4Error;
 use crate::model::stop::{SlipOnset, StopReport};
-use crate::planner::Level;
+use crate::plan::Level;
 use serde::Serialize;
 use std::time::Instant;
 

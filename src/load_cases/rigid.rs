@@ -12,7 +12,7 @@ use crate::model::braking_checks as braking;
 use crate::model::level0::{self, DYNAMIC_CHECK, EndState, euler_limit, safety_factor};
 use crate::model::level4::{self, Level4Error};
 use crate::model::stop::{self, SlipOnset, StopMode, StopReport};
-use crate::planner::Level;
+use crate::plan::Level;
 
 /// Speeds below this are a profile at rest (m/s): the round-off of its stages' integrals.
 pub const MOVING_M_S: f64 = 1e-9;
@@ -259,7 +259,8 @@ fn add_position_stop(design: &Design, case: &mut CaseResult, masses: &StopMasses
     let mut checks = braking::stop_checks(design, &report, None, &case.label);
     for check in &mut checks {
         check.governing_case = Some(case.label.clone());
-        check.note = Some("full brake force from the trip on, at this position (no idle or build-up time)".into());
+        let at = "full brake force from the trip on, at this position (no idle or build-up time)";
+        check.note = Some(check.note.take().map_or_else(|| at.to_string(), |n| format!("{n}; {at}")));
     }
     if !report.stop_s.is_finite() {
         report_no_stop(&mut checks);

@@ -6,12 +6,12 @@ use crate::design::Design;
 use crate::dynamics::DynSample;
 use crate::model::level0::{EndState, euler_limit};
 use crate::model::level4::StopTrials;
-use crate::roots::RootStats;
+use crate::numerics::roots::RootStats;
 
 /// Relative x-tolerance of the emergency margins' searches (over the range's width, about
 /// 9e-8 m/s² on [d₀/2, 0.999 g]): each evaluation is a run of the ropes through the stop, and
 /// this is far below what the ropes' time step resolves (1 ms: about 1e-5 of the tensions), so
-/// the refinement [`crate::roots::HOLDING_REL_TOL`] would add, one run per margin, is not made.
+/// the refinement [`crate::numerics::roots::HOLDING_REL_TOL`] would add, one run per margin, is not made.
 pub const TRIAL_REL_TOL: f64 = 1e-8;
 
 /// The largest emergency deceleration of a duty-cycle scene with an emergency stop before gross
@@ -25,7 +25,7 @@ pub const TRIAL_REL_TOL: f64 = 1e-8;
 /// whose roots in d (Brent to [`TRIAL_REL_TOL`], on [d₀/2, 0.999 g], d₀ the scene's own
 /// deceleration: a much gentler brake would run the conveyance past the end of the shaft) are
 /// the margins, to slip and to the safety factor. Each search starts from the runs known
-/// before it ([`crate::roots::largest_holding_among`]): the scene's own stop at d₀ (where it
+/// before it ([`crate::numerics::roots::largest_holding_among`]): the scene's own stop at d₀ (where it
 /// holds, the gentler end d₀/2 is not run), and for the second every run the first made. A
 /// trial that cannot run (e.g. a hanging
 /// length reaching 0 during a long stop) is a failure of that margin's search, reported as its

@@ -21,12 +21,14 @@
 //! A bracket without a sign change is a verdict, not an error: "no slip within the searched
 //! range", or "already beyond" when the criterion fails at the current state.
 
+pub mod fit;
+
 mod emergency;
 pub use emergency::emergency;
 
 use crate::design::{Design, Direction};
 use crate::model::level0::{EndState, euler_limit};
-use crate::roots::{self, Holding, RootError, RootStats};
+use crate::numerics::roots::{self, Holding, RootError, RootStats};
 use serde::{Serialize, Serializer};
 use std::fmt;
 

@@ -82,6 +82,16 @@ pub fn stop_checks(design: &Design, stop: &StopReport, onset: Option<&SlipOnset>
             true,
         ),
     ];
+    if stop.mode == StopMode::Imposed {
+        // The scene imposes this deceleration: it is an input, so the window cannot judge it.
+        for c in &mut checks[..2] {
+            *c = c.clone().not_evaluated(format!(
+                "the deceleration {:.4} m/s² is imposed by the sheet (emergency_decel_m_s2), an input and not a \
+                 result: a [brake] section gives the deceleration the brake reaches, which this window judges",
+                stop.decel_m_s2
+            ));
+        }
+    }
     for c in &mut checks {
         c.governing_case = Some(format!("{case} ({way})"));
         if let Some(o) = onset {

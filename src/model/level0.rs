@@ -93,6 +93,9 @@ pub const DYNAMIC_CHECK: &str = "dynamic safety factor";
 /// Name of the static safety-factor check (at rest).
 pub const STATIC_CHECK: &str = "static safety factor";
 
+/// Tensions closer than this fraction of the larger one are equal (see [`safety_factor`]).
+pub const EQUAL_TENSIONS_REL: f64 = 1e-9;
+
 /// Euler/capstan limit `e^{μα}`.
 pub fn euler_limit(mu: f64, wrap_angle_rad: f64) -> f64 {
     (mu * wrap_angle_rad).exp()
@@ -100,9 +103,14 @@ pub fn euler_limit(mu: f64, wrap_angle_rad: f64) -> f64 {
 
 /// Anti-slip safety factor `σ = (T_lo − m'v²)(e^{μα} − 1)/(T_hi − T_lo)`;
 /// `None` when the tensions are equal (no tension difference: unbounded margin).
+///
+/// Equal means equal to within [`EQUAL_TENSIONS_REL`] of the larger tension: the two tensions are
+/// sums of weights and inertial forces of order 10⁵ N, each rounded to about 1e-16 of itself, so
+/// a difference below 1e-9 of the tension (0.1 mN on 100 kN) is rounding, not a load; dividing by
+/// it would print a factor of 10¹⁵ that no hoist can have.
 pub fn safety_factor(state: &EndState, euler_limit: f64) -> Option<f64> {
     let diff = state.t_hi_n() - state.t_lo_n();
-    if diff <= 0.0 {
+    if diff <= EQUAL_TENSIONS_REL * state.t_hi_n().abs() {
         return None;
     }
     let sf = (state.t_lo_n() - state.centrifugal_n) * (euler_limit - 1.0) / diff;
@@ -121,8 +129,9 @@ pub const EULER_SOURCE: &str = "Euler/capstan: e^{μα} of the sheet's μ and wr
 pub struct Classical {
     /// The state checked.
     pub state: EndState,
-    /// The same hoist at rest (a = 0, v = 0).
-    pub static_state: EndState,
+    /// The same hoist at rest (a = 0, v = 0); `None` for a history that never rests (no instant
+    /// with v = 0 and a = 0), which then has no static state and no static safety factor.
+    pub static_state: Option<EndState>,
     /// Friction coefficient μ.
     pub mu: f64,
     /// Wrap angle α (rad).
@@ -220,7 +229,7 @@ pub fn classical(design: &Design, state: EndState, static_state: EndState) -> Cl
 
     Classical {
         state,
-        static_state,
+        static_state: Some(static_state),
         mu,
         wrap_angle_rad: alpha,
         euler_limit: limit,
@@ -235,6 +244,9 @@ pub fn classical(design: &Design, state: EndState, static_state: EndState) -> Cl
         checks,
     }
 }
+
+/// Why a history's static check is not evaluated when it never rests.
+pub const NEVER_AT_REST: &str = "the trip never rests (v = 0 and a = 0 at no instant): it has no static state; the design's static checks take the rigid static tensions at the ends of its travel";
 
 /// Name of the Euler/capstan check.
 pub const GROSS_SLIP_CHECK: &str = "gross slip (Euler/capstan)";
@@ -290,20 +302,23 @@ pub fn over_history(design: &Design, states: &[(f64, EndState)]) -> Classical {
     }
     c.static_safety_factor = None;
     c.dynamic_safety_factor = None;
+    c.static_state = None;
+    let static_formula = "σ_s = T_lo (e^{μα} − 1) / (T_hi − T_lo), worst instant at rest";
     if let Some((t, s)) = worst_by(&at_rest) {
         c.static_safety_factor = safety_factor(&s, limit);
-        c.static_state = s;
+        c.static_state = Some(s);
         c.checks.push(with_time(
-            safety_check(
-                STATIC_CHECK,
-                "σ_s = T_lo (e^{μα} − 1) / (T_hi − T_lo), worst instant at rest",
-                &s,
-                limit,
-                c.static_safety_factor,
-                &req.static_limit(),
-            ),
+            safety_check(STATIC_CHECK, static_formula, &s, limit, c.static_safety_factor, &req.static_limit()),
             t,
         ));
+    } else if !states.is_empty() {
+        // A trip that never rests has no static state: its static factor is not its moving
+        // states' (nor unbounded), so the check says so instead of printing one.
+        c.checks.push(
+            Check::new(STATIC_CHECK, static_formula, None, "")
+                .against(Relation::AtLeast, Some(&req.static_limit()), true)
+                .not_evaluated(NEVER_AT_REST),
+        );
     }
     if let Some((t, s)) = worst_by(&|s| !at_rest(s)) {
         c.dynamic_safety_factor = safety_factor(&s, limit);

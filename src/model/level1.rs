@@ -20,8 +20,8 @@
 //! determined by this quasi-static model.
 
 use super::level0::EndState;
-use crate::contact::ContactLaw;
 use crate::design::{Direction, Side};
+use crate::wrap::contact::ContactLaw;
 use crate::wrap::{Piece, TensionField};
 
 /// The steady rolling state over the wrap.
@@ -65,7 +65,7 @@ pub fn steady_rolling(mu: f64, wrap_angle_rad: f64, state: &EndState, travel: Di
     let (n1, n2) = (state.t1_n - c, state.t2_n - c);
     let travel = Direction::of_speed(state.speed_m_s).unwrap_or(travel);
     let beta = (n1 / n2).ln().abs() / mu;
-    let gross_slip = crate::contact::slips_grossly(n1, n2, mu, alpha);
+    let gross_slip = crate::wrap::contact::slips_grossly(n1, n2, mu, alpha);
 
     let pieces = if gross_slip {
         // Sliding: exponential decay from the high-tension end over the whole wrap.

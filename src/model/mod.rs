@@ -2,7 +2,7 @@
 //! level 0 the classical closed-form checks, level 1 the steady rolling distribution of
 //! creep theory, level 2 the discrete stick–slip model on a rigid lining, level 3 the wrap on an
 //! elastic lining with rope bending and inertia (clarabel), level 4 a hoisting cycle. All levels share the wrap discretization ([`crate::wrap`]) and the contact
-//! law ([`crate::contact`]); levels 2 and 3 run through a load history by one runner ([`history`])
+//! law ([`crate::wrap::contact`]); levels 2 and 3 run through a load history by one runner ([`history`])
 //! with the numerical knobs of [`numerics`]. [`braking`] is the emergency stop with the pulley as a body on rigid ropes, [`braking_checks`] its checks.
 
 pub mod braking;

@@ -27,9 +27,11 @@ pub mod plot_series;
 pub mod plot_track;
 pub mod plot_wrap;
 pub mod plot_zones;
+pub mod ropes_out;
 pub mod summary;
 pub mod table;
 pub mod target;
+pub mod verdict;
 pub mod xlsx;
 pub mod xlsx_formulas;
 
@@ -179,7 +181,29 @@ fn write_scene(
     let Some(wrap) = &scene.wrap else { return Ok(()) };
     let scene_dir = dir.join(&scene.name);
     fs::create_dir_all(&scene_dir).map_err(io(&scene_dir))?;
-    // The two largest files side by side (a failure of the first is reported first).
+    write_scene_csv(&scene_dir, scene, wrap)?;
+    if let Some(tracks) = &scene.tracks {
+        let path = scene_dir.join("track.csv");
+        let f = File::create(&path).map_err(io(&path))?;
+        csv_out::write_tracks(BufWriter::new(f), &tracks.tracks)
+            .map_err(|source| ReportError::Csv { path: path.display().to_string(), source })?;
+        if options.plots {
+            let title = format!("{} — rope elements of {} m through the wrap", scene.name, tracks.element_length_m);
+            plot_track::plot_tracks(&scene_dir.join("track.png"), &title, &tracks.tracks, scene.classical.mu)?;
+        }
+    }
+    if let (Some(ropes), Some(history)) = (&scene.ropes, &scene.history) {
+        write_ropes(&scene_dir, &scene.name, ropes, history, options.plots)?;
+    }
+    if options.plots {
+        plot_scene(&scene_dir, summary, scene, wrap)?;
+    }
+    Ok(())
+}
+
+/// A scene's distribution.csv and history.csv, the two largest files, side by side (a failure
+/// of the first is reported first).
+fn write_scene_csv(scene_dir: &Path, scene: &SceneResult, wrap: &crate::run::WrapResult) -> Result<(), ReportError> {
     let (distribution, history) = rayon::join(
         || {
             let dist_path = scene_dir.join("distribution.csv");
@@ -197,66 +221,76 @@ fn write_scene(
         },
     );
     distribution?;
-    history?;
-    if let Some(tracks) = &scene.tracks {
-        let path = scene_dir.join("track.csv");
-        let f = File::create(&path).map_err(io(&path))?;
-        csv_out::write_tracks(BufWriter::new(f), &tracks.tracks)
-            .map_err(|source| ReportError::Csv { path: path.display().to_string(), source })?;
-        if options.plots {
-            let title = format!("{} — rope elements of {} m through the wrap", scene.name, tracks.element_length_m);
-            plot_track::plot_tracks(&scene_dir.join("track.png"), &title, &tracks.tracks, scene.classical.mu)?;
-        }
+    history
+}
+
+/// A scene's figures: the distribution, the wrap diagrams (the final state and each snapshot),
+/// and for a time scene its history and θ–t map.
+fn plot_scene(
+    scene_dir: &Path,
+    summary: &Summary,
+    scene: &SceneResult,
+    wrap: &crate::run::WrapResult,
+) -> Result<(), ReportError> {
+    let at = scene.t_s.map_or_else(String::new, |t| format!("t = {t} s, "));
+    let title =
+        format!("{} — level {}, {}{}", scene.name, scene.plan.level, at, table::state_label(&scene.classical.state));
+    plot_distribution::plot_distribution(&scene_dir.join("distribution.png"), &title, &wrap.distribution)?;
+    let title = format!("{} — wrap diagram, level {}, {}", scene.name, scene.plan.level, at.trim_end_matches(", "));
+    plot_wrap::plot_wrap_diagram(
+        &scene_dir.join("wrap_diagram.png"),
+        title.trim_end_matches(", "),
+        &wrap.distribution,
+    )?;
+    for snapshot in &scene.snapshots {
+        let title = format!("{} — wrap diagram, level {}, t = {} s", scene.name, scene.plan.level, snapshot.t_s);
+        let path = scene_dir.join(snapshot_diagram_name(snapshot.t_s));
+        plot_wrap::plot_wrap_diagram(&path, &title, snapshot)?;
     }
-    if options.plots {
-        let at = scene.t_s.map_or_else(String::new, |t| format!("t = {t} s, "));
-        let title = format!(
-            "{} — level {}, {}{}",
-            scene.name,
-            scene.plan.level,
-            at,
-            table::state_label(&scene.classical.state)
-        );
-        plot_distribution::plot_distribution(&scene_dir.join("distribution.png"), &title, &wrap.distribution)?;
-        let title = format!("{} — wrap diagram, level {}, {}", scene.name, scene.plan.level, at.trim_end_matches(", "));
-        plot_wrap::plot_wrap_diagram(
-            &scene_dir.join("wrap_diagram.png"),
-            title.trim_end_matches(", "),
-            &wrap.distribution,
+    let Some(history) = &scene.history else { return Ok(()) };
+    let r = &summary.requirements;
+    let minima =
+        history_figure::Minima { static_min: r.static_safety_factor_min, dynamic_min: r.dynamic_safety_factor_min };
+    let plot = plot_history::HistoryPlot {
+        anchors_n: &history.anchors_n,
+        midpoints_n: &history.midpoints_n,
+        code_sf: &history.code_sf,
+        minima,
+        radius_m: history.pulley_radius_m,
+    };
+    let title = format!("{} — history, level {}", scene.name, scene.plan.level);
+    plot_history::plot_history(&scene_dir.join("history.png"), &title, &history.rows, plot)?;
+    // The map is kept only by a run that plots (`run::Options::utilization_map`).
+    if !history.map.is_empty() {
+        let title = format!("{} — friction utilization over the wrap (θ–t)", scene.name);
+        plot_history::plot_wrap_map(
+            &scene_dir.join("wrap_map.png"),
+            &title,
+            &history.rows,
+            wrap.distribution.wrap_angle_deg,
+            &history.map,
+            history.pulley_radius_m,
         )?;
-        for snapshot in &scene.snapshots {
-            let title = format!("{} — wrap diagram, level {}, t = {} s", scene.name, scene.plan.level, snapshot.t_s);
-            let path = scene_dir.join(snapshot_diagram_name(snapshot.t_s));
-            plot_wrap::plot_wrap_diagram(&path, &title, snapshot)?;
-        }
-        if let Some(history) = &scene.history {
-            let r = &summary.requirements;
-            let minima = history_figure::Minima {
-                static_min: r.static_safety_factor_min,
-                dynamic_min: r.dynamic_safety_factor_min,
-            };
-            let plot = plot_history::HistoryPlot {
-                anchors_n: &history.anchors_n,
-                midpoints_n: &history.midpoints_n,
-                code_sf: &history.code_sf,
-                minima,
-                radius_m: history.pulley_radius_m,
-            };
-            let title = format!("{} — history, level {}", scene.name, scene.plan.level);
-            plot_history::plot_history(&scene_dir.join("history.png"), &title, &history.rows, plot)?;
-            // The map is kept only by a run that plots (`run::Options::utilization_map`).
-            if !history.map.is_empty() {
-                let title = format!("{} — friction utilization over the wrap (θ–t)", scene.name);
-                plot_history::plot_wrap_map(
-                    &scene_dir.join("wrap_map.png"),
-                    &title,
-                    &history.rows,
-                    wrap.distribution.wrap_angle_deg,
-                    &history.map,
-                    history.pulley_radius_m,
-                )?;
-            }
-        }
+    }
+    Ok(())
+}
+
+/// A multi-rope scene's ropes.csv and (with plots) ropes.png, on the history's instants.
+fn write_ropes(
+    scene_dir: &Path,
+    name: &str,
+    ropes: &crate::ropes::scene::SceneRopes,
+    history: &crate::run::HistoryOutput,
+    plots: bool,
+) -> Result<(), ReportError> {
+    let mean: Vec<(f64, f64)> = history.rows.iter().map(|r| (r.t1_n, r.t2_n)).collect();
+    let path = scene_dir.join("ropes.csv");
+    let f = File::create(&path).map_err(io(&path))?;
+    ropes_out::write_ropes_csv(BufWriter::new(f), ropes, &mean)
+        .map_err(|source| ReportError::Csv { path: path.display().to_string(), source })?;
+    if plots {
+        let title = format!("{name} — each rope's end tensions ({} ropes) and the mean rope", ropes.set.count());
+        ropes_out::plot_ropes(&scene_dir.join("ropes.png"), &title, ropes, &mean)?;
     }
     Ok(())
 }

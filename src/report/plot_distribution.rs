@@ -263,10 +263,10 @@ fn thick_line(chart: &Chart, points: &[(f64, f64)], color: RGBColor) -> Result<(
 /// Level 1's steady distribution for T1 = 248.5 kN, T2 = 211.9 kN (μ = 0.25, α = 187.42°,
 /// N = 180) at `speed_m_s`, sides swapped when `mirror` (T1 ↔ T2, v → −v): a test input.
 pub(crate) fn steady_distribution(speed_m_s: f64, mirror: bool) -> Distribution {
-    use crate::derived;
     use crate::design::Direction;
     use crate::model::level0::EndState;
     use crate::model::level1::steady_rolling;
+    use crate::wrap::summary;
     let (t1_n, t2_n) = if mirror { (211.9e3, 248.5e3) } else { (248.5e3, 211.9e3) };
     let v = if mirror { -speed_m_s } else { speed_m_s };
     let state = EndState { t1_n, t2_n, speed_m_s: v, accel_m_s2: 0.0, centrifugal_n: 0.0 };
@@ -277,8 +277,8 @@ pub(crate) fn steady_distribution(speed_m_s: f64, mirror: bool) -> Distribution 
         if mirror { Direction::Lower } else { Direction::Lift },
         1.2e8,
     );
-    let summary = derived::summarize(&rolling.field, &rolling.law).expect("summary");
-    derived::distribution(0.0, &rolling.field, &rolling.law, &summary, 180, rolling.gross_slip, |_, t| {
+    let summary = summary::summarize(&rolling.field, &rolling.law).expect("summary");
+    summary::distribution(0.0, &rolling.field, &rolling.law, &summary, 180, rolling.gross_slip, |_, t| {
         rolling.slip_velocity_m_s(t)
     })
 }
@@ -286,9 +286,9 @@ pub(crate) fn steady_distribution(speed_m_s: f64, mirror: bool) -> Distribution 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::contact::NodeState;
     use crate::report::plot_zones::ZoneKind;
     use crate::wrap::Zone;
+    use crate::wrap::contact::NodeState;
 
     fn labels(legend: &[LegendEntry]) -> Vec<&str> {
         legend.iter().map(|l| l.1.as_str()).collect()

@@ -94,7 +94,7 @@ mod tests {
             normal_n_per_rad: 2e5,
             friction_n_per_rad: 0.0,
             utilization: 0.0,
-            state: crate::contact::NodeState::Stick,
+            state: crate::wrap::contact::NodeState::Stick,
             contact_force_n: 2e4,
             friction_force_n: 10.0,
             impulse_n_s,

@@ -5,7 +5,7 @@
 //! relative to the lining ([`crate::wrap::Sample::sliding`]) is it *slipping*.
 
 use super::friction_colour::zone_color;
-use crate::contact::NodeState;
+use crate::wrap::contact::NodeState;
 use crate::wrap::{Distribution, Zone};
 use plotters::style::RGBColor;
 

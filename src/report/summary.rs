@@ -1,16 +1,16 @@
 //! The scalar summary of a run, as written to summary.json and summary.csv (docs/interface.md).
 
 use crate::check::Check;
-use crate::cost::Estimate;
 use crate::design::{Design, Requirements};
-use crate::fit::CreepFit;
 use crate::load_cases::MatrixResult;
 use crate::margins::Margins;
+use crate::margins::fit::CreepFit;
 use crate::model::history::SolverReport;
 use crate::model::level3::Level3Stats;
 use crate::model::stop::StopReport;
-use crate::planner::Level;
-use crate::roots::RootStats;
+use crate::numerics::roots::RootStats;
+use crate::plan::Level;
+use crate::plan::cost::Estimate;
 use crate::run::{RunResult, SceneResult};
 use serde::Serialize;
 
@@ -45,7 +45,8 @@ pub struct SceneSummary {
     pub tension_ratio: f64,
     /// (T_lo − m'v²)(e^{μα} − 1)/(T_hi − T_lo) of this state; `None` when T1 = T2.
     pub safety_factor: Option<f64>,
-    /// The safety factor at rest (a = 0, v = 0).
+    /// The safety factor at rest (a = 0, v = 0); `None` when T1 = T2 at rest or when the scene
+    /// never rests (then `rests` is false).
     pub static_safety_factor: Option<f64>,
     /// The dynamic safety factor (docs/interface.md §3.3); `None` without a state in motion.
     pub dynamic_safety_factor: Option<f64>,
@@ -114,6 +115,8 @@ pub struct SceneSummary {
     pub stopping_time_s: Option<f64>,
     /// Distance from the trip to standstill (m).
     pub stopping_distance_m: Option<f64>,
+    /// Whether the scene has a state at rest (a history that never rests has no static state).
+    pub rests: bool,
 }
 
 impl SceneSummary {
@@ -141,6 +144,7 @@ impl SceneSummary {
             tension_ratio: c.tension_ratio,
             safety_factor: c.safety_factor,
             static_safety_factor: c.static_safety_factor,
+            rests: c.static_state.is_some(),
             dynamic_safety_factor: c.dynamic_safety_factor,
             dynamic_angle_deg: c.dynamic_angle_rad.to_degrees(),
             reserve_angle_deg: c.reserve_angle_rad.to_degrees(),
@@ -201,6 +205,13 @@ pub struct SceneJson {
     /// Rope elements followed through the wrap (scenes with `track_*` keys only).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub tracks: Option<Vec<TrackJson>>,
+    /// Multi-rope load sharing (duty cycles of a sheet with `[ropes]` only): the largest
+    /// deviation of a rope's tension from the mean over every round trip run (%).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub max_rope_deviation_pct: Option<f64>,
+    /// Multi-rope load sharing: the worst rope, each rope's totals, the cylinders' stroke.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub ropes: Option<super::ropes_out::RopesJson>,
 }
 
 /// One followed element in summary.json: when it was on the pulley, its largest forces, its
@@ -271,6 +282,9 @@ pub struct Summary {
     pub warnings: usize,
     /// Extension: how many checks are not judged (no requirement given, or not evaluated).
     pub unjudged: usize,
+    /// Extension: what the verdict rests on — the governing check, and each failure, warning
+    /// and unjudged check with its sentence in engineering terms.
+    pub verdict: super::verdict::Overview,
     /// The run's wall time (ms).
     pub runtime_ms: f64,
     /// Extension: the limits the checks used, each with its source.
@@ -296,6 +310,7 @@ impl Summary {
             headline: super::checklist::headline(run.all_checks_pass(), &tally),
             warnings: tally.warnings,
             unjudged: tally.unjudged,
+            verdict: super::verdict::Overview::of(run),
             runtime_ms: run.runtime_ms,
             requirements: design.requirements.clone(),
             scenes: run
@@ -315,6 +330,11 @@ impl Summary {
                         .tracks
                         .as_ref()
                         .map(|o| o.tracks.iter().map(|t| TrackJson::of(t, o.element_length_m)).collect()),
+                    max_rope_deviation_pct: s.ropes.as_ref().map(|r| r.sharing.max_deviation_pct()),
+                    ropes: s
+                        .ropes
+                        .as_ref()
+                        .map(|r| super::ropes_out::RopesJson::of(r, design.rope.min_breaking_force_n)),
                 })
                 .collect(),
             design_checks: run.design.as_ref().map(|d| d.checks.clone()),

@@ -61,6 +61,7 @@ pub fn render(title: &str, sheet: &str, run: &RunResult, style: Style) -> String
         }
         super::matrix::render_design_checks(&mut out, d, style);
     }
+    verdict_lines(&mut out, run, style);
     let _ = writeln!(
         out,
         "\n{} — {} scene(s) in {:.2} ms",
@@ -69,6 +70,19 @@ pub fn render(title: &str, sheet: &str, run: &RunResult, style: Style) -> String
         run.runtime_ms
     );
     out
+}
+
+/// What the verdict rests on: the governing check, then each failure and warning with its
+/// sentence (docs/report.md, "Verdict").
+fn verdict_lines(out: &mut String, run: &RunResult, style: Style) {
+    let o = super::verdict::Overview::of(run);
+    let _ = writeln!(out, "\nVerdict:");
+    if let Some(g) = o.governing_line() {
+        let _ = writeln!(out, "  {g}");
+    }
+    for e in &o.attention {
+        let _ = writeln!(out, "  {} [{}] {}: {}", style.verdict_of(e.verdict), e.group, e.check, e.explanation);
+    }
 }
 
 /// The summary table: one row per scene with its end tensions, ratios, safety factors, arcs,
@@ -93,7 +107,8 @@ fn summary_table(out: &mut String, run: &RunResult, style: Style) {
             c.tension_ratio,
             c.euler_limit,
             factor(c.safety_factor),
-            factor(c.static_safety_factor),
+            // A scene that never rests has no static factor ("—"); ∞ is for T1 = T2 at rest.
+            if c.static_state.is_some() { factor(c.static_safety_factor) } else { "—".into() },
             // Where there is a dynamic check: a loads scene at its own acceleration, a time scene
             // at its worst instant in motion.
             if c.checks.iter().any(|k| k.name == DYNAMIC_CHECK) {

@@ -8,6 +8,7 @@ use crate::check::design::{
     DIFFERENCE_RATING_CHECK, GUIDE_D_CHECK, MU_CAP_CHECK, PEAK_PRESSURE_CHECK, PRESSURE_CHECK, PULLEY_D_CHECK,
     ROPE_SF_CHECK, TENSION_RATING_CHECK,
 };
+use crate::check::design::{PROFILE_END_CHECK, PROFILE_END_SPEED};
 use crate::check::{Check, Verdict};
 use crate::model::braking_checks::{
     DECEL_LIFT_MAX_CHECK, DECEL_LIFT_MIN_CHECK, DECEL_LOWER_MAX_CHECK, DECEL_LOWER_MIN_CHECK, GUIDE1_INPUT,
@@ -44,6 +45,7 @@ pub fn value_expr(c: &Check) -> Option<Expr> {
         PRESSURE_CHECK => (t1 + t2) / (input("D") * input("d")),
         PEAK_PRESSURE_CHECK => input("n_max") / (input("R") * input("d")),
         MU_CAP_CHECK => input("μ"),
+        PROFILE_END_CHECK => call(Func::Abs, vec![input(PROFILE_END_SPEED)]),
         TENSION_RATING_CHECK => n * hi,
         DIFFERENCE_RATING_CHECK => n * call(Func::Abs, vec![t1 - t2]),
         DECEL_LIFT_MIN_CHECK
@@ -111,7 +113,7 @@ mod tests {
 
     /// A stop's check with `inputs`; its value and limit do not enter the formulas.
     fn stop_check(name: &'static str, inputs: Vec<crate::check::Quantity>) -> Check {
-        let limit = Limit { value: 1.0, source: "test".into(), rule: crate::requirements::Rule::sheet() };
+        let limit = Limit { value: 1.0, source: "test".into(), rule: crate::design::requirements::Rule::sheet() };
         Check::new(name, "", Some(1.0), "m/s²").inputs(inputs).against(Relation::AtMost, Some(&limit), true)
     }
 

@@ -8,9 +8,13 @@
 //!
 //! * [`share`]: one conveyance's sharing (rigid or equalising, with the cylinders' stroke);
 //! * [`trip`]: the ropes' state carried through a trip and over repeated round trips;
-//! * [`margin`]: the largest groove pitch-diameter difference the hoist tolerates.
+//! * [`margin`]: the largest groove pitch-diameter difference the hoist tolerates;
+//! * [`scene`]: one scene's sharing with the worst rope and the groove tolerance;
+//! * [`checks`]: the sharing's check records.
 
+pub mod checks;
 pub mod margin;
+pub mod scene;
 pub mod share;
 pub mod trip;
 

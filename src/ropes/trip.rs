@@ -36,6 +36,8 @@ pub struct RopeRow {
     pub tension_n: [Vec<f64>; 2],
     /// Each cylinder's piston position from mid-stroke at conveyance 1 and 2 (m).
     pub piston_m: [Vec<f64>; 2],
+    /// Rope each rope slid grossly since the trip's start (m).
+    pub slip_m: Vec<f64>,
 }
 
 /// A rope's totals over the trips run.
@@ -110,6 +112,9 @@ impl Sharing {
 const STEP_FRACTION: f64 = 0.02;
 /// Newton iterations for a rope brought back to the Euler limit.
 const SLIP_ITERATIONS: usize = 12;
+/// Gauss–Seidel sweeps over the ropes past the limit: sliding one rope loads the others, and
+/// two ropes at the limit together converge by a factor of about 1/n per sweep.
+const SLIP_SWEEPS: usize = 60;
 
 /// Every rope's tensions for the state at one instant.
 pub fn tensions(h: &Hoisting, set: &RopeSet, state: &RopeState, row: &MeanRow) -> ([Vec<f64>; 2], [Vec<f64>; 2]) {
@@ -194,7 +199,13 @@ fn excess(h: &Hoisting, t1: f64, t2: f64, v: f64) -> (f64, f64) {
 pub fn relieve_slip(h: &Hoisting, set: &RopeSet, state: &mut RopeState, row: &MeanRow) -> Vec<f64> {
     let n = set.count();
     let mut slid = vec![0.0; n];
-    for _sweep in 0..3 {
+    // The usual row: no rope past the limit, one evaluation of the tensions.
+    let (t, _) = tensions(h, set, state, row);
+    let past = |i: usize| excess(h, t[0][i], t[1][i], row.speed_m_s).0 > 1e-9 * (t[0][i] + t[1][i]);
+    if !(0..n).any(past) {
+        return slid;
+    }
+    for _sweep in 0..SLIP_SWEEPS {
         let mut any = false;
         for i in 0..n {
             let (t, _) = tensions(h, set, state, row);
@@ -242,7 +253,9 @@ pub fn relieve_slip(h: &Hoisting, set: &RopeSet, state: &mut RopeState, row: &Me
 pub fn safety_factor(h: &Hoisting, t1: f64, t2: f64, v: f64) -> Option<f64> {
     let (hi, lo) = (t1.max(t2), t1.min(t2));
     let c = h.mass_per_m_kg * v * v;
-    (hi > lo).then(|| (lo - c) * ((h.mu * h.wrap_angle_rad).exp() - 1.0) / (hi - lo))
+    // Equal to rounding is equal (see `level0::safety_factor`): no factor of 10¹⁵.
+    (hi - lo > crate::model::level0::EQUAL_TENSIONS_REL * hi.abs())
+        .then(|| (lo - c) * ((h.mu * h.wrap_angle_rad).exp() - 1.0) / (hi - lo))
 }
 
 /// Creep arc of one rope (deg), capped at the wrap.
@@ -264,14 +277,23 @@ pub fn run_trip(h: &Hoisting, set: &RopeSet, rows: &[MeanRow], mut state: RopeSt
             let prev = &rows[j - 1];
             let dx = 0.5 * (prev.speed_m_s + row.speed_m_s) * (row.t_s - prev.t_s);
             advance(h, set, &mut state, prev, row, dx);
+        }
+        let (mut t, mut p) = tensions(h, set, &state, row);
+        // Only a row with a rope past the limit needs the relief (and its tensions again).
+        if j > 0 && (0..n).any(|i| excess(h, t[0][i], t[1][i], row.speed_m_s).0 > 1e-9 * (t[0][i] + t[1][i])) {
             let slid = relieve_slip(h, set, &mut state, row);
-            let (t, _) = tensions(h, set, &state, row);
-            for i in 0..n {
-                totals[i].slip_m += slid[i];
-                totals[i].creep_m += dx.abs() * (t[0][i] - t[1][i]).abs() / set.ea_n[i];
+            for (tot, s) in totals.iter_mut().zip(&slid) {
+                tot.slip_m += s;
+            }
+            (t, p) = tensions(h, set, &state, row);
+        }
+        if j > 0 {
+            let prev = &rows[j - 1];
+            let dx = 0.5 * (prev.speed_m_s + row.speed_m_s) * (row.t_s - prev.t_s);
+            for (i, tot) in totals.iter_mut().enumerate() {
+                tot.creep_m += dx.abs() * (t[0][i] - t[1][i]).abs() / set.ea_n[i];
             }
         }
-        let (t, p) = tensions(h, set, &state, row);
         for s in 0..2 {
             let mean = if s == 0 { row.t1_n } else { row.t2_n };
             for i in 0..n {
@@ -287,7 +309,8 @@ pub fn run_trip(h: &Hoisting, set: &RopeSet, rows: &[MeanRow], mut state: RopeSt
                 tot.safety_factor_min = Some(tot.safety_factor_min.map_or(sf, |m: f64| m.min(sf)));
             }
         }
-        out.push(RopeRow { t_s: row.t_s, speed_m_s: row.speed_m_s, tension_n: t, piston_m: p });
+        let slip_m = totals.iter().map(|r| r.slip_m).collect();
+        out.push(RopeRow { t_s: row.t_s, speed_m_s: row.speed_m_s, tension_n: t, piston_m: p, slip_m });
     }
     let summary = TripSummary { max_deviation_pct: max_dev, stroke_used_m: stroke, ropes: totals, end: state };
     (out, summary)

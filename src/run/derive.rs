@@ -3,11 +3,11 @@
 
 use super::{RunError, SceneResult};
 use crate::design::{Design, Direction, Output, Scene, SceneKind};
-use crate::fit;
 use crate::margins;
+use crate::margins::fit;
 use crate::model::level0::EndState;
 use crate::model::level4::{RopeRun, StopTrials};
-use crate::planner::Level;
+use crate::plan::Level;
 
 /// The answers derived from a scene's result that it asks for: margins from its state (a time
 /// scene's worst instant), the creep-theory fit of its reported distribution.

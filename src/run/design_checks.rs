@@ -2,9 +2,9 @@
 //! governing case of each check) and the checks beside anti-slip over every static state.
 
 use super::{RunError, SceneResult};
-use crate::check::Check;
-use crate::check::design::{PeakContact, StaticState, design_checks};
-use crate::design::{Design, SceneKind};
+use crate::check::design::{PROFILE_END_CHECK, PROFILE_END_SPEED, PeakContact, StaticState, design_checks};
+use crate::check::{Check, Relation, q};
+use crate::design::{Design, Direction, Limit, SceneKind};
 use crate::dynamics;
 use crate::load_cases::{self, MatrixResult, Position};
 use crate::model::level4;
@@ -57,6 +57,7 @@ pub fn evaluate(design: &Design, scenes: &[SceneResult], rope_dynamics: bool) ->
         })
         .max_by(|a, b| a.normal_n_per_rad.total_cmp(&b.normal_n_per_rad));
     let mut checks = design_checks(design, &statics, peak);
+    checks.extend(profile_end_check(design));
     if let Some(m) = &matrix {
         checks.extend(m.checks.iter().cloned());
     }
@@ -65,8 +66,14 @@ pub fn evaluate(design: &Design, scenes: &[SceneResult], rope_dynamics: bool) ->
 
 /// A scene's static states: its state at rest; a duty cycle's also at both ends of its travel.
 fn scene_statics(design: &Design, s: &SceneResult) -> Vec<StaticState> {
-    let st = &s.classical.static_state;
-    let mut out = vec![StaticState { case: format!("scene {} at rest", s.name), t1_n: st.t1_n, t2_n: st.t2_n }];
+    // Only an instant at rest is a static state: a trip that never rests contributes the rigid
+    // static tensions at the ends of its travel (below), never a moving or slipping instant.
+    let mut out: Vec<StaticState> = s
+        .classical
+        .static_state
+        .iter()
+        .map(|st| StaticState { case: format!("scene {} at rest", s.name), t1_n: st.t1_n, t2_n: st.t2_n })
+        .collect();
     let scene = design.scenes.iter().find(|d| d.name == s.name);
     if let (Some(SceneKind::DutyCycle(cycle)), Some(hoist)) = (scene.map(|d| &d.kind), &design.hoist) {
         let params = level4::hoist_params(design, hoist, cycle);
@@ -78,4 +85,39 @@ fn scene_statics(design: &Design, s: &SceneResult) -> Vec<StaticState> {
         }
     }
     out
+}
+
+/// The `[hoist]` profile's speed at its end, against rest: a lift that ends moving leaves its
+/// stop, the static state at the top and the trip's end unchecked. A warning, not a failure:
+/// the checks of the travel it does cover stand.
+fn profile_end_check(design: &Design) -> Option<Check> {
+    let hoist = design.hoist.as_ref().filter(|h| !h.stages.is_empty())?;
+    let stages = level4::trip_stages(hoist, Direction::Lift, None);
+    let profile = dynamics::MotionProfile::new(&stages).ok()?;
+    let end = profile.end();
+    let source = format!("a trip ends at rest: |v| at the profile's end within {} m/s", dynamics::AT_REST_M_S);
+    let mut check = Check::new(
+        PROFILE_END_CHECK,
+        "|v(t_end)|, v the integral of the stages' accelerations",
+        Some(end.speed_m_s.abs()),
+        "m/s",
+    )
+    .inputs(vec![
+        q("stages", stages.len() as f64, ""),
+        q("t_end", profile.duration_s(), "s"),
+        q("x at t_end", end.x_m, "m"),
+        q("a at t_end", end.accel_m_s2, "m/s²"),
+        q(PROFILE_END_SPEED, end.speed_m_s, "m/s"),
+    ])
+    .against(Relation::AtMost, Some(&Limit::computed(dynamics::AT_REST_M_S, source)), false);
+    check.governing_case = Some("[hoist] motion profile, lifting side 1".into());
+    if check.verdict == crate::check::Verdict::Warning {
+        check.note = Some(format!(
+            "the profile ends at {:.3} m/s after {:.1} m: the trip's stop and its state at rest at the end are not \
+             computed; add stages that bring the hoist to rest (or `until_stop = true` on the last)",
+            end.speed_m_s.abs(),
+            end.x_m
+        ));
+    }
+    Some(check)
 }

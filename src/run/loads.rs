@@ -2,12 +2,12 @@
 
 use super::wrap_run::{Initial, steady_run, wrap_history};
 use super::{Options, RunError, SceneResult, WrapResult, empty};
-use crate::derived;
 use crate::design::{Design, EndLoads, LoadsScene, Scene};
 use crate::model::level0;
 use crate::model::level1;
-use crate::planner::{Level, Plan};
+use crate::plan::{Level, Plan};
 use crate::wrap::Distribution;
+use crate::wrap::summary;
 
 pub(super) fn run_loads(
     design: &Design,
@@ -31,9 +31,9 @@ pub(super) fn run_loads(
                 loads.direction,
                 design.rope.ea_n,
             );
-            let summary = derived::summarize(&rolling.field, &rolling.law)
+            let summary = summary::summarize(&rolling.field, &rolling.law)
                 .map_err(|source| RunError::Roots { scene: scene.name.clone(), source })?;
-            let distribution = derived::distribution(
+            let distribution = summary::distribution(
                 0.0,
                 &rolling.field,
                 &rolling.law,
@@ -61,7 +61,7 @@ pub(super) fn run_loads(
                 initial,
                 options,
             )?;
-            crate::tally::add_increments(run.stats.increments);
+            crate::numerics::work_tally::add_increments(run.stats.increments);
             result.level3 = level3;
             let last = run.snapshots.into_iter().last();
             result.wrap = last

@@ -1,6 +1,6 @@
 //! Runs a design: plans each scene, runs its model level, derives the wrap quantities.
 //!
-//! Stages per scene: plan ([`crate::planner`]) → the model level of its kind (`loads`: level 0,
+//! Stages per scene: plan ([`crate::plan`]) → the model level of its kind (`loads`: level 0,
 //! 1 or a steady run-through at 2–3; `time`: histories and duty cycles, level 0 over the
 //! samples, then the wrap at level 2–3, the suspended ropes of level 4) → the answers derived
 //! from the result ([`derive`]: margins, creep-theory fit, every number finite).
@@ -9,6 +9,7 @@ mod derive;
 mod design_checks;
 mod loads;
 mod pipelined;
+mod ropes;
 mod schedule;
 mod share;
 mod shared_run;
@@ -26,11 +27,9 @@ use shared_run::run_shared;
 use time::{run_duty_cycle, run_history};
 use wrap_run::{Kept, WrapShare};
 
-use crate::cost::{self, Estimate};
-use crate::derived::WrapSummary;
 use crate::design::{Design, Scene, SceneKind};
-use crate::fit::{CreepFit, FitError};
 use crate::margins::Margins;
+use crate::margins::fit::{CreepFit, FitError};
 use crate::model::history::{HistoryRow, SolverReport};
 use crate::model::level0::{Classical, EndState};
 use crate::model::level2::{Level2Error, Params, Solver};
@@ -38,9 +37,11 @@ use crate::model::level3::{Level3Error, Level3Stats};
 use crate::model::level4::Level4Error;
 use crate::model::level4::shared::RopePrefix;
 use crate::model::stop::{SlipOnset, StopReport};
-use crate::planner::{self, Level, Plan, PlanError, Request};
-use crate::roots::RootError;
+use crate::numerics::roots::RootError;
+use crate::plan::cost::{self, Estimate};
+use crate::plan::{self, Level, Plan, PlanError, Request};
 use crate::wrap::Distribution;
+use crate::wrap::summary::WrapSummary;
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
@@ -59,7 +60,7 @@ pub struct Options {
     pub nodes: usize,
     /// Solver of the discrete level's increments.
     pub solver: Solver,
-    /// A scene whose estimated run time ([`crate::cost`]) exceeds this many seconds is refused
+    /// A scene whose estimated run time ([`crate::plan::cost`]) exceeds this many seconds is refused
     /// before the run starts.
     pub cost_limit_s: u64,
     /// Whether time scenes keep the θ–t map of friction utilization (one row of the output
@@ -247,6 +248,8 @@ pub struct SceneResult {
     pub hanging_kg: Option<[f64; 2]>,
     /// Rope elements followed through the wrap (time scenes whose sheet asks for them).
     pub tracks: Option<track::TrackOutput>,
+    /// Duty cycles on a sheet with `[ropes]`: each rope's share of the load.
+    pub ropes: Option<Box<crate::ropes::scene::SceneRopes>>,
 }
 
 impl SceneResult {
@@ -279,7 +282,7 @@ pub fn run(design: &Design, scenes: &[&Scene], options: Options) -> Result<RunRe
     run_with_progress(design, scenes, options, &|_| {})
 }
 
-/// The estimated cost of each scene ([`crate::cost`]), refusing one above the limit.
+/// The estimated cost of each scene ([`crate::plan::cost`]), refusing one above the limit.
 pub fn estimate(design: &Design, scenes: &[&Scene], options: Options) -> Result<Vec<Estimate>, RunError> {
     if options.nodes == 0 || options.nodes > MAX_NODES {
         return Err(RunError::Nodes(options.nodes));
@@ -287,7 +290,7 @@ pub fn estimate(design: &Design, scenes: &[&Scene], options: Options) -> Result<
     scenes
         .iter()
         .map(|scene| {
-            let plan = planner::plan_with_lining(scene, options.request, design.lining.is_some())?;
+            let plan = plan::plan_with_lining(scene, options.request, design.lining.is_some())?;
             let e = cost::estimate(design, scene, &plan, options.nodes, options.solver);
             if e.seconds > options.cost_limit_s as f64 || e.memory_bytes > cost::MEMORY_LIMIT_BYTES {
                 return Err(RunError::Costly {
@@ -372,7 +375,7 @@ pub fn run_all_with_progress(
     let mut result = run_with_progress(design, scenes, options, progress)?;
     let rope_dynamics = !matches!(
         options.request,
-        planner::Request::ChecksOnly | planner::Request::Full { forced_level: Some(Level::Closed0) }
+        plan::Request::ChecksOnly | plan::Request::Full { forced_level: Some(Level::Closed0) }
     );
     result.design = Some(design_checks::evaluate(design, &result.scenes, rope_dynamics)?);
     result.runtime_ms = start.elapsed().as_secs_f64() * 1e3;
@@ -400,7 +403,7 @@ fn run_scene(
     context: SceneContext,
 ) -> Result<(SceneResult, Kept), RunError> {
     let start = Instant::now();
-    let plan = planner::plan_with_lining(scene, options.request, design.lining.is_some())?;
+    let plan = plan::plan_with_lining(scene, options.request, design.lining.is_some())?;
     let spare_core = context.parallel_sides;
     let (mut result, ropes, kept) = match &scene.kind {
         SceneKind::Loads(loads) => (run_loads(design, scene, loads, plan, options)?, None, Vec::new()),
@@ -440,6 +443,7 @@ fn empty(scene: &Scene, plan: Plan, classical: Classical) -> SceneResult {
         rope_dynamics_safety_factor: None,
         hanging_kg: None,
         tracks: None,
+        ropes: None,
     }
 }
 

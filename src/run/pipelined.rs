@@ -21,7 +21,7 @@ use crate::model::level0::EndState;
 use crate::model::level2::{Simulation, lattice};
 use crate::model::level4::{self, Level4Error, RopeRun};
 use crate::model::numerics::Numerics;
-use crate::planner::{self, Level, Plan};
+use crate::plan::{self, Level, Plan};
 use std::sync::mpsc;
 
 /// The ropes' run and the wrap's run made beside it.
@@ -62,7 +62,7 @@ impl Unconfirmed {
         let whole = samples.len() == ropes_len && self.fed == samples.len();
         let kept = self.wrap.filter(|_| whole && spacing == self.centrifugal_step_n);
         if kept.is_some() {
-            crate::tally::add_wrap_beside();
+            crate::numerics::work_tally::add_wrap_beside();
         }
         kept
     }
@@ -72,7 +72,7 @@ impl Unconfirmed {
 /// lining), the hoist's motion (not a stop by the `[brake]`), no rope elements to follow, and
 /// a core to spare.
 pub(super) fn applies(design: &Design, scene: &Scene, cycle: &DutyCycleScene, plan: &Plan, spare_core: bool) -> bool {
-    let rigid = design.lining.is_none() && planner::wrap_level(plan, false) == Level::Rigid2;
+    let rigid = design.lining.is_none() && plan::wrap_level(plan, false) == Level::Rigid2;
     spare_core && rigid && cycle.brake_stop_s.is_none() && scene.tracks.is_none()
 }
 

@@ -14,7 +14,7 @@ use super::Options;
 use super::wrap_run::WrapKeep;
 use crate::design::{Design, Scene, SceneKind};
 use crate::model::level4::shared::RopePlan;
-use crate::planner::{self, Level};
+use crate::plan::{self, Level};
 
 /// Scenes that share the start of their trip with the group's leader.
 #[derive(Debug, Clone)]
@@ -89,7 +89,7 @@ pub(super) fn groups(design: &Design, scenes: &[&Scene], options: Options) -> Ve
 /// The ropes of a scene that runs them (a duty cycle above level 0 on a sheet with a hoist).
 fn rope_plan(design: &Design, scene: &Scene, options: Options) -> Option<RopePlan> {
     let SceneKind::DutyCycle(cycle) = &scene.kind else { return None };
-    let plan = planner::plan_with_lining(scene, options.request, design.lining.is_some()).ok()?;
+    let plan = plan::plan_with_lining(scene, options.request, design.lining.is_some()).ok()?;
     (plan.level != Level::Closed0).then_some(())?;
     RopePlan::of(design, design.hoist.as_ref()?, cycle).ok()
 }
@@ -145,8 +145,8 @@ struct Rows {
 /// (those whose wrap can go on from another's).
 fn wrap_rows(design: &Design, scene: &Scene, options: Options) -> Option<Rows> {
     let SceneKind::DutyCycle(cycle) = &scene.kind else { return None };
-    let plan = planner::plan_with_lining(scene, options.request, design.lining.is_some()).ok()?;
-    let rigid = design.lining.is_none() && planner::wrap_level(&plan, false) == Level::Rigid2;
+    let plan = plan::plan_with_lining(scene, options.request, design.lining.is_some()).ok()?;
+    let rigid = design.lining.is_none() && plan::wrap_level(&plan, false) == Level::Rigid2;
     let rows = Rows { step_s: cycle.output_step_s, snapshots_s: cycle.snapshots_s.clone() };
     (rigid && scene.tracks.is_none()).then_some(rows)
 }

@@ -4,8 +4,8 @@
 
 use super::wrap_run::{Kept, WrapCheckpoint, WrapKeep, WrapShare};
 use super::{RunError, SceneResult, schedule, share};
-use crate::cost::Estimate;
 use crate::model::level4::{self, shared::RopePrefix};
+use crate::plan::cost::Estimate;
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicBool, Ordering};
 
@@ -25,20 +25,6 @@ pub(super) fn run_shared(
     failed: &AtomicBool,
     one: &OneScene,
 ) -> Vec<Done> {
-    /// A scene with its ropes' start, the wrap's state it goes on from, and the scenes whose
-    /// wrap goes on from its own (with their ropes' start and priority), with the states to
-    /// keep for them.
-    struct SceneTask {
-        index: usize,
-        prefix: Option<RopePrefix>,
-        from: Option<WrapCheckpoint>,
-        then: Vec<(usize, Option<RopePrefix>, f64)>,
-        keep: Vec<WrapKeep>,
-    }
-    enum Task {
-        Start(usize),
-        Scene(Box<SceneTask>),
-    }
     let grouped: Vec<usize> = groups.iter().flat_map(|g| g.members.iter().map(|m| m.index)).collect();
     let mut initial: Vec<(f64, Task)> = (0..groups.len()).map(|g| (f64::INFINITY, Task::Start(g))).collect();
     initial.extend((0..estimates.len()).filter(|i| !grouped.contains(i)).map(|i| {
@@ -48,40 +34,8 @@ pub(super) fn run_shared(
     let done = Mutex::new(Vec::with_capacity(estimates.len()));
     schedule::run(initial, rayon::current_num_threads(), |task, push| match task {
         Task::Start(g) => {
-            let group = &groups[g];
-            let forks: Vec<usize> = group.members.iter().map(|m| m.fork_step).collect();
-            // A start that cannot be integrated leaves each scene to run (and fail) on its own;
-            // after a failure, when no scene starts, it is not integrated.
-            let prefixes = if failed.load(Ordering::Relaxed) {
-                Vec::new()
-            } else {
-                level4::shared::prefixes(&group.leader, &forks).unwrap_or_default()
-            };
-            let mut prefixes: Vec<Option<RopePrefix>> = prefixes;
-            prefixes.resize(group.members.len(), None);
-            let member = |i: usize| group.members.iter().position(|m| m.index == i);
-            let prefix_of = |i: usize| member(i).and_then(|k| prefixes[k].clone());
-            // A member costs what it does beyond the shared start (its wrap's too, where it goes
-            // on from another's): the cheapest run last.
-            let remaining = |i: usize| {
-                let shared =
-                    member(i).filter(|&k| prefixes[k].is_some()).map_or(0.0, |k| group.members[k].shared_fraction);
-                let wrap = group.wraps.iter().any(|w| w.consumer == i);
-                estimates[i].typical_after_shared(shared, if wrap { shared } else { 0.0 })
-            };
-            for m in &group.members {
-                let i = m.index;
-                if group.wraps.iter().any(|w| w.consumer == i) {
-                    continue;
-                }
-                let consumers = group.wraps.iter().filter(|w| w.provider == i);
-                let then: Vec<_> =
-                    consumers.clone().map(|w| (w.consumer, prefix_of(w.consumer), remaining(w.consumer))).collect();
-                let keep = consumers.map(|w| w.keep.clone()).collect();
-                // A scene whose state others wait for counts their work too: it starts first.
-                let waiting: f64 = then.iter().map(|(_, _, s)| s).sum();
-                let task = SceneTask { index: i, prefix: prefix_of(i), from: None, then, keep };
-                push(remaining(i) + waiting, Task::Scene(Box::new(task)));
+            for (priority, task) in start_tasks(&groups[g], &estimates, failed) {
+                push(priority, task);
             }
         }
         Task::Scene(task) => {
@@ -100,4 +54,60 @@ pub(super) fn run_shared(
         }
     });
     done.into_inner().unwrap_or_else(|poisoned| poisoned.into_inner())
+}
+
+/// A scene with its ropes' start, the wrap's state it goes on from, and the scenes whose wrap
+/// goes on from its own (with their ropes' start and priority), with the states to keep for them.
+struct SceneTask {
+    index: usize,
+    prefix: Option<RopePrefix>,
+    from: Option<WrapCheckpoint>,
+    then: Vec<(usize, Option<RopePrefix>, f64)>,
+    keep: Vec<WrapKeep>,
+}
+
+/// A task of [`run_shared`]: a group's shared start, or one scene.
+enum Task {
+    Start(usize),
+    Scene(Box<SceneTask>),
+}
+
+/// A group's shared start integrated: its members' scenes as tasks with their priorities, each
+/// with its ropes' start (none when the start cannot be integrated, or after a failure).
+fn start_tasks(group: &share::Group, estimates: &[Estimate], failed: &AtomicBool) -> Vec<(f64, Task)> {
+    let mut out = Vec::new();
+    let forks: Vec<usize> = group.members.iter().map(|m| m.fork_step).collect();
+    // A start that cannot be integrated leaves each scene to run (and fail) on its own;
+    // after a failure, when no scene starts, it is not integrated.
+    let prefixes = if failed.load(Ordering::Relaxed) {
+        Vec::new()
+    } else {
+        level4::shared::prefixes(&group.leader, &forks).unwrap_or_default()
+    };
+    let mut prefixes: Vec<Option<RopePrefix>> = prefixes;
+    prefixes.resize(group.members.len(), None);
+    let member = |i: usize| group.members.iter().position(|m| m.index == i);
+    let prefix_of = |i: usize| member(i).and_then(|k| prefixes[k].clone());
+    // A member costs what it does beyond the shared start (its wrap's too, where it goes
+    // on from another's): the cheapest run last.
+    let remaining = |i: usize| {
+        let shared = member(i).filter(|&k| prefixes[k].is_some()).map_or(0.0, |k| group.members[k].shared_fraction);
+        let wrap = group.wraps.iter().any(|w| w.consumer == i);
+        estimates[i].typical_after_shared(shared, if wrap { shared } else { 0.0 })
+    };
+    for m in &group.members {
+        let i = m.index;
+        if group.wraps.iter().any(|w| w.consumer == i) {
+            continue;
+        }
+        let consumers = group.wraps.iter().filter(|w| w.provider == i);
+        let then: Vec<_> =
+            consumers.clone().map(|w| (w.consumer, prefix_of(w.consumer), remaining(w.consumer))).collect();
+        let keep = consumers.map(|w| w.keep.clone()).collect();
+        // A scene whose state others wait for counts their work too: it starts first.
+        let waiting: f64 = then.iter().map(|(_, _, s)| s).sum();
+        let task = SceneTask { index: i, prefix: prefix_of(i), from: None, then, keep };
+        out.push((remaining(i) + waiting, Task::Scene(Box::new(task))));
+    }
+    out
 }

@@ -14,7 +14,7 @@ use crate::model::level0::{self, EndState};
 use crate::model::level2::lattice;
 use crate::model::level4::{self, Level4Error, RopeRun};
 use crate::model::stop;
-use crate::planner::{Level, Plan};
+use crate::plan::{Level, Plan};
 
 /// What a level-0 run of a scene with `track_*` keys leaves out, appended to its level reason.
 pub const SKIPPED_TRACKS: &str = "; skipped: track_* (rope elements followed through the wrap need the wrap \
@@ -133,6 +133,9 @@ pub(super) fn run_duty_cycle(
     result.stop = trip.stop_report(design, &params, cycle);
     if let Some(stop) = &result.stop {
         trip::push_stop_checks(design, &mut result.classical, stop, &trip, &scene.name);
+    }
+    if let Some(set) = &design.ropes {
+        super::ropes::share(design, set, &mut result, (&trip.samples, &trip.kinematics), &params, cycle.output_step_s)?;
     }
     Ok(DutyCycleRun { result, ropes: dynamics.map(|(ropes, _)| ropes), kept })
 }
@@ -263,20 +266,7 @@ fn run_samples(
         share,
         centrifugal_max_n,
     } = input;
-    let states: Vec<(f64, EndState)> = samples
-        .iter()
-        .enumerate()
-        .map(|(i, s)| {
-            let slope = |a: &HistorySample, b: &HistorySample| (b.speed_m_s - a.speed_m_s) / (b.t_s - a.t_s);
-            let accel = match (accel_m_s2, samples.get(i + 1), i.checked_sub(1).and_then(|j| samples.get(j))) {
-                (Some(a), _, _) => a[i],
-                (None, Some(next), _) => slope(s, next),
-                (None, None, Some(prev)) => slope(prev, s),
-                _ => 0.0,
-            };
-            (s.t_s, EndState::of_sample(s, accel, design.rope.mass_per_m_kg))
-        })
-        .collect();
+    let states = end_states(design, samples, accel_m_s2);
     let classical = level0::over_history(design, &states);
     let mut result = empty(scene, plan, classical);
     result.t_s = samples.last().map(|s| s.t_s);
@@ -312,8 +302,38 @@ fn run_samples(
         }
     };
     let ModelRun { run, level3, kept, reused_increments } = done;
-    crate::tally::add_increments(run.stats.increments - reused_increments);
+    crate::numerics::work_tally::add_increments(run.stats.increments - reused_increments);
     result.level3 = level3;
+    take_run(design, &mut result, run, options);
+    if let (Some(tracks), Some(model)) = (&scene.tracks, for_tracks) {
+        let out = super::track::run(design, scene, tracks, samples, model, travel, side1_length_m)?;
+        result.tracks = Some(out);
+    }
+    Ok((result, kept))
+}
+
+/// Each sample's end state with its acceleration: the given one, else the slope of the speed to
+/// the next sample (to the previous at the last).
+fn end_states(design: &Design, samples: &[HistorySample], accel_m_s2: Option<&[f64]>) -> Vec<(f64, EndState)> {
+    let slope = |a: &HistorySample, b: &HistorySample| (b.speed_m_s - a.speed_m_s) / (b.t_s - a.t_s);
+    samples
+        .iter()
+        .enumerate()
+        .map(|(i, s)| {
+            let accel = match (accel_m_s2, samples.get(i + 1), i.checked_sub(1).and_then(|j| samples.get(j))) {
+                (Some(a), _, _) => a[i],
+                (None, Some(next), _) => slope(s, next),
+                (None, None, Some(prev)) => slope(prev, s),
+                _ => 0.0,
+            };
+            (s.t_s, EndState::of_sample(s, accel, design.rope.mass_per_m_kg))
+        })
+        .collect()
+}
+
+/// The wrap model's run into the scene's result: its snapshots and final distribution, gross
+/// slip found on the way (which fails the Euler check), and the history's rows.
+fn take_run(design: &Design, result: &mut SceneResult, run: history::HistoryRun, options: Options) {
     let mut snapshots: Vec<history::Snapshot> = run.snapshots;
     let last = snapshots.pop();
     result.snapshots = snapshots.into_iter().map(|s| s.distribution).collect();
@@ -337,9 +357,4 @@ fn run_samples(
         pulley_radius_m: 0.5 * design.pulley.diameter_m,
     });
     result.nodes = Some(options.nodes);
-    if let (Some(tracks), Some(model)) = (&scene.tracks, for_tracks) {
-        let out = super::track::run(design, scene, tracks, samples, model, travel, side1_length_m)?;
-        result.tracks = Some(out);
-    }
-    Ok((result, kept))
 }

@@ -11,7 +11,7 @@ use crate::model::level1;
 use crate::model::level2::{self, Profile};
 use crate::model::level3;
 use crate::model::numerics::Numerics;
-use crate::planner::{self, Level, Plan, PlanError};
+use crate::plan::{self, Level, Plan, PlanError};
 
 /// Creep speed used to reach the state "after the rope last ran" for a scene at rest (m/s):
 /// slow enough that its m'v² (1e-6 m²/s² times m') is negligible against the tension, as the
@@ -95,7 +95,7 @@ pub(super) fn wrap_model<'a>(
     options: Options,
 ) -> Result<Model<'a>, RunError> {
     let alpha = design.pulley.wrap_angle_rad;
-    match (planner::wrap_level(plan, design.lining.is_some()), design.lining) {
+    match (plan::wrap_level(plan, design.lining.is_some()), design.lining) {
         (Level::Elastic3, Some(lining)) => {
             let params = level3::Params {
                 wrap: params(design, options.solver),

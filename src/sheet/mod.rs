@@ -1,7 +1,7 @@
 //! Design sheets: TOML in, a validated [`Design`] out, or every problem found.
 //!
 //! The document is parsed once with spans; each section (`[pulley]`, `[rope]`,
-//! `[requirements]`, `[hoist]`, `[lining]`, `[brake]`, `[load_cases]`, every `[[scene]]`) is deserialized on its own so that an error in one does
+//! `[requirements]`, `[hoist]`, `[lining]`, `[brake]`, `[load_cases]`, `[ropes]`, every `[[scene]]`) is deserialized on its own so that an error in one does
 //! not hide errors in the others; then every value is checked (finite, in range, consistent).
 //! A sheet with `[lift]` is a lift sheet ([`lift`]), read by [`load_sheet`] / [`parse_sheet`].
 //! Each diagnostic names the file, line:column, scene, key path, the bad value and what is allowed.
@@ -21,6 +21,7 @@ mod outputs;
 mod raw;
 mod reference;
 mod requirements;
+mod ropes;
 mod rules;
 mod scene;
 mod schema;
@@ -55,6 +56,7 @@ const TOP_LEVEL_KEYS: &[&str] = &[
     "load_cases",
     "document",
     "compare",
+    "ropes",
     "lift",
 ];
 
@@ -161,6 +163,10 @@ pub fn parse(file: &str, text: &str) -> Result<Design, SheetError> {
             "compare" => {
                 sections.present.push("compare");
                 sections.compare = section(&mut c, value, "compare");
+            }
+            "ropes" => {
+                sections.present.push("ropes");
+                sections.ropes = section(&mut c, value, "ropes");
             }
             "load_cases" => {
                 sections.present.push("load_cases");

@@ -4,8 +4,8 @@
 
 use super::diag::Collector;
 use super::raw::RawRequirements;
+use crate::design::requirements::Rule;
 use crate::design::{DEFAULT_SAFETY_FACTOR_SOURCE, Hoist, Limit, Requirements, SafetyFactorBasis};
-use crate::requirements::Rule;
 use toml::Spanned;
 
 /// Source of a limit given as a bare number.
@@ -132,9 +132,9 @@ fn decel_windows(c: &mut Collector, r: &RawRequirements, out: &Requirements) -> 
 
 /// What a limit's value may be.
 #[derive(Clone, Copy)]
-struct Allowed {
-    ok: fn(f64) -> bool,
-    what: &'static str,
+pub(super) struct Allowed {
+    pub ok: fn(f64) -> bool,
+    pub what: &'static str,
 }
 
 const POSITIVE: Allowed = Allowed { ok: |x| x > 0.0, what: "a finite number > 0" };
@@ -142,7 +142,16 @@ const DECEL: Allowed = Allowed { ok: |x| x > 0.0 && x <= 30.0, what: "a decelera
 
 /// A number, or a table `{ value = number, source = "text" }`.
 fn parse_limit(c: &mut Collector, key: &str, v: &Spanned<toml::Value>, allowed: Allowed) -> Option<Limit> {
-    let path = format!("requirements.{key}");
+    parse_limit_at(c, &format!("requirements.{key}"), v, allowed)
+}
+
+/// [`parse_limit`] for the key at `path` (its dotted path in the sheet).
+pub(super) fn parse_limit_at(
+    c: &mut Collector,
+    path: &str,
+    v: &Spanned<toml::Value>,
+    allowed: Allowed,
+) -> Option<Limit> {
     let expected =
         format!("expected {} or {{ value = {}, source = \"where the limit comes from\" }}", allowed.what, allowed.what);
     let number = |x: &toml::Value| match x {
@@ -172,7 +181,7 @@ fn parse_limit(c: &mut Collector, key: &str, v: &Spanned<toml::Value>, allowed: 
     match value {
         Some(x) if x.is_finite() && (allowed.ok)(x) => Some(Limit::sheet(x, source)),
         _ => {
-            c.push(Some(v.span()), None, &path, expected);
+            c.push(Some(v.span()), None, path, expected);
             None
         }
     }

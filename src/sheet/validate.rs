@@ -6,8 +6,8 @@ use super::diag::Collector;
 use super::raw::{RawBrake, RawGuide, RawHoist, RawLoadCases, RawPulley, RawRequirements, RawRope};
 use super::rules::{At, MU_MAX, NON_NEGATIVE, POSITIVE, ROPE_COUNT_MAX, WRAP_ANGLE_MAX_DEG, in_range, required};
 use super::scene::{SceneContext, SceneSlot};
+use crate::design::geometry::wrap_angle_from_guide_rad;
 use crate::design::{Design, Pulley, Rope, STANDARD_GRAVITY_M_S2, WrapSource};
-use crate::geometry::wrap_angle_from_guide_rad;
 use std::ops::Range;
 use toml::Spanned;
 
@@ -29,6 +29,7 @@ pub struct Sections {
     pub load_cases: Option<Spanned<RawLoadCases>>,
     pub document: Option<Spanned<super::document::RawDocument>>,
     pub compare: Option<Spanned<Vec<Spanned<super::raw::RawCompare>>>>,
+    pub ropes: Option<Spanned<super::ropes::RawRopes>>,
 }
 
 pub fn design(c: &mut Collector, s: Sections) -> Option<Design> {
@@ -38,27 +39,8 @@ pub fn design(c: &mut Collector, s: Sections) -> Option<Design> {
         Some(g) => in_range(c, top, "g_m_s2", g, |g| g > 0.0 && g <= 30.0, "a gravity 0 < g ≤ 30 m/s²"),
         None => Some(STANDARD_GRAVITY_M_S2),
     };
-    let pulley = match &s.pulley {
-        Some(p) => pulley(c, p),
-        None if s.present.contains(&"pulley") => None,
-        None => {
-            c.push_at(
-                Some(s.doc_span.clone()),
-                None,
-                "pulley",
-                "missing section [pulley] (diameter_m, mu, wrap_angle_deg)",
-            );
-            None
-        }
-    };
-    let rope = match &s.rope {
-        Some(r) => rope(c, r),
-        None if s.present.contains(&"rope") => None,
-        None => {
-            c.push_at(Some(s.doc_span.clone()), None, "rope", "missing section [rope] (count, mass_per_m_kg, ea_n)");
-            None
-        }
-    };
+    let pulley = required_section(c, (&s.pulley, s.present.contains(&"pulley")), &s.doc_span, PULLEY_MISSING, pulley);
+    let rope = required_section(c, (&s.rope, s.present.contains(&"rope")), &s.doc_span, ROPE_MISSING, rope);
     let machine = super::machine::machine(c, &s.pulley, &s.brake, pulley.as_ref().map(|p| p.diameter_m));
     let machine = if s.present.contains(&"brake") && s.brake.is_none() { None } else { machine };
     let load_cases = super::load_cases::load_cases(
@@ -90,6 +72,8 @@ pub fn design(c: &mut Collector, s: Sections) -> Option<Design> {
             None
         }
     };
+    let ropes = super::ropes::ropes(c, &s.ropes, rope.as_ref());
+    let ropes = if s.present.contains(&"ropes") && s.ropes.is_none() { None } else { ropes };
     let lining = super::lining::lining_section(c, &s.lining, &s.present, &s.rope, rope.as_ref());
     let document = super::document::document(c, &s.document);
     let compare = super::compare::compare(c, &s.compare, s.present.contains(&"compare"), scenes.as_deref());
@@ -107,7 +91,31 @@ pub fn design(c: &mut Collector, s: Sections) -> Option<Design> {
         machine: machine?,
         load_cases: load_cases?,
         compare: compare?,
+        ropes: ropes?,
     })
+}
+
+/// The diagnostics of the two sections every hoist sheet needs: (section, message).
+const PULLEY_MISSING: (&str, &str) = ("pulley", "missing section [pulley] (diameter_m, mu, wrap_angle_deg)");
+const ROPE_MISSING: (&str, &str) = ("rope", "missing section [rope] (count, mass_per_m_kg, ea_n)");
+
+/// A section the sheet must have, parsed by `parse`: `None` when it is present but invalid (its
+/// errors already said), or absent (then `missing` is reported at the top of the sheet).
+fn required_section<R, T>(
+    c: &mut Collector,
+    (raw, present): (&Option<R>, bool),
+    doc_span: &std::ops::Range<usize>,
+    (section, missing): (&str, &str),
+    parse: impl FnOnce(&mut Collector, &R) -> Option<T>,
+) -> Option<T> {
+    match raw {
+        Some(r) => parse(c, r),
+        None if present => None,
+        None => {
+            c.push_at(Some(doc_span.clone()), None, section, missing);
+            None
+        }
+    }
 }
 
 fn pulley(c: &mut Collector, p: &Spanned<RawPulley>) -> Option<Pulley> {

@@ -14,10 +14,10 @@ pub use report::SolverReport;
 pub use resume::{Checkpoint, KeepFor, run_from, run_keeping};
 pub use sample::HistorySample;
 
-use crate::contact::NodeState;
-use crate::derived::WrapSummary;
-use crate::roots::{RootError, RootStats};
+use crate::numerics::roots::{RootError, RootStats};
 use crate::wrap::Distribution;
+use crate::wrap::contact::NodeState;
+use crate::wrap::summary::WrapSummary;
 
 /// What the hoist gives every wrap model: the friction coefficient, the wrap and the rope.
 #[derive(Debug, Clone, Copy, PartialEq)]

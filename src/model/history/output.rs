@@ -3,10 +3,10 @@
 
 use super::report::SolverReport;
 use super::sample::HistorySample;
-use crate::derived::WrapSummary;
 use crate::model::level0::{EndState, safety_factor};
-use crate::roots::RootStats;
+use crate::numerics::roots::RootStats;
 use crate::wrap::Distribution;
+use crate::wrap::summary::WrapSummary;
 use serde::Serialize;
 
 /// Angles of the wrap map (columns).

@@ -3,9 +3,9 @@
 
 use super::sample::{interpolate, speed_slope};
 use super::{HistoryRun, HistorySample, Output, Snapshot, WrapModel};
-use crate::derived::WrapSummary;
 use crate::model::level0::{EndState, euler_limit};
-use crate::roots::RootError;
+use crate::numerics::roots::RootError;
+use crate::wrap::summary::WrapSummary;
 use std::sync::OnceLock;
 
 /// Where the rows take the history from.

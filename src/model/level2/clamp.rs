@@ -9,7 +9,7 @@
 
 use super::envelope::{self, Envelopes};
 use super::profile::{self, Profile};
-use crate::roots::RootStats;
+use crate::numerics::roots::RootStats;
 use crate::wrap::Piece;
 
 /// Extent of the stretches an update moved onto an envelope line at each end (rad from that

@@ -18,7 +18,7 @@
 //! never rise (`|o'| ≤ μ`), so each line crosses a piece at most once: the clamp of a piece is
 //! found from the signs at its ends and one bracketed root per line.
 
-use crate::roots::{RootStats, bracketed, newton_bracketed};
+use crate::numerics::roots::{RootStats, bracketed, newton_bracketed};
 use crate::wrap::Piece;
 
 /// One of the four envelope lines.
@@ -62,7 +62,7 @@ impl Envelopes {
 
     /// Whether an admissible field exists: the tension ratio is within the Euler limit.
     pub fn admissible(&self) -> bool {
-        !crate::contact::slips_grossly(self.n1, self.n2, self.mu, self.alpha)
+        !crate::wrap::contact::slips_grossly(self.n1, self.n2, self.mu, self.alpha)
     }
 
     /// `ln n` on a line at θ.

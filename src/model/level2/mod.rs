@@ -20,13 +20,13 @@ pub mod schedule;
 pub mod simulate;
 pub mod stats;
 
-use crate::contact::ContactLaw;
-use crate::derived::{self, WrapSummary};
 use crate::model::history::{
     self, HistoryRun, HistorySample, Local, MAP_COLUMNS, Output, SolverReport, Wrap, WrapModel,
 };
-use crate::roots::{RootError, RootStats};
+use crate::numerics::roots::{RootError, RootStats};
 use crate::wrap::Distribution;
+use crate::wrap::contact::ContactLaw;
+use crate::wrap::summary::{self, WrapSummary};
 pub use profile::Profile;
 pub use simulate::{Params, SimError, Simulation, Solver};
 pub use stats::Level2Stats;
@@ -67,20 +67,20 @@ impl WrapModel for Simulation<'_> {
 
     fn summary(&self, zones: bool) -> Result<WrapSummary, RootError> {
         let (held, carried) = self.profile.screened();
-        derived::summarize_screened(&held, carried, &self.law(), zones)
+        summary::summarize_screened(&held, carried, &self.law(), zones)
     }
 
     fn summary_job(&self) -> Option<history::SummaryJob> {
         let (frozen, law) = (self.profile.frozen(), self.law());
         Some(Box::new(move || {
             let (held, carried) = frozen.screened();
-            derived::summarize_screened(&held, carried, &law, false)
+            summary::summarize_screened(&held, carried, &law, false)
         }))
     }
 
     fn distribution(&self, t_s: f64, summary: &WrapSummary, output_nodes: usize) -> Distribution {
         let field = self.profile.field();
-        derived::distribution(t_s, &field, &self.law(), summary, output_nodes, self.gross_slip, |theta, _| {
+        summary::distribution(t_s, &field, &self.law(), summary, output_nodes, self.gross_slip, |theta, _| {
             self.slip_velocity_m_s(theta)
         })
     }

@@ -9,8 +9,8 @@
 //! are contiguous and cover exactly `θ ∈ [0, α]`; their closed forms are those of
 //! [`crate::wrap::Shape`], so the state has no interpolation error.
 
-use crate::derived::Carried;
-use crate::screen::{Held, Screen, Screens, limit_centrifugal_n};
+use crate::wrap::piece_ranges::{Held, Screen, Screens, limit_centrifugal_n};
+use crate::wrap::summary::Carried;
 use crate::wrap::{Piece, Shape, TensionField};
 use std::cell::OnceCell;
 use std::collections::VecDeque;

@@ -17,7 +17,7 @@
 use super::clamp::{self, Touched};
 use super::envelope::Envelopes;
 use super::profile::Profile;
-use crate::roots::RootStats;
+use crate::numerics::roots::RootStats;
 use clarabel::algebra::CscMatrix;
 use clarabel::solver::{DefaultSettingsBuilder, DefaultSolver, IPSolver, NonnegativeConeT, SolverStatus};
 use serde::Serialize;

@@ -19,9 +19,9 @@
 //! of rises), so the path m'v² takes to its value does not matter.
 
 use super::profile::{MIN_PIECE_RAD, Profile};
-use crate::contact::ContactLaw;
-use crate::roots::{RootStats, bracketed};
+use crate::numerics::roots::{RootStats, bracketed};
 use crate::wrap::Piece;
+use crate::wrap::contact::ContactLaw;
 
 /// Utilization above which stuck rope counts as beyond the limit (round-off of exact pieces
 /// at the limit stays below).

@@ -25,7 +25,7 @@ use super::stats::Level2Stats;
 use crate::model::history::HistorySample;
 use crate::model::history::sample::segment;
 use crate::model::numerics::Numerics;
-use crate::roots::RootStats;
+use crate::numerics::roots::RootStats;
 use crate::wrap::{EntryRamp, Piece};
 use serde::Serialize;
 use std::borrow::Cow;
@@ -342,7 +342,7 @@ impl<'a> Simulation<'a> {
         // instant decides too, so a ratio just beyond the limit at a sample is gross slip there.
         let mid = 0.5 * (a + b);
         let (n1, n2) = (input.t1_n(mid) - self.centrifugal_n, input.t2_n(mid) - self.centrifugal_n);
-        if crate::contact::slips_grossly(n1, n2, p.mu, p.wrap_angle_rad) || !env.admissible() {
+        if crate::wrap::contact::slips_grossly(n1, n2, p.mu, p.wrap_angle_rad) || !env.admissible() {
             clamp::slide(&mut self.profile, &env);
             self.gross_slip = true;
             self.stats.gross_slip_increments += 1;

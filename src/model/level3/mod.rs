@@ -72,7 +72,7 @@ pub use simulate::Simulation;
 pub use state::State;
 pub use stats::Level3Stats;
 
-use crate::roots::RootError;
+use crate::numerics::roots::RootError;
 
 pub use crate::model::numerics::{LOAD_STEP, MAX_ITER, MAX_NORMAL_PASSES, NORMAL_TOLERANCE, Numerics, TRAVEL_STEP_RAD};
 

@@ -2,13 +2,13 @@
 //! rows, snapshots and the utilization map as level 2 reports them), from its segments.
 
 use super::{Level3Error, Level3Stats, Params, Simulation, State};
-use crate::contact::{ARC_THRESHOLD, ContactLaw, SLIP_UTILIZATION};
-use crate::derived::{ArcTally, WrapSummary, ZoneRuns};
 use crate::model::history::sample::interpolate;
 use crate::model::history::{
     self, HistoryRun, HistorySample, Local, MAP_COLUMNS, Output, SolverReport, Wrap, WrapModel,
 };
-use crate::roots::{RootError, RootStats, brent};
+use crate::numerics::roots::{RootError, RootStats, brent};
+use crate::wrap::contact::{ARC_THRESHOLD, ContactLaw, SLIP_UTILIZATION};
+use crate::wrap::summary::{ArcTally, WrapSummary, ZoneRuns};
 use crate::wrap::{Distribution, Sample};
 
 /// The elastic-lining model as the history runner sees it: one distribution row per segment

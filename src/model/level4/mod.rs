@@ -8,17 +8,20 @@
 //! 1e-3, far below what moves their tensions. The wrap therefore does not feed back into the
 //! suspended ropes, and each side's tension is what its rope column pulls with.
 
+mod profile;
 pub mod shared;
+mod slack;
 pub mod stop;
+
+pub use profile::{imposed_stop_profile, lift_travel_m, motion_profile, profile_until, stages, trip_stages};
+pub use slack::{SlackRope, first_slack, slack_advice};
 
 use crate::design::{Design, Direction, DutyCycleScene, EmergencyStop, HistorySample, Hoist};
 use crate::dynamics::{
-    self, AT_REST_M_S, Checkpoint, DynSample, DynamicsError, HoistParams, Kinematics, MotionProfile, Side, SimOptions,
-    Stage,
+    self, AT_REST_M_S, Checkpoint, DynSample, DynamicsError, HoistParams, Kinematics, MotionProfile, SimOptions,
 };
 use crate::model::braking::{self, BrakeError};
-use crate::planner::Level;
-use crate::roots::{self, Holding, RootStats};
+use crate::plan::Level;
 use shared::{RopePlan, RopePrefix};
 use std::cell::RefCell;
 
@@ -101,93 +104,6 @@ pub fn hoist_params(design: &Design, hoist: &Hoist, scene: &DutyCycleScene) -> H
         Direction::Lower => lift_travel_m(hoist),
     };
     stop::params_at(design, hoist, scene.payload_kg, x0_m)
-}
-
-/// Travel of the pulley surface over the `[hoist]` profile as given (a lift), m.
-pub fn lift_travel_m(hoist: &Hoist) -> f64 {
-    MotionProfile::new(&stages(hoist, Direction::Lift)).map_or(0.0, |p| p.at(p.duration_s()).x_m)
-}
-
-/// The stages of a scene's trip: the hoist's stages in its direction, and for a round trip
-/// (`return_after_s`) a rest of that long and the same trip back the other way.
-pub fn trip_stages(hoist: &Hoist, direction: Direction, return_after_s: Option<f64>) -> Vec<Stage> {
-    let mut out = stages(hoist, direction);
-    if let Some(rest_s) = return_after_s {
-        if rest_s > 0.0 {
-            out.push(Stage { duration_s: Some(rest_s), accel_end_m_s2: 0.0, step: true });
-        }
-        let back = match direction {
-            Direction::Lift => Direction::Lower,
-            Direction::Lower => Direction::Lift,
-        };
-        out.extend(stages(hoist, back));
-    }
-    out
-}
-
-/// The hoist's stages for a direction of travel (mirrored when lowering side 1).
-pub fn stages(hoist: &Hoist, direction: Direction) -> Vec<Stage> {
-    let sign = direction.sign();
-    hoist
-        .stages
-        .iter()
-        .map(|s| Stage { duration_s: s.duration_s, accel_end_m_s2: sign * s.accel_m_s2, step: s.step })
-        .collect()
-}
-
-/// The profile of `stages` up to the trip instant `at_s` (`stages_until`). The hoist must be
-/// moving then.
-pub fn profile_until(stages: &[Stage], at_s: f64) -> Result<MotionProfile, Level4Error> {
-    Ok(MotionProfile::new(&stages_until(stages, at_s)?)?)
-}
-
-/// The stages up to `at_s`: the stage it falls in ends there, at the acceleration the profile has
-/// at that instant. An error when `at_s` is not before the end or the hoist is at rest then.
-fn stages_until(stages: &[Stage], at_s: f64) -> Result<Vec<Stage>, Level4Error> {
-    let full = MotionProfile::new(stages)?;
-    if at_s >= full.duration_s() {
-        return Err(Level4Error::EmergencyAfterEnd { at_s, duration_s: full.duration_s() });
-    }
-    let at = full.at(at_s);
-    if at.speed_m_s.abs() <= AT_REST_M_S {
-        return Err(Level4Error::EmergencyAtRest { at_s });
-    }
-    let mut cut = Vec::new();
-    let mut t = 0.0;
-    for s in stages {
-        let d = s.duration_s.unwrap_or(f64::INFINITY);
-        if t + d >= at_s {
-            cut.push(Stage { duration_s: Some(at_s - t), accel_end_m_s2: at.accel_m_s2, step: s.step });
-            break;
-        }
-        cut.push(*s);
-        t += d;
-    }
-    Ok(cut)
-}
-
-/// The scene's motion profile: the hoist's stages (mirrored when lowering side 1), cut at the
-/// emergency stop and followed by constant braking to rest when the scene has an imposed
-/// deceleration; cut at the trip when the `[brake]` stops it (the stop then follows from the
-/// pulley as a body, [`stop`]).
-pub fn motion_profile(hoist: &Hoist, scene: &DutyCycleScene) -> Result<MotionProfile, Level4Error> {
-    let stages = trip_stages(hoist, scene.direction, scene.return_after_s);
-    if let Some(at_s) = scene.brake_stop_s {
-        return profile_until(&stages, at_s);
-    }
-    match scene.emergency {
-        None => Ok(MotionProfile::new(&stages)?),
-        Some(stop) => imposed_stop_profile(&stages, stop.at_s, stop.decel_m_s2),
-    }
-}
-
-/// `stages` up to `at_s`, then a step to the deceleration `decel_m_s2` against the motion, held
-/// until the hoist stops.
-pub fn imposed_stop_profile(stages: &[Stage], at_s: f64, decel_m_s2: f64) -> Result<MotionProfile, Level4Error> {
-    let mut cut = stages_until(stages, at_s)?;
-    let v = MotionProfile::new(stages)?.at(at_s).speed_m_s;
-    cut.push(Stage::step_until_stop(-v.signum() * decel_m_s2));
-    Ok(MotionProfile::new(&cut)?)
 }
 
 /// Runs the suspended ropes through the scene and returns their samples (one every
@@ -459,81 +375,4 @@ impl<'a> StopTrials<'a> {
             None => f64::NAN,
         }
     }
-}
-
-/// A rope leaving the pulley: at a tangent point the tension per rope no longer exceeds m'v²,
-/// so the contact force n = T − m'v² (docs/physics.md §2) is gone.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct SlackRope {
-    /// The side whose rope goes slack.
-    pub side: Side,
-    /// Time of the sample (s).
-    pub t_s: f64,
-    /// Tension per rope at that side's tangent point (N); ≤ 0 when the rope has gone slack.
-    pub tension_n: f64,
-    /// m'v² (N): the tension needed to keep the rope on the pulley.
-    pub centrifugal_n: f64,
-    /// Rope speed then (m/s, > 0 side 1 → side 2).
-    pub speed_m_s: f64,
-}
-
-/// The first sample of a duty cycle's end history whose lower tension per rope does not exceed
-/// m'v² (`T_lo ≤ m'v²`): the wrap models need `n = T − m'v² > 0` at both ends. Between samples
-/// the tensions and the speed are linear, so `m'v² − T` is convex there and the samples suffice.
-pub fn first_slack(samples: &[HistorySample], mass_per_m_kg: f64) -> Option<SlackRope> {
-    samples.iter().find_map(|s| {
-        let centrifugal_n = mass_per_m_kg * s.speed_m_s * s.speed_m_s;
-        let (side, tension_n) = if s.t1_n <= s.t2_n { (Side::One, s.t1_n) } else { (Side::Two, s.t2_n) };
-        (tension_n <= centrifugal_n).then_some(SlackRope {
-            side,
-            t_s: s.t_s,
-            tension_n,
-            centrifugal_n,
-            speed_m_s: s.speed_m_s,
-        })
-    })
-}
-
-/// What to change about a slack rope of `scene` (the [`Level4Error::SlackRope`] advice): during
-/// an emergency stop, the deceleration (with the ropes' dynamics, `level` 4, the largest that
-/// keeps both ropes on the pulley, by Brent's method on `min_t (T_lo − m'v²)` over [d₀/4, d₀]),
-/// else the motion profile's accelerations; or more mass hanging on the slack side.
-pub fn slack_advice(design: &Design, hoist: &Hoist, scene: &DutyCycleScene, slack: &SlackRope, level: Level) -> String {
-    let mass_key = match slack.side {
-        Side::One => "[hoist] conveyance1_kg or the scene's payload_kg",
-        Side::Two => "[hoist] conveyance2_kg",
-    };
-    let Some(stop) = scene.emergency.filter(|s| slack.t_s >= s.at_s) else {
-        return format!(
-            "The motion profile accelerates the hoist faster than {}'s hanging load can follow: lower the \
-             accelerations of the [[hoist.stage]] tables (accel_m_s2), or hang more mass on {} ({mass_key}).",
-            slack.side, slack.side
-        );
-    };
-    let m = design.rope.mass_per_m_kg;
-    let contact = |s: &DynSample| s.t1_n.min(s.t2_n) - m * s.speed_m_s * s.speed_m_s;
-    let largest = (level == Level::Dynamic4)
-        .then(|| StopTrials::new(design, hoist, scene))
-        .flatten()
-        .and_then(|trials| {
-            let before = trials.worst_before(&contact);
-            let (lo, hi) = (0.25 * stop.decel_m_s2, stop.decel_m_s2);
-            match roots::largest_holding(|d| trials.worst(d, &contact, before), lo, hi, &mut RootStats::default()) {
-                Holding::Until(d) => Some(d),
-                _ => None,
-            }
-        })
-        .map_or_else(String::new, |d| {
-            format!(" With the ropes' dynamics both ropes stay on the pulley up to about {d:.3} m/s².")
-        });
-    format!(
-        "The emergency stop (emergency_decel_m_s2 = {} m/s² from emergency_stop_s = {} s) brakes faster than \
-         {}'s hanging load can follow, {:.3} s after the brake sets in.{largest} Lower emergency_decel_m_s2, or \
-         hang more mass on {} ({mass_key}).",
-        stop.decel_m_s2,
-        stop.at_s,
-        slack.side,
-        slack.t_s - stop.at_s,
-        slack.side
-    )
 }

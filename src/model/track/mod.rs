@@ -30,9 +30,9 @@
 
 pub mod turn;
 
-use crate::contact::NodeState;
 use crate::model::history::{HistorySample, WrapModel};
-use crate::roots::{self, RootStats};
+use crate::numerics::roots::{self, RootStats};
+use crate::wrap::contact::NodeState;
 use turn::PulleyTurn;
 
 /// Friction below this fraction of its Coulomb bound counts as none (the arcs' threshold).

@@ -116,7 +116,11 @@ pub fn verdicts(out: &mut String, ctx: &Context) -> io::Result<()> {
             format!("{:.2}", c.state.t2_n / 1e3),
             format!("{:.4}", c.tension_ratio),
             format!("{:.4}", c.euler_limit),
-            opt(c.static_safety_factor, 3),
+            match (&c.static_state, c.static_safety_factor) {
+                (None, _) => "—".into(),
+                (Some(_), None) => "∞".into(),
+                (Some(_), Some(v)) => format!("{v:.3}"),
+            },
             opt(c.dynamic_safety_factor, 3),
             verdict_html(if s.checks_pass() { Verdict::Pass } else { Verdict::Fail }),
         ]

@@ -13,6 +13,7 @@
 mod by_hand;
 mod checks;
 mod figures;
+mod front;
 mod inputs;
 mod keys;
 mod sections;
@@ -125,6 +126,7 @@ pub fn render(ctx: &Context) -> std::io::Result<String> {
         esc(&d.sheet),
         if ctx.run.all_checks_pass() { "pass" } else { "fail" },
     );
+    front::verdict(&mut out, ctx);
     out.push_str("<nav><h2>Contents</h2><ol>");
     for (anchor, name, _) in SECTIONS {
         let _ = write!(out, "<li><a href=\"#{anchor}\">{}</a></li>", esc(name));

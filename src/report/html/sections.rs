@@ -4,8 +4,8 @@
 use super::{Context, esc, table};
 use crate::codes::CodeBasis;
 use crate::design::Limit;
-use crate::planner::Level;
-use crate::requirements::{Rule, SafetyFactorBasis};
+use crate::design::requirements::{Rule, SafetyFactorBasis};
+use crate::plan::Level;
 use std::collections::BTreeSet;
 use std::fmt::Write;
 use std::io;

@@ -40,6 +40,8 @@ th { background: #eee; }
 td.num { text-align: right; font-variant-numeric: tabular-nums; white-space: nowrap; }
 table.small { font-size: 8pt; }
 .overall { font-weight: bold; font-size: 12pt; }
+.front table.front td:first-child { width: 24%; } .front table.front td:last-child { width: 50%; }
+ul.unjudged { font-size: 8pt; margin: 0; padding-left: 1.2em; } .governing { font-size: 9pt; }
 .pass { color: #146c2e; } .fail { color: #b00020; } .warning { color: #8a5a00; }
 .verdict { font-weight: bold; white-space: nowrap; }
 .check { border: 1px solid #ccc; padding: 0.3em 0.7em; margin: 0.6em 0; break-inside: avoid; }

@@ -4,6 +4,7 @@
 //! and tests hold it equal to what the parser accepts.
 
 mod lift;
+mod ropes;
 mod scene;
 mod sections;
 
@@ -326,6 +327,7 @@ pub struct SceneKind {
 /// Every table of the sheet, the top level first, in the order of the reference.
 pub fn tables() -> Vec<Table> {
     let mut out = sections::tables();
+    out.extend(ropes::tables());
     out.push(scene::table());
     out.extend(lift::tables());
     out

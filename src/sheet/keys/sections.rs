@@ -58,6 +58,7 @@ fn top() -> Table {
             section("load_cases", Sub, "the load-case matrix built from the [hoist]"),
             section("scene", Tables, "the scenes: states and histories to analyse (at least one)").when(hoist),
             section("compare", Tables, "figures overlaying one quantity of several time scenes"),
+            section("ropes", Sub, "the hoisting ropes one by one: multi-rope load sharing"),
             section("lift", Sub, "a traction lift: makes the sheet a lift sheet (EN 81-50)"),
         ],
     );

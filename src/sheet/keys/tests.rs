@@ -61,7 +61,7 @@ fn registry(path: &str) -> BTreeSet<&'static str> {
 
 #[test]
 fn every_table_has_the_parsers_keys_and_no_other() {
-    let parser: [(&str, BTreeSet<&str>); 15] = [
+    let parser: [(&str, BTreeSet<&str>); 18] = [
         ("", crate::sheet::TOP_LEVEL_KEYS.iter().copied().collect()),
         ("pulley", fields::<RawPulley>()),
         ("pulley.guide", fields::<RawGuide>()),
@@ -75,6 +75,9 @@ fn every_table_has_the_parsers_keys_and_no_other() {
         ("load_cases", fields::<RawLoadCases>()),
         ("compare", fields::<RawCompare>()),
         ("scene", fields::<RawScene>()),
+        ("ropes", fields::<crate::sheet::ropes::RawRopes>()),
+        ("ropes.conveyance1", fields::<crate::sheet::ropes::RawAttachment>()),
+        ("ropes.conveyance2", fields::<crate::sheet::ropes::RawAttachment>()),
         ("lift", fields::<crate::sheet::lift::RawLift>()),
         ("lift.pulley", fields::<crate::sheet::lift::RawLiftPulley>()),
     ];
@@ -195,6 +198,7 @@ fn the_registrys_ranges_are_the_parsers() {
         ("hoist.stage", "[[hoist.stage]]"),
         ("requirements", ""),
         ("load_cases", ""),
+        ("ropes", ""),
     ];
     let all = tables();
     let mut probed = 0;

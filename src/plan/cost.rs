@@ -20,7 +20,7 @@ use crate::dynamics::{self, Side};
 use crate::model::level2::Solver;
 use crate::model::level4;
 use crate::model::numerics::Numerics;
-use crate::planner::{self, Level, Plan};
+use crate::plan::{self, Level, Plan};
 use serde::Serialize;
 
 /// Largest estimated run time of one scene accepted by default (s): ten minutes. Every sheet in
@@ -157,7 +157,7 @@ fn part(what: &'static str, work: f64, unit: &'static str, formula: String, ns_p
 
 /// The cost of running `scene` as `plan` says, with `nodes` wrap nodes and `solver`.
 pub fn estimate(design: &Design, scene: &Scene, plan: &Plan, nodes: usize, solver: Solver) -> Estimate {
-    let wrap = planner::wrap_level(plan, design.lining.is_some());
+    let wrap = plan::wrap_level(plan, design.lining.is_some());
     let n = nodes as f64;
     match &scene.kind {
         SceneKind::Loads(_) => match plan.level {

@@ -21,8 +21,8 @@
 //! a summary decides on them only well clear of a threshold and otherwise evaluates the piece
 //! as it would without them.
 
-use crate::contact::{ARC_THRESHOLD, SLIP_UTILIZATION};
-use crate::piece::{Piece, Shape};
+use crate::wrap::contact::{ARC_THRESHOLD, SLIP_UTILIZATION};
+use crate::wrap::piece::{Piece, Shape};
 
 /// Relative rounding margin of the ranges.
 const MARGIN: f64 = 1e-9;
@@ -249,8 +249,8 @@ fn range_with_ends(piece: &Piece, ends: &[(f64, f64); 2], mu_eff: f64) -> (f64, 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::contact::ContactLaw;
-    use crate::piece::EntryRamp;
+    use crate::wrap::contact::ContactLaw;
+    use crate::wrap::piece::EntryRamp;
 
     /// Samples the utilization of a piece densely and checks that the screen's verdicts agree
     /// with every sample: a piece screened below (above) a threshold has every sample below

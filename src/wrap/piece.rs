@@ -6,7 +6,7 @@
 //! entry ramp:   T(θ) = T_e + Ṫ_e · τ(θ),   Φ(τ(θ)) = θ_a − θ,   Φ(τ) = ω τ + ½ ε τ²
 //! ```
 //!
-//! Friction follows from rope equilibrium, `q = −dT/dθ`; the contact law ([`crate::contact`])
+//! Friction follows from rope equilibrium, `q = −dT/dθ`; the contact law ([`crate::wrap::contact`])
 //! turns a piece into contact force and utilization. The shapes know nothing of the law, the
 //! grid or the field, so the contact law and the field both build on them.
 

@@ -14,14 +14,19 @@
 //! ramp*: the rope that entered τ seconds after the ramp's start holds the end tension of that
 //! instant, and sits where the pulley has carried it since, Φ(τ) radians back from θ_a).
 //! Friction follows from rope equilibrium, `q = −dT/dθ`, and the contact force per radian from
-//! the centrifugal correction, `n = T − m'v²` (see [`crate::contact`]).
+//! the centrifugal correction, `n = T − m'v²` (see [`crate::wrap::contact`]).
 //!
 //! Derived quantities (arcs, JDP, utilization) are computed on the pieces themselves, not on the
 //! sampled grid, so they are exact whatever the node count; the grid only serves the reports.
 
-pub use crate::piece::{EntryRamp, Piece, Shape};
+pub mod contact;
+pub mod piece;
+pub mod piece_ranges;
+pub mod summary;
 
-use crate::contact::{ContactLaw, NodeState};
+pub use crate::wrap::piece::{EntryRamp, Piece, Shape};
+
+use crate::wrap::contact::{ContactLaw, NodeState};
 
 /// The tension over the whole wrap [0, α], as contiguous pieces in increasing θ.
 #[derive(Debug, Clone, PartialEq)]

@@ -5,7 +5,7 @@
 //! Coulomb's law: `|q| ≤ μ n`; utilization `u = |q| / (μ n) ∈ [0, 1]`.
 //! A node slips (`slip+` / `slip-` by the sign of q) when `u ≥ 0.999`, else it sticks.
 
-use crate::piece::Piece;
+use crate::wrap::piece::Piece;
 use std::fmt;
 
 /// Utilization at or above which a node is reported as slipping (docs/physics.md §2).

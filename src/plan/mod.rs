@@ -17,6 +17,8 @@
 //! their reason says ([`wrap_level`]). `--level 3` forces it (also on a `loads` scene, run as
 //! a steady run-through) and is an error without a `[lining]`.
 
+pub mod cost;
+
 use crate::design::{Output, Scene, SceneKind};
 use serde::{Serialize, Serializer};
 use std::fmt;

@@ -19,7 +19,7 @@ use serde::{Serialize, Serializer};
 use std::fmt;
 
 use crate::design::{Direction, Side};
-use crate::roots::ArgminTermination;
+use crate::numerics::roots::ArgminTermination;
 use crate::wrap::Distribution;
 
 /// Iteration cap of the minimizer (it needs a few dozen at most on a 2° bracket).

@@ -5,14 +5,14 @@
 //! `u(θ) = |k| / μ · 1 / (1 + d e^{−kθ'} / A)` with `d = T_base − m'v²` is monotone in θ; on an
 //! entry ramp `u = |Ṫ| / (μ Φ'(τ) n(τ))` with a quadratic denominator in τ, which is cut at its
 //! extremum. So a threshold (slip at u = 0.999, friction counted from u = 0.001) is crossed at
-//! most once per part; the crossing is found by Brent root finding ([`crate::roots`]). A state
+//! most once per part; the crossing is found by Brent root finding ([`crate::numerics::roots`]). A state
 //! that keeps a [`Screen`] beside each piece is summarized by [`summarize_screened`], which
 //! evaluates only the pieces their screens do not decide (docs/physics.md §8, points of the
 //! distribution).
 
-use crate::contact::{ARC_THRESHOLD, ContactLaw, NodeState, SLIP_UTILIZATION};
-use crate::roots::{RootError, RootStats, bracketed};
-use crate::screen::{Held, Screen, Screens, Side};
+use crate::numerics::roots::{RootError, RootStats, bracketed};
+use crate::wrap::contact::{ARC_THRESHOLD, ContactLaw, NodeState, SLIP_UTILIZATION};
+use crate::wrap::piece_ranges::{Held, Screen, Screens, Side};
 use crate::wrap::{Distribution, Piece, Sample, TensionField, Zone, output_grid_rad};
 
 /// Sign class of friction on a stretch of wrap.
