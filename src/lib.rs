@@ -7,7 +7,8 @@
 //! [`report`] (summary.json/csv, distribution.csv, PNG plots, terminal table). Every design check
 //! is a [`check::Check`] record (formula, inputs, values, limit and its source from
 //! [`requirements`], verdict); [`load_cases`] builds and answers the load-case matrix of a
-//! sheet's `[load_cases]`.
+//! sheet's `[load_cases]`. A lift sheet (`[lift]`) goes to [`lift`]: EN 81-50's traction cases
+//! and rope safety factor, each case's wrap at level 1.
 //!
 //! Conventions (fixed): θ runs from the side-1 tangent point (0) to the side-2 tangent point
 //! (α); v > 0 means the rope travels side 1 → side 2; friction q on the rope is positive in +θ
@@ -20,6 +21,7 @@ pub mod check;
 pub mod codes;
 pub mod design;
 pub mod dynamics;
+pub mod lift;
 pub mod load_cases;
 pub mod margins;
 pub mod model;

@@ -289,7 +289,12 @@ fn execute(cli: Cli) -> anyhow::Result<bool> {
         Command::Run(args) => run_command(args),
         Command::Bench(args) => bench_command(args).map(|()| true),
         Command::Check(args) => {
-            let design = sheet::load(&args.sheet)?;
+            let design = match sheet::load_sheet(&args.sheet)? {
+                sheet::Sheet::Hoist(design) => design,
+                sheet::Sheet::Lift(lift) => {
+                    return Ok(wrapcalc::lift::command::execute(&lift, None, lift_print(args.format, false))?);
+                }
+            };
             let scenes: Vec<&Scene> = design.scenes.iter().collect();
             let options = Options { request: Request::ChecksOnly, ..Options::default() };
             let result =
@@ -359,6 +364,9 @@ fn bench_command(args: BenchArgs) -> anyhow::Result<()> {
 
 /// A sweep exits 0 once it ran, whatever the checks at its points say (they are in sweep.csv).
 fn sweep_command(args: SweepArgs) -> anyhow::Result<()> {
+    if let sheet::Sheet::Lift(_) = sheet::load_sheet(&args.sheet)? {
+        anyhow::bail!("{}: {}", args.sheet.display(), wrapcalc::lift::command::SWEEP_REFUSED);
+    }
     let shard = args.shard.as_deref().map(sweep::grid::Shard::parse).transpose()?;
     let forced_level = args.model.level.forced();
     let spec = sweep::Spec {
@@ -450,8 +458,30 @@ fn run_bar(estimated_s: f64, quiet: bool) -> indicatif::ProgressBar {
     bar
 }
 
+/// What a lift sheet's `run` or `check` prints.
+fn lift_print(format: Format, quiet: bool) -> wrapcalc::lift::command::Print {
+    use wrapcalc::lift::command::Print;
+    match format {
+        Format::Json => Print::Json,
+        Format::Table if quiet => Print::Nothing,
+        Format::Table => Print::Table,
+    }
+}
+
 fn run_command(args: RunArgs) -> anyhow::Result<bool> {
-    let design = sheet::load(&args.sheet)?;
+    let design = match sheet::load_sheet(&args.sheet)? {
+        sheet::Sheet::Hoist(design) => *design,
+        sheet::Sheet::Lift(lift) => {
+            if !args.scenes.is_empty() {
+                anyhow::bail!("{}: --scene is not available for lift sheets: every traction case runs", lift.sheet);
+            }
+            let out_dir = args.out.clone().unwrap_or_else(|| default_out_dir(&args.sheet));
+            refuse_foreign(&out_dir)?;
+            let options = wrapcalc::lift::output::WriteOptions { plots: !args.no_plots, document: !args.no_report };
+            let print = lift_print(args.format, args.quiet);
+            return Ok(wrapcalc::lift::command::execute(&lift, Some((&out_dir, options)), print)?);
+        }
+    };
     let scenes = design.select_scenes(&args.scenes).map_err(|e| anyhow::anyhow!("{}: {e}", design.sheet))?;
     let forced_level = args.model.level.forced();
     let options = Options {

@@ -56,8 +56,22 @@ fn every_sheet(dir: &Path) -> Vec<PathBuf> {
     out
 }
 
-/// The names of the sheet's `[[scene]]` tables, in order, read from its TOML.
+/// EN 81-50's traction cases, which every lift sheet (`[lift]`) reports as its scenes, in order
+/// (docs/lifts.md: car loading, emergency braking in its two positions, car stalled).
+const LIFT_CASES: [&str; 4] = ["car-loading", "braking-loaded-bottom", "braking-empty-top", "car-stalled"];
+
+/// Whether the sheet is a lift sheet (it has `[lift]`), read from its TOML.
+fn is_lift(sheet: &Path) -> bool {
+    let text = std::fs::read_to_string(sheet).expect("the sheet is readable");
+    text.parse::<toml::Table>().expect("the sheet is TOML").contains_key("lift")
+}
+
+/// The names of the sheet's `[[scene]]` tables, in order, read from its TOML (a lift sheet's
+/// traction cases).
 fn scene_names(sheet: &Path) -> Vec<String> {
+    if is_lift(sheet) {
+        return LIFT_CASES.iter().map(|s| s.to_string()).collect();
+    }
     let text = std::fs::read_to_string(sheet).expect("the sheet is readable");
     let doc: toml::Table = text.parse().expect("the sheet is TOML");
     let scenes = doc.get("scene").and_then(toml::Value::as_array).expect("the sheet has [[scene]] tables");
@@ -68,8 +82,9 @@ fn scene_names(sheet: &Path) -> Vec<String> {
 fn has_tracks(sheet: &Path, name: &str) -> bool {
     let text = std::fs::read_to_string(sheet).expect("the sheet is readable");
     let doc: toml::Table = text.parse().expect("the sheet is TOML");
-    doc["scene"]
-        .as_array()
+    // A lift sheet has no [[scene]] tables, hence no followed elements.
+    doc.get("scene")
+        .and_then(toml::Value::as_array)
         .into_iter()
         .flatten()
         .filter_map(toml::Value::as_table)
@@ -155,6 +170,10 @@ fn run_writes_a_report_for_every_sheet() {
 fn a_one_point_sweep_runs_on_every_sheet() {
     let dir = tempfile::tempdir().expect("temp dir");
     for (i, sheet) in every_sheet(dir.path()).into_iter().enumerate() {
+        if is_lift(&sheet) {
+            lift_sweep_is_refused(&sheet, &dir.path().join(format!("sweep-{i}")));
+            continue;
+        }
         // The last scene of each sheet, at the sheet's own μ: one point, START only.
         let scene = scene_names(&sheet).pop().expect("a scene");
         let text = std::fs::read_to_string(&sheet).expect("the sheet is readable");
@@ -187,4 +206,22 @@ fn a_one_point_sweep_runs_on_every_sheet() {
             assert_eq!(&row[scene_col], scene, "{}: only the selected scene", sheet.display());
         }
     }
+}
+
+/// A lift sheet has no sweep: exit 1 with a message that says so and what to run instead, and
+/// nothing written.
+fn lift_sweep_is_refused(sheet: &Path, out_dir: &Path) {
+    let out = run_wrapcalc([
+        "sweep".as_ref(),
+        sheet.as_os_str(),
+        "--vary".as_ref(),
+        "lift.travel_m=10:20:2".as_ref(),
+        "--out".as_ref(),
+        out_dir.as_os_str(),
+        "--quiet".as_ref(),
+    ]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "sweep {}: {err}", sheet.display());
+    assert!(err.contains("not available for lift sheets") && err.contains("wrapcalc run"), "{err}");
+    assert!(!out_dir.exists(), "{}: nothing written", out_dir.display());
 }

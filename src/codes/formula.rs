@@ -34,6 +34,16 @@ pub const VARIABLES: &[Variable] = &[
         unit: "text",
         meaning: "the hoist's layout: \"tower-with-guide-sheave\", \"tower\" or \"ground-mounted\" (`requirements.layout`)",
     },
+    Variable {
+        name: "v_rope",
+        unit: "m/s",
+        meaning: "a lift's rope speed at the traction sheave at rated speed, roping × `lift.rated_speed_m_s` (lift sheets)",
+    },
+    Variable {
+        name: "n_ropes",
+        unit: "",
+        meaning: "a lift's number of suspension ropes, `lift.rope_count` (lift sheets)",
+    },
 ];
 
 /// The values of the variables for one design; `None` where the sheet does not give one.
@@ -45,6 +55,10 @@ pub struct Quantities {
     pub carries: Option<String>,
     /// The layout, as its sheet word.
     pub layout: Option<String>,
+    /// A lift's rope speed at the sheave (m/s).
+    pub rope_speed_m_s: Option<f64>,
+    /// A lift's number of suspension ropes.
+    pub rope_count: Option<f64>,
 }
 
 impl Quantities {
@@ -54,6 +68,8 @@ impl Quantities {
             "H" => self.hanging_length_m.map(Value::Float),
             "carries" => self.carries.clone().map(Value::String),
             "layout" => self.layout.clone().map(Value::String),
+            "v_rope" => self.rope_speed_m_s.map(Value::Float),
+            "n_ropes" => self.rope_count.map(Value::Float),
             _ => None,
         }
     }

@@ -21,6 +21,7 @@ const BUNDLED: &[(&str, &str)] = &[
     ("au-winding", include_str!("../../codes/au-winding.toml")),
     ("us-ca-t8", include_str!("../../codes/us-ca-t8.toml")),
     ("us-va-coal", include_str!("../../codes/us-va-coal.toml")),
+    ("en81-50", include_str!("../../codes/en81-50.toml")),
 ];
 
 /// The `[requirements]` keys a rule set may give a limit for.
@@ -39,6 +40,17 @@ pub const LIMIT_KEYS: &[&str] = &[
     "emergency_decel_lift_max_m_s2",
     "emergency_decel_lower_min_m_s2",
     "emergency_decel_lower_max_m_s2",
+];
+
+/// The keys a rule set may give for a lift sheet (`[lift]`): the traction cases' load factor and
+/// friction coefficients, the ropes' minimum safety factor and D/d.
+pub const LIFT_LIMIT_KEYS: &[&str] = &[
+    "lift_loading_factor",
+    "lift_traction_mu_loading",
+    "lift_traction_mu_braking",
+    "lift_traction_mu_stalled",
+    "lift_rope_safety_factor_min",
+    "lift_d_ratio_min",
 ];
 
 /// One limit of a rule set as written in its file.
@@ -110,8 +122,12 @@ impl RuleSet {
         let mut limits = Vec::new();
         for l in raw.limit {
             let at = format!("limit `{}`", l.key);
-            if !LIMIT_KEYS.contains(&l.key.as_str()) {
-                return Err(format!("{at}: not a [requirements] limit; known: {}", LIMIT_KEYS.join(", ")));
+            if !LIMIT_KEYS.contains(&l.key.as_str()) && !LIFT_LIMIT_KEYS.contains(&l.key.as_str()) {
+                return Err(format!(
+                    "{at}: not a [requirements] limit nor a lift limit; known: {}, {}",
+                    LIMIT_KEYS.join(", "),
+                    LIFT_LIMIT_KEYS.join(", ")
+                ));
             }
             let text = match (&l.value, &l.formula) {
                 (Some(v), None) if v.is_finite() => v.to_string(),

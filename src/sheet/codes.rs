@@ -85,7 +85,7 @@ fn quantities(c: &mut Collector, r: &RawRequirements, hoist: Option<&Hoist>) -> 
         }
         None => hoist.map(|h| h.side1_length_m.max(h.side2_length_m)),
     };
-    ok.then_some(Quantities { hanging_length_m: hanging, carries, layout })
+    ok.then_some(Quantities { hanging_length_m: hanging, carries, layout, ..Quantities::default() })
 }
 
 /// The limit the sheet gives itself for `key` (the anti-slip minimums only when not defaulted).

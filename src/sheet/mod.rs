@@ -3,6 +3,7 @@
 //! The document is parsed once with spans; each section (`[pulley]`, `[rope]`,
 //! `[requirements]`, `[hoist]`, `[lining]`, `[brake]`, `[load_cases]`, `[ropes]`, every `[[scene]]`) is deserialized on its own so that an error in one does
 //! not hide errors in the others; then every value is checked (finite, in range, consistent).
+//! A sheet with `[lift]` is a lift sheet ([`lift`]), read by [`load_sheet`] / [`parse_sheet`].
 //! Each diagnostic names the file, line:column, scene, key path, the bad value and what is allowed.
 
 pub(crate) mod codes;
@@ -12,6 +13,7 @@ mod document;
 mod history;
 mod hoist;
 pub mod keys;
+pub(crate) mod lift;
 mod lining;
 mod load_cases;
 mod machine;
@@ -55,10 +57,45 @@ const TOP_LEVEL_KEYS: &[&str] = &[
     "document",
     "compare",
     "ropes",
+    "lift",
 ];
 
-/// Reads and validates a sheet file.
+/// A validated sheet of either kind.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Sheet {
+    /// A friction hoist (`[pulley]`, `[rope]`, `[[scene]]`, …).
+    Hoist(Box<Design>),
+    /// A traction lift (`[lift]`).
+    Lift(Box<crate::lift::Lift>),
+}
+
+/// Reads and validates a sheet file of either kind: a sheet with `[lift]` is a lift sheet.
+pub fn load_sheet(path: &Path) -> Result<Sheet, SheetError> {
+    let (file, text) = read(path)?;
+    parse_sheet(&file, &text)
+}
+
+/// Parses and validates sheet text of either kind; `file` is used in messages only.
+pub fn parse_sheet(file: &str, text: &str) -> Result<Sheet, SheetError> {
+    let root = match DeTable::parse(text) {
+        Ok(root) if lift::is_lift(root.get_ref()) => root,
+        _ => return parse(file, text).map(|d| Sheet::Hoist(Box::new(d))),
+    };
+    let mut c = Collector::new(file, text);
+    match lift::lift_sheet(&mut c, root) {
+        Some(l) if c.diagnostics.is_empty() => Ok(Sheet::Lift(Box::new(l))),
+        _ => Err(c.into_error()),
+    }
+}
+
+/// Reads and validates a hoist sheet file.
 pub fn load(path: &Path) -> Result<Design, SheetError> {
+    let (file, text) = read(path)?;
+    parse(&file, &text)
+}
+
+/// The sheet file's name (for messages) and text.
+fn read(path: &Path) -> Result<(String, String), SheetError> {
     let file = path.display().to_string();
     let text = match std::fs::read(path) {
         Ok(bytes) => match String::from_utf8(bytes) {
@@ -70,7 +107,7 @@ pub fn load(path: &Path) -> Result<Design, SheetError> {
         }
         Err(e) => return Err(file_error(&file, &format!("cannot read the design sheet: {e}"))),
     };
-    parse(&file, &text)
+    Ok((file, text))
 }
 
 fn file_error(file: &str, message: &str) -> SheetError {
@@ -135,6 +172,12 @@ pub fn parse(file: &str, text: &str) -> Result<Design, SheetError> {
                 sections.present.push("load_cases");
                 sections.load_cases = section(&mut c, value, "load_cases");
             }
+            "lift" => c.push(
+                Some(key_span),
+                None,
+                "lift",
+                "a lift sheet ([lift]) is not a hoist design; read it as a sheet of either kind (sheet::parse_sheet)",
+            ),
             other => c.push(
                 Some(key_span),
                 None,

@@ -3,6 +3,7 @@
 //! (`docs/sheet.md`) and the JSON Schema (`wrapcalc schema`) are generated from this registry,
 //! and tests hold it equal to what the parser accepts.
 
+mod lift;
 mod ropes;
 mod scene;
 mod sections;
@@ -328,6 +329,7 @@ pub fn tables() -> Vec<Table> {
     let mut out = sections::tables();
     out.extend(ropes::tables());
     out.push(scene::table());
+    out.extend(lift::tables());
     out
 }
 

@@ -36,29 +36,34 @@ pub fn tables() -> Vec<Table> {
 
 fn top() -> Table {
     let section = |name, ty, meaning| Key::new(name, ty, "", meaning);
-    table(
+    let hoist = "required in a hoist sheet (one without [lift])";
+    let mut t = table(
         "",
         false,
-        "The sheet's own keys and its sections. A sheet needs [pulley], [rope] and at least one [[scene]].",
+        "The sheet's own keys and its sections. A hoist sheet needs [pulley], [rope] and at least one [[scene]]; \
+         a lift sheet has [lift] and, beside it, only title and g_m_s2.",
         vec![
             Key::new("title", Text, "", "the design's title, echoed in the outputs"),
             Key::new("g_m_s2", Number, "m/s²", "gravity g")
                 .default(D::Number(STANDARD_GRAVITY_M_S2))
                 .positive()
                 .max(30.0, true),
-            section("pulley", Sub, "the friction pulley and its wrap").required(),
-            section("rope", Sub, "the hoisting ropes").required(),
+            section("pulley", Sub, "the friction pulley and its wrap").when(hoist),
+            section("rope", Sub, "the hoisting ropes").when(hoist),
             section("requirements", Sub, "the limits of the checks, each with its source"),
             section("document", Sub, "the calculation report's title block"),
             section("brake", Sub, "the safety brake that stops the pulley in an emergency"),
             section("lining", Sub, "the elastic lining of level 3 (switches level 3 on)"),
             section("hoist", Sub, "the hoist that duty-cycle scenes and the load-case matrix run"),
             section("load_cases", Sub, "the load-case matrix built from the [hoist]"),
-            section("scene", Tables, "the scenes: states and histories to analyse (at least one)").required(),
+            section("scene", Tables, "the scenes: states and histories to analyse (at least one)").when(hoist),
             section("compare", Tables, "figures overlaying one quantity of several time scenes"),
             section("ropes", Sub, "the hoisting ropes one by one: multi-rope load sharing"),
+            section("lift", Sub, "a traction lift: makes the sheet a lift sheet (EN 81-50)"),
         ],
-    )
+    );
+    t.one_of = vec![vec!["pulley", "rope", "scene"], vec!["lift"]];
+    t
 }
 
 fn pulley() -> Table {

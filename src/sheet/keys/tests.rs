@@ -61,7 +61,7 @@ fn registry(path: &str) -> BTreeSet<&'static str> {
 
 #[test]
 fn every_table_has_the_parsers_keys_and_no_other() {
-    let parser: [(&str, BTreeSet<&str>); 16] = [
+    let parser: [(&str, BTreeSet<&str>); 18] = [
         ("", crate::sheet::TOP_LEVEL_KEYS.iter().copied().collect()),
         ("pulley", fields::<RawPulley>()),
         ("pulley.guide", fields::<RawGuide>()),
@@ -78,6 +78,8 @@ fn every_table_has_the_parsers_keys_and_no_other() {
         ("ropes", fields::<crate::sheet::ropes::RawRopes>()),
         ("ropes.conveyance1", fields::<crate::sheet::ropes::RawAttachment>()),
         ("ropes.conveyance2", fields::<crate::sheet::ropes::RawAttachment>()),
+        ("lift", fields::<crate::sheet::lift::RawLift>()),
+        ("lift.pulley", fields::<crate::sheet::lift::RawLiftPulley>()),
     ];
     for (path, keys) in &parser {
         assert!(!keys.is_empty(), "no fields recorded for {path:?}");

@@ -1,0 +1,153 @@
+//! Traction lifts (electric lifts with a traction sheave), judged by EN 81-50's traction cases
+//! and rope safety factor.
+//!
+//! The problem: a lift's car and counterweight hang from ropes wrapped over a grooved traction
+//! sheave; the ropes must hold by friction while the car is loaded (125 % of the rated load at
+//! the lowest landing) and during an emergency stop, and must slip when the counterweight rests
+//! on its buffer and the machine keeps turning up (the car must not be hauled into the
+//! overhead). EN 81-50 decides each case by the capstan law with a *groove factor* f in place of
+//! μ (`T1/T2 ≤ e^{fα}`, or `≥` for the stalled car), and the ropes by a safety factor Sf that
+//! grows with the equivalent number of pulleys. Beside the verdicts, each case's wrap is solved
+//! by the level-1 creep model of [`crate::model::level1`] with f as the friction coefficient:
+//! stick and creep arcs, reserve arc, demarcation point, and by root finding the critical
+//! friction coefficient and the car load at which traction is lost.
+//!
+//! * [`groove`]: the groove factor f of each groove kind, with its valid range;
+//! * [`cases`]: the rope tensions at the sheave of each traction case from the masses;
+//! * [`rope`]: the equivalent number of pulleys and Sf;
+//! * [`checks`]: every verdict as a [`crate::check::Check`] record with the rule set `en81-50`;
+//! * [`wrap`]: each case's level-1 distribution, critical μ and load at traction loss;
+//! * [`output`]: the run's summary (JSON, CSV) and terminal table;
+//! * [`workbook`]: checks.xlsx, whose formulas recompute every case; [`html`]: report.html;
+//! * [`command`]: what `run` and `check` do with a lift sheet.
+
+pub mod cases;
+pub mod checks;
+pub mod command;
+pub mod groove;
+pub mod html;
+pub mod output;
+pub mod rope;
+pub mod workbook;
+pub mod wrap;
+
+use crate::design::Side;
+
+/// Id of the rule set the lift checks take their limits from.
+pub const RULE_SET: &str = "en81-50";
+
+/// What hangs under the car and the counterweight to balance the ropes' weight.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CompensationKind {
+    /// No compensation.
+    None,
+    /// Compensation ropes.
+    Ropes,
+    /// Compensation chains.
+    Chains,
+}
+
+impl CompensationKind {
+    /// The sheet's word.
+    pub fn word(self) -> &'static str {
+        match self {
+            CompensationKind::None => "none",
+            CompensationKind::Ropes => "ropes",
+            CompensationKind::Chains => "chains",
+        }
+    }
+}
+
+/// How a deflection or diverting pulley bends the ropes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Bend {
+    /// A simple bend (the rope bends one way).
+    Simple,
+    /// A reverse bend (the rope bends one way, then the other).
+    Reverse,
+}
+
+/// A deflection or diverting pulley.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Pulley {
+    /// Pitch diameter D_p (m).
+    pub diameter_m: f64,
+    /// How it bends the ropes.
+    pub bend: Bend,
+}
+
+/// The suspension ropes.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LiftRope {
+    /// Number of ropes n.
+    pub count: u32,
+    /// Nominal diameter d_r (m).
+    pub diameter_m: f64,
+    /// Mass of one rope per metre (kg/m).
+    pub mass_per_m_kg: f64,
+    /// Minimum breaking force of one rope (N).
+    pub min_breaking_force_n: f64,
+}
+
+/// A validated lift sheet (`[lift]`), SI units, angles in radians.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Lift {
+    /// The sheet's file name as given (for messages and reports).
+    pub sheet: String,
+    /// The design's title.
+    pub title: String,
+    /// Gravity g (m/s²).
+    pub g_m_s2: f64,
+    /// Mass of the empty car P (kg).
+    pub car_mass_kg: f64,
+    /// Rated load Q (kg).
+    pub rated_load_kg: f64,
+    /// Mass of the counterweight (kg), given or `P + q·Q` from the balance ratio q.
+    pub counterweight_kg: f64,
+    /// Roping factor r (1 for 1:1, 2 for 2:1, …).
+    pub roping: u32,
+    /// Travel H (m).
+    pub travel_m: f64,
+    /// Rated speed of the car (m/s).
+    pub rated_speed_m_s: f64,
+    /// Rope length from the sheave to the car (or counterweight) at its highest position (m).
+    pub top_rope_length_m: f64,
+    /// The suspension ropes.
+    pub rope: LiftRope,
+    /// The compensation's kind.
+    pub compensation: CompensationKind,
+    /// Mass per metre of all compensation ropes or chains together (kg/m).
+    pub compensation_mass_per_m_kg: f64,
+    /// Mass per metre of the travelling cable(s) (kg/m).
+    pub travelling_cable_mass_per_m_kg: f64,
+    /// Traction sheave pitch diameter D_t (m).
+    pub sheave_diameter_m: f64,
+    /// Wrap angle α (rad).
+    pub wrap_angle_rad: f64,
+    /// The sheave's groove.
+    pub groove: groove::Groove,
+    /// N_equiv(t), the traction sheave's equivalent number of pulleys for its groove.
+    pub n_equiv_t: f64,
+    /// Deflection and diverting pulleys.
+    pub pulleys: Vec<Pulley>,
+    /// Deceleration of the emergency braking case (m/s²).
+    pub emergency_decel_m_s2: f64,
+    /// The side of the wrap the car hangs on (side 1 by default; the counterweight on the other).
+    pub car_side: Side,
+}
+
+impl Lift {
+    /// The rope speed at the sheave at rated speed, `v_r = r·v` (m/s).
+    pub fn rope_speed_m_s(&self) -> f64 {
+        f64::from(self.roping) * self.rated_speed_m_s
+    }
+
+    /// The same lift with the car and the counterweight on the other sides of the wrap.
+    pub fn mirrored(&self) -> Self {
+        let car_side = match self.car_side {
+            Side::One => Side::Two,
+            Side::Two => Side::One,
+        };
+        Self { car_side, ..self.clone() }
+    }
+}
