@@ -1,69 +1,18 @@
 //! The `wrapcalc` command line: wires the library's stages together, nothing more.
 
-use clap::{Parser, Subcommand, ValueEnum};
+mod cli;
+
+use clap::Parser;
+use cli::*;
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use wrapcalc::design::{Design, Scene};
-use wrapcalc::plan::{Level, Request};
+use wrapcalc::plan::Request;
 use wrapcalc::report::{self, summary::Summary, table};
 use wrapcalc::run::{self, Options, RunResult};
 use wrapcalc::sheet;
 use wrapcalc::sweep;
-
-#[derive(Parser)]
-#[command(
-    name = "wrapcalc",
-    version,
-    about = "Friction (Koepe) hoist design calculator: anti-slip checks and the friction distribution over the wrap"
-)]
-struct Cli {
-    #[command(subcommand)]
-    command: Command,
-}
-
-#[derive(Subcommand)]
-enum Command {
-    /// Run every scene of a design sheet and write the report.
-    Run(RunArgs),
-    /// Level-0 checks only (instant), with the load-case matrix; writes no report.
-    Check(CheckArgs),
-    /// Run a sheet over a grid of one or two varied keys; writes sweep.csv and sweep.png.
-    Sweep(SweepArgs),
-    /// Join the CSVs of `sweep --shard` runs into the sweep.csv (and sweep.png) of a single run.
-    Merge(MergeArgs),
-    /// Run time against error of every level on fixed cases; writes bench.csv, scaling.csv, bench.png.
-    Bench(BenchArgs),
-    /// Print the design sheet's JSON Schema (for TOML editors), or with --markdown its key reference.
-    Schema(SchemaArgs),
-    /// Write a commented template sheet that runs as written (kinds: tower-cage, ground-skips).
-    New(NewArgs),
-    /// List the bundled rule sets (design codes), or print one rule set's limits with their
-    /// formulas, clauses and sources.
-    Codes(CodesArgs),
-}
-
-#[derive(clap::Args)]
-struct NewArgs {
-    /// The template (without one, the kinds are listed).
-    kind: Option<String>,
-    /// Write it to this file instead of printing it; an existing file is kept unless --force.
-    #[arg(long)]
-    out: Option<PathBuf>,
-    /// Replace an existing --out file.
-    #[arg(long)]
-    force: bool,
-}
-
-#[derive(clap::Args)]
-struct SchemaArgs {
-    /// Write to this file instead of standard output.
-    #[arg(long)]
-    out: Option<PathBuf>,
-    /// The key reference in Markdown (docs/sheet.md) instead of the JSON Schema.
-    #[arg(long)]
-    markdown: bool,
-}
 
 /// `wrapcalc schema`: the sheet's JSON Schema or key reference, both generated from the key registry.
 fn schema_command(args: SchemaArgs) -> anyhow::Result<()> {
@@ -77,177 +26,10 @@ fn schema_command(args: SchemaArgs) -> anyhow::Result<()> {
     }
 }
 
-#[derive(clap::Args)]
-struct CodesArgs {
-    /// The rule set's id; all rule sets are listed without it.
-    id: Option<String>,
-}
-
-#[derive(clap::Args)]
-struct BenchArgs {
-    /// Report directory.
-    #[arg(long, default_value = "reports/bench")]
-    out: PathBuf,
-    /// Also the largest cases (N = 100 000, a history of 1e6 samples); takes minutes.
-    #[arg(long)]
-    long: bool,
-    /// The reference sheet whose duty-MID scene is benched.
-    #[arg(long, default_value = "tables/guo2020.toml")]
-    sheet: PathBuf,
-    /// Only this case (repeatable; e.g. bound-rolling); all by default.
-    #[arg(long = "case", value_name = "NAME")]
-    cases: Vec<String>,
-    /// Print nothing but errors.
-    #[arg(long)]
-    quiet: bool,
-    /// Run one point alone and print the process's peak memory (kB); used by the bench itself.
-    #[arg(long, hide = true, value_name = "SPEC")]
-    probe: Option<String>,
-}
-
-#[derive(clap::Args)]
-struct RunArgs {
-    /// The design sheet (TOML).
-    sheet: PathBuf,
-    /// Report directory [default: reports/<sheet file stem>/].
-    #[arg(long)]
-    out: Option<PathBuf>,
-    /// Run only this scene (repeatable); the load-case matrix and the design checks then do not run.
-    #[arg(long = "scene", value_name = "NAME")]
-    scenes: Vec<String>,
-    #[command(flatten)]
-    model: ModelArgs,
-    #[arg(long, value_enum, default_value_t = Format::Table)]
-    format: Format,
-    /// Solver of the discrete level's increments: the exact O(N) clamp, or clarabel's convex program.
-    #[arg(long, value_enum, default_value_t = SolverArg::Fast)]
-    solver: SolverArg,
-    /// Do not draw the PNG plots.
-    #[arg(long)]
-    no_plots: bool,
-    /// Do not write the calculation report (report.html) and the checks' workbook (checks.xlsx).
-    #[arg(long)]
-    no_report: bool,
-    /// Print nothing but errors (and the JSON with --format json).
-    #[arg(long)]
-    quiet: bool,
-}
-
-/// The model options `run` and `sweep` share.
-#[derive(clap::Args)]
-struct ModelArgs {
-    /// Model level for every scene: auto (the planner chooses) or 0–4.
-    #[arg(long, default_value = "auto", value_parser = parse_level)]
-    level: LevelArg,
-    /// Number of wrap nodes of the output grid / discrete levels.
-    #[arg(long, default_value_t = run::DEFAULT_NODES)]
-    nodes: usize,
-    /// Refuse, before it starts, a scene whose estimated run time on one core exceeds this.
-    #[arg(long, value_name = "SECONDS", default_value_t = wrapcalc::plan::cost::DEFAULT_LIMIT_S)]
-    cost_limit_s: u64,
-}
-
-#[derive(clap::Args)]
-struct CheckArgs {
-    /// The design sheet (TOML).
-    sheet: PathBuf,
-    #[arg(long, value_enum, default_value_t = Format::Table)]
-    format: Format,
-}
-
-#[derive(clap::Args)]
-struct SweepArgs {
-    /// The design sheet (TOML).
-    sheet: PathBuf,
-    /// KEY=START:STOP:COUNT, e.g. pulley.mu=0.2:0.4:21 (once or twice; the first key varies slowest).
-    #[arg(long = "vary", value_name = "KEY=START:STOP:COUNT", required = true)]
-    vary: Vec<String>,
-    /// Run only this scene (repeatable); `scene.KEY` is set in these scenes.
-    #[arg(long = "scene", value_name = "NAME")]
-    scenes: Vec<String>,
-    #[command(flatten)]
-    model: ModelArgs,
-    /// Output directory [default: reports/<sheet file stem>-sweep/].
-    #[arg(long)]
-    out: Option<PathBuf>,
-    /// Run only the K-th of N slices of the points (writes sweep-shard-K-of-N.csv, no plot).
-    #[arg(long, value_name = "K/N")]
-    shard: Option<String>,
-    /// Do not draw sweep.png.
-    #[arg(long)]
-    no_plots: bool,
-    /// Print nothing but errors; no progress bar.
-    #[arg(long)]
-    quiet: bool,
-}
-
-#[derive(clap::Args)]
-struct MergeArgs {
-    /// The shard CSVs (sweep-shard-K-of-N.csv), in any order.
-    #[arg(required = true)]
-    shards: Vec<PathBuf>,
-    /// Output directory for sweep.csv and sweep.png.
-    #[arg(long)]
-    out: PathBuf,
-    /// Do not draw sweep.png.
-    #[arg(long)]
-    no_plots: bool,
-    /// Print nothing but errors.
-    #[arg(long)]
-    quiet: bool,
-}
-
-#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
-enum Format {
-    Table,
-    Json,
-}
-
-#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
-enum SolverArg {
-    Fast,
-    Clarabel,
-}
-
-impl From<SolverArg> for wrapcalc::model::level2::Solver {
-    fn from(s: SolverArg) -> Self {
-        match s {
-            SolverArg::Fast => Self::Fast,
-            SolverArg::Clarabel => Self::Clarabel,
-        }
-    }
-}
-
-#[derive(Clone, Copy, PartialEq, Eq)]
-enum LevelArg {
-    Auto,
-    Level(Level),
-}
-
-impl LevelArg {
-    /// The level `--level` forces (`None`: the planner chooses).
-    fn forced(self) -> Option<Level> {
-        match self {
-            LevelArg::Auto => None,
-            LevelArg::Level(l) => Some(l),
-        }
-    }
-}
-
 /// Whether output on a stream may be styled (colour, progress bars): only on a terminal, and
 /// not when `NO_COLOR` is set to a non-empty value.
 fn styled(stream_is_terminal: bool) -> bool {
     stream_is_terminal && std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty())
-}
-
-fn parse_level(s: &str) -> Result<LevelArg, String> {
-    match s {
-        "auto" => Ok(LevelArg::Auto),
-        _ => match s.parse::<u8>().ok().and_then(Level::from_number) {
-            Some(l) => Ok(LevelArg::Level(l)),
-            None => Err(format!("expected auto or a level 0–4, got {s:?}")),
-        },
-    }
 }
 
 fn main() -> ExitCode {

@@ -19,6 +19,7 @@
 //! Derived quantities (arcs, JDP, utilization) are computed on the pieces themselves, not on the
 //! sampled grid, so they are exact whatever the node count; the grid only serves the reports.
 
+pub mod arcs;
 pub mod contact;
 pub mod piece;
 pub mod piece_ranges;

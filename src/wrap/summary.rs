@@ -10,18 +10,11 @@
 //! evaluates only the pieces their screens do not decide (docs/physics.md §8, points of the
 //! distribution).
 
+use super::arcs::ArcTally;
 use crate::numerics::roots::{RootError, RootStats, bracketed};
 use crate::wrap::contact::{ARC_THRESHOLD, ContactLaw, NodeState, SLIP_UTILIZATION};
 use crate::wrap::piece_ranges::{Held, Screen, Screens, Side};
 use crate::wrap::{Distribution, Piece, Sample, TensionField, Zone, output_grid_rad};
-
-/// Sign class of friction on a stretch of wrap.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Sign {
-    Neutral = 0,
-    Reverse = 1,
-    Positive = 2,
-}
 
 /// Arcs, JDP and peak utilization of a field (angles in radians).
 #[derive(Debug, Clone, PartialEq)]
@@ -33,7 +26,7 @@ pub struct WrapSummary {
     /// Where friction is below 0.001 μn (the idle arc of creep theory).
     pub idle_arc_rad: f64,
     /// The demarcation point (JDP): θ where positive friction ends and reverse friction follows
-    /// downstream (rad from the side-1 tangent point), the [`principal`] one where there are
+    /// downstream (rad from the side-1 tangent point), the [`principal`](super::arcs::principal) one where there are
     /// several; `None` without such a sign change.
     pub jdp_rad: Option<f64>,
     /// Every demarcation point, in θ order (rad): each end of a positive run that a reverse run
@@ -294,7 +287,7 @@ impl Gather {
         let positive = piece.friction_positive();
         let u = contact_utilization(rate, law.mu);
         self.max_utilization = self.max_utilization.max(u);
-        self.arcs.add(piece.theta0_rad, piece.theta1_rad, u >= ARC_THRESHOLD, positive);
+        self.arcs.add_piece(piece.theta0_rad, piece.theta1_rad, u >= ARC_THRESHOLD, positive, piece);
         if self.zones {
             self.states.push(piece.theta0_rad, piece.theta1_rad, state_of(u >= SLIP_UTILIZATION, positive));
         }
@@ -323,7 +316,7 @@ impl Gather {
         let arc = match screen.arc.side(c) {
             Side::Open => true,
             side => {
-                self.arcs.add(a, b, side == Side::Above, positive);
+                self.arcs.add_piece(a, b, side == Side::Above, positive, &carried.piece(p, i));
                 false
             }
         };
@@ -355,7 +348,7 @@ impl Gather {
             }
             if what.arc {
                 for &(s, e, above) in split(&part, law, ends, ARC_THRESHOLD, &mut self.roots)?.parts() {
-                    self.arcs.add(s, e, above, positive);
+                    self.arcs.add_piece(s, e, above, positive, &part);
                 }
             }
             if what.slip && self.zones {
@@ -379,137 +372,6 @@ fn monotone_parts(piece: Piece, centrifugal_n: f64) -> impl Iterator<Item = Piec
         None => (piece, None),
     };
     std::iter::once(first).chain(second)
-}
-
-/// Arc measures and the demarcation points, accumulated stretch by stretch in θ order (shared
-/// by every summary of the wrap).
-#[derive(Debug, Default, Clone)]
-pub struct ArcTally {
-    /// Measure of each [`Sign`] class (indexed by its discriminant).
-    measure_rad: [f64; 3],
-    /// The runs of one sign of friction, in θ order (idle stretches between them are gaps).
-    runs: Vec<SignRun>,
-    /// The end of the last stretch added: the wrap angle once the whole wrap is tallied.
-    extent_rad: f64,
-}
-
-/// A run of friction of one sign above the arc threshold: idle stretches inside it count
-/// towards its extent, not its measure.
-#[derive(Debug, Clone, Copy)]
-struct SignRun {
-    positive: bool,
-    start_rad: f64,
-    end_rad: f64,
-    measure_rad: f64,
-}
-
-/// A demarcation: where a positive run ends and the reverse run after it (downstream, in +θ)
-/// starts, with an idle gap between them or none.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Demarcation {
-    /// The end of the positive run (rad): the demarcation point as reported.
-    pub at_rad: f64,
-    /// The start of the reverse run (rad); `at_rad` without a gap.
-    pub gap_end_rad: f64,
-    /// The measure of the positive run before it plus the reverse run after it (rad).
-    pub weight_rad: f64,
-}
-
-impl ArcTally {
-    /// Adds the stretch [start, end] where friction has the sign of `positive` and is
-    /// `above` the arc threshold (0.001 μn) or not.
-    pub fn add(&mut self, start: f64, end: f64, above: bool, positive: bool) {
-        if end <= start {
-            return;
-        }
-        let sign = match u8::from(above) << u8::from(positive) {
-            0 => Sign::Neutral,
-            1 => Sign::Reverse,
-            _ => Sign::Positive,
-        };
-        self.measure_rad[sign as usize] += end - start;
-        self.extent_rad = self.extent_rad.max(end);
-        if sign == Sign::Neutral {
-            return;
-        }
-        let positive = sign == Sign::Positive;
-        match self.runs.last_mut() {
-            Some(run) if run.positive == positive => {
-                run.end_rad = end;
-                run.measure_rad += end - start;
-            }
-            _ => self.runs.push(SignRun { positive, start_rad: start, end_rad: end, measure_rad: end - start }),
-        }
-    }
-
-    /// Every demarcation, in θ order: each positive run that a reverse run follows.
-    pub fn demarcations(&self) -> Vec<Demarcation> {
-        self.runs
-            .windows(2)
-            .filter(|w| w[0].positive && !w[1].positive)
-            .map(|w| Demarcation {
-                at_rad: w[0].end_rad,
-                gap_end_rad: w[1].start_rad,
-                weight_rad: w[0].measure_rad + w[1].measure_rad,
-            })
-            .collect()
-    }
-
-    /// Measure of the positive arc so far (rad).
-    pub fn positive_rad(&self) -> f64 {
-        self.measure_rad[Sign::Positive as usize]
-    }
-
-    /// Measure of the reverse arc so far (rad).
-    pub fn reverse_rad(&self) -> f64 {
-        self.measure_rad[Sign::Reverse as usize]
-    }
-
-    /// Measure of the idle arc so far, where |q| stays below 0.001 μn (rad).
-    pub fn idle_rad(&self) -> f64 {
-        self.measure_rad[Sign::Neutral as usize]
-    }
-
-    /// The JDP: the [`principal`] demarcation's point (rad from the side-1 tangent point);
-    /// `None` where reverse friction never follows positive.
-    pub fn jdp_rad(&self) -> Option<f64> {
-        principal(&self.demarcations(), self.extent_rad).map(|d| d.at_rad)
-    }
-
-    /// The summary of the tallied wrap: its arcs and JDP, the peak utilization (at most 1), the
-    /// zones and the root finder's tally.
-    pub fn summary(&self, max_utilization: f64, zones: ZoneRuns, roots: RootStats) -> WrapSummary {
-        WrapSummary {
-            positive_arc_rad: self.positive_rad(),
-            reverse_arc_rad: self.reverse_rad(),
-            idle_arc_rad: self.idle_rad(),
-            jdp_rad: self.jdp_rad(),
-            demarcations_rad: self.demarcations().iter().map(|d| d.at_rad).collect(),
-            max_utilization: max_utilization.min(1.0),
-            zones: zones.into_zones(),
-            roots,
-        }
-    }
-}
-
-/// "The" JDP among several demarcations, by a rule that does not depend on the frame (the
-/// mirror θ → α − θ, T1 ↔ T2 maps each demarcation to one of the mirrored wrap's, the runs
-/// beside it swapping roles): the one with the largest positive run before it plus reverse run
-/// after it; of equal ones, the one whose gap's middle is nearest the middle of the wrap
-/// (`extent_rad` = α); of two mirror images of each other, the one at the smaller θ.
-pub fn principal(demarcations: &[Demarcation], extent_rad: f64) -> Option<Demarcation> {
-    // Equal within what mirrored wraps agree to: their arcs to about 1e-6° (1.7e-8 rad).
-    const SAME: f64 = 1e-7;
-    let off_middle = |d: &Demarcation| (0.5 * (d.at_rad + d.gap_end_rad) - 0.5 * extent_rad).abs();
-    demarcations.iter().copied().reduce(|best, d| {
-        if d.weight_rad > best.weight_rad + SAME
-            || ((d.weight_rad - best.weight_rad).abs() <= SAME && off_middle(&d) < off_middle(&best) - SAME)
-        {
-            d
-        } else {
-            best
-        }
-    })
 }
 
 /// Samples a field on the output grid (`nodes` pitches plus every breakpoint and zone boundary).
@@ -554,61 +416,5 @@ pub fn distribution(
         zones: summary.zones.clone(),
         jdp_deg: summary.jdp_rad.map(f64::to_degrees),
         gross_slip,
-    }
-}
-
-#[cfg(test)]
-mod demarcation_tests {
-    use super::*;
-
-    /// Tallies `(start, end, sign)` stretches (sign +1, −1 or 0 for idle), in θ order.
-    fn tally(stretches: &[(f64, f64, i8)]) -> ArcTally {
-        let mut t = ArcTally::default();
-        for &(a, b, s) in stretches {
-            t.add(a, b, s != 0, s > 0);
-        }
-        t
-    }
-
-    /// The mirror θ → α − θ with the friction's sign flipped: the stretches in reverse order.
-    fn mirrored(stretches: &[(f64, f64, i8)], alpha: f64) -> Vec<(f64, f64, i8)> {
-        stretches.iter().rev().map(|&(a, b, s)| (alpha - b, alpha - a, -s)).collect()
-    }
-
-    /// Friction + − + − over α = 3: positive [0, 0.2], reverse [0.2, 0.9], positive [0.9, 2.5],
-    /// reverse [2.5, 3]. Two demarcations, at 0.2 (runs 0.2 + 0.7 = 0.9 rad) and at 2.5 (runs
-    /// 1.6 + 0.5 = 2.1 rad): the JDP is 2.5, the one between the longer runs. Mirrored, the
-    /// demarcations are 3 − 2.5 = 0.5 and 3 − 0.2 = 2.8 and the JDP 0.5 = 3 − 2.5: the same
-    /// demarcation in both frames (reading from θ = 0 took 0.2 here and 0.5 in the mirror).
-    #[test]
-    fn the_jdp_of_alternating_friction_is_the_same_point_in_both_frames() {
-        let alpha = 3.0;
-        let field = [(0.0, 0.2, 1), (0.2, 0.9, -1), (0.9, 2.5, 1), (2.5, 3.0, -1)];
-        let t = tally(&field);
-        let at: Vec<f64> = t.demarcations().iter().map(|d| d.at_rad).collect();
-        assert_eq!(at, vec![0.2, 2.5]);
-        assert_eq!(t.jdp_rad(), Some(2.5));
-        let m = tally(&mirrored(&field, alpha));
-        let at_m: Vec<f64> = m.demarcations().iter().map(|d| d.at_rad).collect();
-        assert!((at_m[0] - 0.5).abs() < 1e-15 && (at_m[1] - 2.8).abs() < 1e-15, "{at_m:?}");
-        assert!((m.jdp_rad().expect("a JDP") - (alpha - 2.5)).abs() < 1e-15);
-    }
-
-    /// With an idle gap [1.0, 1.4] between positive [0, 1.0] and reverse [1.4, 3]: the JDP is
-    /// the gap's start, 1.0; in the mirror the gap is [1.6, 2.0] and its JDP 1.6 = 3 − 1.4,
-    /// the same gap's other end. Equal weights (runs 0.5 + 0.5 either side of α/2 = 1.5):
-    /// the demarcation nearer the middle wins, in both frames.
-    #[test]
-    fn a_stick_gap_and_equal_runs_choose_the_same_demarcation() {
-        let alpha = 3.0;
-        let gap = [(0.0, 1.0, 1), (1.0, 1.4, 0), (1.4, 3.0, -1)];
-        assert_eq!(tally(&gap).jdp_rad(), Some(1.0));
-        assert!((tally(&mirrored(&gap, alpha)).jdp_rad().expect("a JDP") - 1.6).abs() < 1e-15);
-        // + − idle + −: demarcations at 0.5 (runs 0.5 + 0.5, gap middle 0.5, 1.0 from α/2) and
-        // at 2.1 (runs 0.5 + 0.5, middle 2.1, 0.6 from α/2): the second is nearer the middle.
-        let equal = [(0.0, 0.5, 1), (0.5, 1.0, -1), (1.0, 1.6, 0), (1.6, 2.1, 1), (2.1, 2.6, -1), (2.6, 3.0, 0)];
-        assert_eq!(tally(&equal).jdp_rad(), Some(2.1));
-        let m = tally(&mirrored(&equal, alpha)).jdp_rad().expect("a JDP");
-        assert!((m - (alpha - 2.1)).abs() < 1e-15, "{m}");
     }
 }

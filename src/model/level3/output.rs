@@ -7,8 +7,9 @@ use crate::model::history::{
     self, HistoryRun, HistorySample, Local, MAP_COLUMNS, Output, SolverReport, Wrap, WrapModel,
 };
 use crate::numerics::roots::{RootError, RootStats, brent};
+use crate::wrap::arcs::{ArcTally, principal};
 use crate::wrap::contact::{ARC_THRESHOLD, ContactLaw, SLIP_UTILIZATION};
-use crate::wrap::summary::{ArcTally, WrapSummary, ZoneRuns, principal};
+use crate::wrap::summary::{WrapSummary, ZoneRuns};
 use crate::wrap::{Distribution, Sample};
 
 /// The elastic-lining model as the history runner sees it: one distribution row per segment
@@ -134,7 +135,7 @@ pub fn summarize(state: &State, mu: f64, zones: bool) -> Result<WrapSummary, Roo
         max_u = max_u.max(u);
         let (a, b) = (k as f64 * h, (k + 1) as f64 * h);
         let above = u >= ARC_THRESHOLD;
-        arcs.add(a, b, above, q > 0.0);
+        arcs.add_valued(a, b, above, q > 0.0, (state.tension_n[k], state.tension_n[k + 1]));
         if zones {
             runs.push(a, b, law.state(if u >= SLIP_UTILIZATION { 1.0 } else { 0.0 }, q));
         }
