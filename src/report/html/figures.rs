@@ -12,7 +12,7 @@ use std::fmt::Write;
 use std::io;
 
 /// The figures a scene folder may hold, and what to read in each.
-pub const FIGURES: [(&str, &str); 4] = [
+pub const FIGURES: [(&str, &str); 5] = [
     (
         "distribution.png",
         "Tension T(θ) and friction q(θ) within its Coulomb bounds ±μn over the wrap: read where friction is positive (dark red shade) or reverse (light blue shade) at the Coulomb limit, hatched where the rope slips, and the demarcation point (JDP).",
@@ -28,6 +28,10 @@ pub const FIGURES: [(&str, &str); 4] = [
     (
         "wrap_map.png",
         "Friction utilization |q|/μn over time (across) and the wrap (θ, up), signed by the friction's direction as its colour bar shows (positive dark red, reverse light blue, none near-white; the two apart in greyscale too); the JDP in black, a line where it moves continuously and a short mark per output step where it jumps: read how the pattern moves round the wrap.",
+    ),
+    (
+        "ropes.png",
+        "Each rope's end tensions through the trip (a dash pattern per rope) and the mean rope (the solid line) that the other figures show: read how far the most loaded rope departs from the mean and where its share builds up or is relieved.",
     ),
 ];
 
