@@ -8,11 +8,8 @@
 mod derive;
 mod design_checks;
 mod loads;
-mod pipelined;
 mod ropes;
-mod schedule;
-mod share;
-mod shared_run;
+mod speed;
 mod time;
 pub mod track;
 mod trip;
@@ -23,7 +20,7 @@ pub use trip::ROPE_DYNAMICS_CHECK;
 
 use derive::{derive_answers, ensure_finite};
 use loads::run_loads;
-use shared_run::run_shared;
+use speed::shared_run::run_shared;
 use time::{run_duty_cycle, run_history};
 use wrap_run::{Kept, WrapShare};
 
@@ -338,7 +335,7 @@ pub fn run_with_progress(
     let groups = if parallel_sides || rayon::current_thread_index().is_some() {
         Vec::new()
     } else {
-        share::groups(design, scenes, options)
+        speed::share::groups(design, scenes, options)
     };
     let mut done = if groups.is_empty() {
         let mut queue: Vec<(usize, Estimate)> = estimates.into_iter().enumerate().collect();

@@ -2,7 +2,7 @@
 //! tensions come from the suspended ropes of level 4), level 0 over every sample, then the wrap
 //! through them at level 2 or 3.
 
-use super::pipelined;
+use super::speed::pipelined;
 use super::trip::{self, Trip};
 use super::wrap_run::{Initial, Kept, Model, ModelRun, WrapShare, rolling_initial, run_model, wrap_model};
 use super::{HistoryOutput, Options, RunError, SceneContext, SceneResult, WrapResult, empty};

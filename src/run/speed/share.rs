@@ -10,15 +10,15 @@
 //! on its way (a duty cycle's rows fall on its samples' instants, so that the rows of one
 //! change nothing of the other's), and each goes on from its state ([`WrapPair`]).
 
-use super::Options;
-use super::wrap_run::WrapKeep;
 use crate::design::{Design, Scene, SceneKind};
 use crate::model::level4::shared::RopePlan;
 use crate::plan::{self, Level};
+use crate::run::Options;
+use crate::run::wrap_run::WrapKeep;
 
 /// Scenes that share the start of their trip with the group's leader.
 #[derive(Debug, Clone)]
-pub(super) struct Group {
+pub(in crate::run) struct Group {
     /// The leader's ropes: the start is integrated along them.
     pub leader: RopePlan,
     /// Each member (the leader too).
@@ -29,7 +29,7 @@ pub(super) struct Group {
 
 /// A scene of a [`Group`].
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub(super) struct Member {
+pub(in crate::run) struct Member {
     /// Its index among the run's scenes.
     pub index: usize,
     /// The step it continues from.
@@ -45,7 +45,7 @@ pub(super) struct Member {
 /// checks, before it goes on, that the samples, rows and start agree
 /// ([`crate::model::history::Checkpoint::fits`]).
 #[derive(Debug, Clone, PartialEq)]
-pub(super) struct WrapPair {
+pub(in crate::run) struct WrapPair {
     /// The member that keeps its state at `at_s` (its index among the run's scenes).
     pub provider: usize,
     /// The member that goes on from it.
@@ -55,7 +55,7 @@ pub(super) struct WrapPair {
 }
 
 /// The groups of `scenes`; a scene in none runs alone.
-pub(super) fn groups(design: &Design, scenes: &[&Scene], options: Options) -> Vec<Group> {
+pub(in crate::run) fn groups(design: &Design, scenes: &[&Scene], options: Options) -> Vec<Group> {
     let mut candidates: Vec<(usize, RopePlan)> =
         scenes.iter().enumerate().filter_map(|(i, scene)| Some((i, rope_plan(design, scene, options)?))).collect();
     let plans = candidates.clone();

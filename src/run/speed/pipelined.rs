@@ -12,8 +12,6 @@
 //! ([`Beside::confirmed`]): it is then the sequential run's to the last bit; otherwise the wrap
 //! runs again through the confirmed history.
 
-use super::wrap_run::{Initial, level2_initial, rolling_initial};
-use super::{Options, params};
 use crate::design::{Design, Direction, DutyCycleScene, HistorySample, Hoist, Scene};
 use crate::dynamics::{self, DynSample, MotionProfile, SimOptions};
 use crate::model::history::{self, HistoryRun, Output};
@@ -22,10 +20,12 @@ use crate::model::level2::{Simulation, lattice};
 use crate::model::level4::{self, Level4Error, RopeRun};
 use crate::model::numerics::Numerics;
 use crate::plan::{self, Level, Plan};
+use crate::run::wrap_run::{Initial, level2_initial, rolling_initial};
+use crate::run::{Options, params};
 use std::sync::mpsc;
 
 /// The ropes' run and the wrap's run made beside it.
-pub(super) struct Beside {
+pub(in crate::run) struct Beside {
     /// The suspended ropes' run (the same as [`level4::scene_ropes`]'s).
     ropes: RopeRun,
     wrap: Option<HistoryRun>,
@@ -44,7 +44,7 @@ impl Beside {
 }
 
 /// The wrap's run beside the ropes, before the whole history confirms it.
-pub(super) struct Unconfirmed {
+pub(in crate::run) struct Unconfirmed {
     wrap: Option<HistoryRun>,
     centrifugal_step_n: f64,
     fed: usize,
@@ -71,7 +71,13 @@ impl Unconfirmed {
 /// Whether a duty cycle's wrap can run beside its ropes: the wrap at level 2 (the rigid
 /// lining), the hoist's motion (not a stop by the `[brake]`), no rope elements to follow, and
 /// a core to spare.
-pub(super) fn applies(design: &Design, scene: &Scene, cycle: &DutyCycleScene, plan: &Plan, spare_core: bool) -> bool {
+pub(in crate::run) fn applies(
+    design: &Design,
+    scene: &Scene,
+    cycle: &DutyCycleScene,
+    plan: &Plan,
+    spare_core: bool,
+) -> bool {
     let rigid = design.lining.is_none() && plan::wrap_level(plan, false) == Level::Rigid2;
     spare_core && rigid && cycle.brake_stop_s.is_none() && scene.tracks.is_none()
 }
@@ -80,7 +86,7 @@ pub(super) fn applies(design: &Design, scene: &Scene, cycle: &DutyCycleScene, pl
 /// they come; `profile` is the trip's motion ([`level4::motion_profile`]), the rope running the
 /// other way before it. The ropes' thread then makes `also`'s result, while the wrap works
 /// through the last samples.
-pub(super) fn run<R: Send>(
+pub(in crate::run) fn run<R: Send>(
     design: &Design,
     (hoist, cycle): (&Hoist, &DutyCycleScene),
     profile: &MotionProfile,
@@ -166,7 +172,7 @@ fn spacing_from_profile(design: &Design, profile: &MotionProfile, instants: &[f6
 /// end history has them ([`level4::at_rest_snapped`]): it spaces a duty cycle's m'v² lattice,
 /// so that trips that agree up to an instant step alike up to it whatever speed their own
 /// stop reaches after it.
-pub(super) fn profile_centrifugal_max_n(
+pub(in crate::run) fn profile_centrifugal_max_n(
     mass_per_m_kg: f64,
     profile: &MotionProfile,
     instants: impl Iterator<Item = f64>,

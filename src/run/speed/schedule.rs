@@ -14,7 +14,7 @@ struct Queue<T> {
 /// Runs `initial` (each with its priority, the estimated cost: higher first) and every task
 /// the tasks push on `threads` threads; returns when all are done. `job` gets a task and a
 /// way to make another ready.
-pub(super) fn run<T: Send>(initial: Vec<(f64, T)>, threads: usize, job: impl Fn(T, &dyn Fn(f64, T)) + Sync) {
+pub(in crate::run) fn run<T: Send>(initial: Vec<(f64, T)>, threads: usize, job: impl Fn(T, &dyn Fn(f64, T)) + Sync) {
     let queue = Mutex::new(Queue { ready: initial, running: 0 });
     let changed = Condvar::new();
     let lock = || queue.lock().unwrap_or_else(|poisoned| poisoned.into_inner());

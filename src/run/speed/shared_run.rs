@@ -2,24 +2,26 @@
 //! scheduler ([`super::schedule`]) takes them: each group's start first, then its scenes by what
 //! remains of their own work, a scene whose wrap others go on from before them.
 
-use super::wrap_run::{Kept, WrapCheckpoint, WrapKeep, WrapShare};
-use super::{RunError, SceneResult, schedule, share};
+use super::{schedule, share};
 use crate::model::level4::{self, shared::RopePrefix};
 use crate::plan::cost::Estimate;
+use crate::run::wrap_run::{Kept, WrapCheckpoint, WrapKeep, WrapShare};
+use crate::run::{RunError, SceneResult};
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicBool, Ordering};
 
 /// A scene's result with its index among the run's scenes.
-pub(super) type Done = (usize, Result<SceneResult, RunError>);
+pub(in crate::run) type Done = (usize, Result<SceneResult, RunError>);
 
 /// A scene run with the wrap's states it kept for others.
-pub(super) type OneScene<'a> = dyn Fn(usize, Estimate, Option<&RopePrefix>, WrapShare) -> (Done, Kept) + Sync + 'a;
+pub(in crate::run) type OneScene<'a> =
+    dyn Fn(usize, Estimate, Option<&RopePrefix>, WrapShare) -> (Done, Kept) + Sync + 'a;
 
 /// The scenes of a run with `groups` sharing the start of their trip: each group's start is a
 /// task that makes its scenes ready when done ([`schedule`]), but those whose wrap goes on from
 /// another's, which that one makes ready when done with the state it kept for them; a scene
 /// starts only while none has failed.
-pub(super) fn run_shared(
+pub(in crate::run) fn run_shared(
     groups: &[share::Group],
     estimates: Vec<Estimate>,
     failed: &AtomicBool,
