@@ -259,7 +259,7 @@ fn run_command(args: RunArgs) -> anyhow::Result<bool> {
             }
             let out_dir = args.out.clone().unwrap_or_else(|| default_out_dir(&args.sheet));
             refuse_foreign(&out_dir)?;
-            let options = wrapcalc::lift::output::WriteOptions { plots: !args.no_plots, document: !args.no_report };
+            let options = wrapcalc::lift::files::WriteOptions { plots: !args.no_plots, document: !args.no_report };
             let print = lift_print(args.format, args.quiet);
             return Ok(wrapcalc::lift::command::execute(&lift, Some((&out_dir, options)), print)?);
         }

@@ -3,7 +3,8 @@
 //! JSON, and tell whether every binding check passes (exit status 0, else 2).
 
 use super::Lift;
-use super::output::{LiftSummary, WriteOptions, evaluate, table, write};
+use super::files::{WriteOptions, write};
+use super::output::{LiftSummary, evaluate, table};
 use crate::report::ReportError;
 use std::path::Path;
 

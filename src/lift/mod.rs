@@ -24,6 +24,7 @@
 pub mod cases;
 pub mod checks;
 pub mod command;
+pub mod files;
 pub mod groove;
 pub mod html;
 pub mod output;

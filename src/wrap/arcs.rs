@@ -4,8 +4,6 @@
 //! that does not depend on the frame (docs/physics.md, JDP).
 
 use super::piece::Piece;
-use super::summary::{WrapSummary, ZoneRuns};
-use crate::numerics::roots::RootStats;
 
 /// Sign class of friction on a stretch of wrap.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -166,21 +164,6 @@ impl ArcTally {
     /// `None` where reverse friction never follows positive.
     pub fn jdp_rad(&self) -> Option<f64> {
         principal(&self.demarcations(), self.extent_rad).map(|d| d.at_rad)
-    }
-
-    /// The summary of the tallied wrap: its arcs and JDP, the peak utilization (at most 1), the
-    /// zones and the root finder's tally.
-    pub fn summary(&self, max_utilization: f64, zones: ZoneRuns, roots: RootStats) -> WrapSummary {
-        WrapSummary {
-            positive_arc_rad: self.positive_rad(),
-            reverse_arc_rad: self.reverse_rad(),
-            idle_arc_rad: self.idle_rad(),
-            jdp_rad: self.jdp_rad(),
-            demarcations_rad: self.demarcations().iter().map(|d| d.at_rad).collect(),
-            max_utilization: max_utilization.min(1.0),
-            zones: zones.into_zones(),
-            roots,
-        }
     }
 }
 

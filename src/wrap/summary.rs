@@ -418,3 +418,20 @@ pub fn distribution(
         gross_slip,
     }
 }
+
+impl ArcTally {
+    /// The summary of the tallied wrap: its arcs and JDP, the peak utilization (at most 1), the
+    /// zones and the root finder's tally.
+    pub fn summary(&self, max_utilization: f64, zones: ZoneRuns, roots: RootStats) -> WrapSummary {
+        WrapSummary {
+            positive_arc_rad: self.positive_rad(),
+            reverse_arc_rad: self.reverse_rad(),
+            idle_arc_rad: self.idle_rad(),
+            jdp_rad: self.jdp_rad(),
+            demarcations_rad: self.demarcations().iter().map(|d| d.at_rad).collect(),
+            max_utilization: max_utilization.min(1.0),
+            zones: zones.into_zones(),
+            roots,
+        }
+    }
+}
