@@ -40,11 +40,7 @@ impl Style {
 /// One check: value, relation, limit and verdict, then its formula, inputs, intermediate values,
 /// the limit's source and the case that governs it.
 pub(crate) fn render_check(out: &mut String, check: &Check, style: Style) {
-    let value = match (check.value, check.verdict) {
-        (_, Verdict::NotEvaluated) => "—".to_string(),
-        (Some(v), _) => format!("{}{}", number(v), unit_suffix(check.unit)),
-        (None, _) => "∞".into(),
-    };
+    let value = value_text(check.value, check.verdict, check.unit);
     let limit = check
         .limit
         .map_or_else(String::new, |l| format!(" {} {}{}", check.relation.symbol(), number(l), unit_suffix(check.unit)));
@@ -66,6 +62,15 @@ pub(crate) fn render_check(out: &mut String, check: &Check, style: Style) {
     }
     if let Some(note) = &check.note {
         let _ = writeln!(out, "      note:    {note}");
+    }
+}
+
+/// A check's value with its unit: ∞ for an unbounded safety factor, — when not evaluated.
+pub(crate) fn value_text(value: Option<f64>, verdict: Verdict, unit: &str) -> String {
+    match (value, verdict) {
+        (_, Verdict::NotEvaluated) => "—".to_string(),
+        (Some(v), _) => format!("{}{}", number(v), unit_suffix(unit)),
+        (None, _) => "∞".into(),
     }
 }
 

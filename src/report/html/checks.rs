@@ -27,11 +27,7 @@ pub fn verdict_html(v: Verdict) -> String {
 
 /// A check's value with its unit (∞ for an unbounded safety factor, — when not evaluated).
 pub(super) fn value_text(c: &Check) -> String {
-    match (c.value, c.verdict) {
-        (_, Verdict::NotEvaluated) => "—".into(),
-        (Some(v), _) => format!("{}{}", number(v), unit_suffix(c.unit)),
-        (None, _) => "∞".into(),
-    }
+    crate::report::check_text::value_text(c.value, c.verdict, c.unit)
 }
 
 pub(super) fn limit_text(c: &Check) -> String {

@@ -5,18 +5,13 @@
 use super::checks::verdict_html;
 use super::{Context, esc, table};
 use crate::check::Verdict;
-use crate::report::check_text::number;
+use crate::report::check_text::{number, value_text};
 use crate::report::checklist;
 use crate::report::verdict::{Entry, Overview};
 use std::fmt::Write;
 
 fn value(e: &Entry) -> String {
-    let unit = if e.unit.is_empty() { String::new() } else { format!(" {}", e.unit) };
-    match (e.verdict, e.value) {
-        (Verdict::NotEvaluated, _) => "—".into(),
-        (_, Some(v)) => format!("{}{unit}", number(v)),
-        (_, None) => "∞".into(),
-    }
+    value_text(e.value, e.verdict, &e.unit)
 }
 
 fn margin(e: &Entry) -> String {
