@@ -282,6 +282,22 @@ fn resampling_law(
         let (x, y) = (a.piece_at(th, &law).tension_n(th), b.piece_at(th, &law).tension_n(th));
         prop_assert!((x - y).abs() <= 1e-9 * x, "resampled θ = {}: {} vs {}", th, x, y);
     }
+    // Every demarcation (and so the JDP) where the resampled history puts it: both in the same
+    // stick gap (friction below the arcs' threshold, 1e-3 μn, between them), as in the mirror
+    // law; a sign change of a friction that small may sit anywhere in its gap.
+    let c = m_per_m * samples.last().map_or(0.0, |s| s.speed_m_s.powi(2));
+    let (sa, sb) = (summary(&a, mu, c), summary(&b, mu, c));
+    prop_assert_eq!(sa.demarcations_rad.len(), sb.demarcations_rad.len(), "demarcations resampled");
+    prop_assert_eq!(sa.jdp_rad.is_some(), sb.jdp_rad.is_some());
+    let law = ContactLaw::new(mu, c);
+    let place = 1e-6f64.to_radians();
+    for (&x, &y) in sa.demarcations_rad.iter().zip(&sb.demarcations_rad).chain(sa.jdp_rad.iter().zip(&sb.jdp_rad)) {
+        for k in (1..20).filter(|_| (x - y).abs() > place) {
+            let th = x + (y - x) * k as f64 / 20.0;
+            let u = law.utilization(a.piece_at(th, &law), th);
+            prop_assert!(u < 1e-3 + 1e-9, "demarcation {} vs resampled {}: friction between them at {}", x, y, th);
+        }
+    }
     for row in &run.last().distribution.samples {
         let th = row.theta_deg.to_radians();
         let x = a.piece_at(th, &law).tension_n(th);

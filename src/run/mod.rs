@@ -21,7 +21,7 @@ pub use trip::ROPE_DYNAMICS_CHECK;
 use derive::{derive_answers, ensure_finite};
 use loads::run_loads;
 use speed::shared_run::run_shared;
-use time::{run_duty_cycle, run_history};
+use time::{run_duty_cycle, run_history_scene};
 use wrap_run::{Kept, WrapShare};
 
 use crate::design::{Design, Scene, SceneKind};
@@ -405,7 +405,7 @@ fn run_scene(
     let (mut result, ropes, kept) = match &scene.kind {
         SceneKind::Loads(loads) => (run_loads(design, scene, loads, plan, options)?, None, Vec::new()),
         SceneKind::History(history) => {
-            (run_history(design, scene, history, plan, options, spare_core)?, None, Vec::new())
+            (run_history_scene(design, scene, history, plan, options, spare_core)?, None, Vec::new())
         }
         SceneKind::DutyCycle(cycle) => {
             let run = run_duty_cycle(design, scene, cycle, plan, options, context)?;

@@ -21,7 +21,7 @@ pub const SKIPPED_TRACKS: &str = "; skipped: track_* (rope elements followed thr
                                   model, level 2 or more; `run` without --level 0 follows them)";
 
 /// A history scene; with `spare_core` its rows' summaries may run on another thread.
-pub(super) fn run_history(
+pub(super) fn run_history_scene(
     design: &Design,
     scene: &Scene,
     history: &HistoryScene,
