@@ -106,10 +106,8 @@ pub(super) fn run_duty_cycle(
     let centrifugal_max_n = centrifugal_max_n(design, hoist, cycle, &trip.samples);
     let made_beside = unconfirmed.zip(centrifugal_max_n).and_then(|(u, c)| u.confirmed(&trip.samples, ropes_len, c));
     // The ropes' steps, and a wrap run beside them that the whole trip confirmed.
-    let mut work = Work {
-        increments: dynamics.as_ref().map_or(0, |(r, _)| r.steps),
-        wraps_beside: u64::from(made_beside.is_some()),
-    };
+    let ropes_steps = dynamics.as_ref().map_or(0, |(r, _)| r.steps);
+    let mut work = Work { increments: ropes_steps, wraps_beside: u64::from(made_beside.is_some()) };
     let input = Samples {
         samples: &trip.samples,
         accel_m_s2: Some(&accel),
