@@ -3,15 +3,12 @@
 //! within the limit, and a scene above it is refused before its first increment.
 
 use std::path::Path;
-use std::sync::Mutex;
+use std::sync::atomic::{AtomicUsize, Ordering};
 use wrapcalc::design::{Design, SceneKind};
 use wrapcalc::model::level4;
 use wrapcalc::plan::cost::{self, DEFAULT_LIMIT_S};
 use wrapcalc::run::{self, Options, RunError};
-use wrapcalc::{numerics::work_tally, plan, sheet};
-
-/// The increment tally is process-wide: tests that read it take turns.
-static TALLY: Mutex<()> = Mutex::new(());
+use wrapcalc::{plan, sheet};
 
 fn bundled(name: &str) -> (String, Design) {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tables").join(name);
@@ -22,12 +19,22 @@ fn bundled(name: &str) -> (String, Design) {
 
 /// The reference sheet with only its duty-MID scene, integrated at `time_step_s`.
 fn duty_mid(time_step_s: f64) -> Design {
+    duty_mids(&[("duty-MID", time_step_s)])
+}
+
+/// The reference sheet with a duty-MID scene per `(name, time_step_s)`, in that order.
+fn duty_mids(scenes: &[(&str, f64)]) -> Design {
     let (text, _) = bundled("guo2020.toml");
     let head = &text[..text.find("[[scene]]").expect("scenes")];
-    let scene = format!(
-        "[[scene]]\nname = \"duty-MID\"\nkind = \"duty-cycle\"\npayload_kg = 30000.0\ntime_step_s = {time_step_s:e}\n"
-    );
-    sheet::parse("guo2020.toml", &format!("{head}{scene}")).expect("valid")
+    let scenes: String = scenes
+        .iter()
+        .map(|(name, dt)| {
+            format!(
+                "[[scene]]\nname = \"{name}\"\nkind = \"duty-cycle\"\npayload_kg = 30000.0\ntime_step_s = {dt:e}\n\n"
+            )
+        })
+        .collect();
+    sheet::parse("guo2020.toml", &format!("{head}{scenes}")).expect("valid")
 }
 
 fn estimate_of(design: &Design, name: &str, options: Options) -> cost::Estimate {
@@ -37,19 +44,30 @@ fn estimate_of(design: &Design, name: &str, options: Options) -> cost::Estimate 
 }
 
 /// At Δt = 2.5e-5 s the 64.03 s cycle needs 2.56e6 steps of 24 rope elements (2 sides × 12):
-/// about 1.5 s at 25 ns an element-step, plus the wrap. A limit of 1 s refuses it at once, and the tally of
-/// increments does not move; with the default limit the same scene runs and the tally grows
-/// by at least its time steps.
+/// about 1.5 s at 25 ns an element-step, plus the wrap. A limit of 1 s refuses it at once, before
+/// any scene starts: not even the same cycle at Δt = 1 ms (64 030 steps, 38 ms of ropes: within
+/// the limit; no start shared with it at another step), listed before it, runs. A refused run
+/// returns no work, so what shows that nothing ran is the progress call every scene that
+/// starts makes when it ends (failed or not): there is none; and the refusal is the estimate's
+/// own (`run::estimate`, which runs nothing). With the default limit the same scene runs, and
+/// the run's work counts at least its time steps.
 #[test]
 fn a_scene_over_the_limit_is_refused_before_its_first_increment() {
-    let _turn = TALLY.lock().unwrap_or_else(|e| e.into_inner());
-    let design = duty_mid(2.5e-5);
+    let design = duty_mids(&[("duty-coarse", 1e-3), ("duty-fine", 2.5e-5)]);
     let scenes: Vec<_> = design.scenes.iter().collect();
-    let before = work_tally::increments();
-    let refused = run::run(&design, &scenes, Options { cost_limit_s: 1, ..Options::default() });
-    assert_eq!(work_tally::increments(), before, "no increment computed before the refusal");
+    let options = Options { cost_limit_s: 1, ..Options::default() };
+    let ended = AtomicUsize::new(0);
+    let refused = run::run_with_progress(&design, &scenes, options, &|_| {
+        ended.fetch_add(1, Ordering::Relaxed);
+    });
+    assert_eq!(ended.load(Ordering::Relaxed), 0, "no scene started before the refusal");
+    match run::estimate(&design, &scenes, options) {
+        Err(RunError::Costly { scene, limit_s: 1, .. }) => assert_eq!(scene, "duty-fine", "the estimate refuses"),
+        other => panic!("expected the estimate's refusal, got {other:?}"),
+    }
     match refused {
-        Err(RunError::Costly { ref estimate, limit_s: 1, .. }) => {
+        Err(RunError::Costly { ref scene, ref estimate, limit_s: 1 }) => {
+            assert_eq!(scene, "duty-fine", "the scene over the limit, not the one within it");
             assert!(estimate.seconds > 1.0, "{estimate:?}");
             assert!(estimate.drivers.iter().any(|d| d.starts_with("time_step_s = 0.000025")), "{estimate:?}");
         }
@@ -59,25 +77,22 @@ fn a_scene_over_the_limit_is_refused_before_its_first_increment() {
     for needle in ["refused before running", "--cost-limit-s", "rope element-steps", "time_step_s"] {
         assert!(message.contains(needle), "{needle:?} in {message}");
     }
-    // The other direction: within the limit it runs, and the tally counts its steps.
+    // The other direction: within the limit it runs, and its work counts its steps.
     let design = duty_mid(2.5e-4);
     let scenes: Vec<_> = design.scenes.iter().collect();
-    let before = work_tally::increments();
-    run::run(&design, &scenes, Options { nodes: 30, ..Options::default() }).expect("runs within the limit");
-    assert!(work_tally::increments() - before >= (64.03f64 / 2.5e-4) as u64, "the run's steps are counted");
+    let run = run::run(&design, &scenes, Options { nodes: 30, ..Options::default() }).expect("runs within the limit");
+    assert!(run.work.increments >= (64.03f64 / 2.5e-4) as u64, "the run's steps are counted: {:?}", run.work);
 }
 
 /// Level 4's measure is rope elements × the steps the dynamics take: 2 × 12 × the steps the
-/// tally counts when the ropes of duty-MID run, exactly; the lowering runs the same steps.
+/// ropes of duty-MID count when they run (64.03 s at 1 ms: 64 030), exactly.
 #[test]
 fn level4_estimate_is_rope_elements_times_the_steps_taken() {
-    let _turn = TALLY.lock().unwrap_or_else(|e| e.into_inner());
     let design = duty_mid(1e-3);
     let SceneKind::DutyCycle(cycle) = design.scenes[0].kind.clone() else { panic!("a duty cycle") };
     let hoist = design.hoist.clone().expect("a hoist");
-    let before = work_tally::increments();
-    level4::suspended_ropes(&design, &hoist, &cycle).expect("the ropes run");
-    let steps = work_tally::increments() - before;
+    let steps = level4::scene_ropes(&design, &hoist, &cycle, false).expect("the ropes run").steps;
+    assert_eq!(steps, 64_030, "64.03 s in steps of 1 ms");
     let e = estimate_of(&design, "duty-MID", Options::default());
     let ropes = e.parts.iter().find(|p| p.unit == "rope element-steps").expect("a rope part");
     assert_eq!(ropes.work, 24.0 * steps as f64, "{e:?}");

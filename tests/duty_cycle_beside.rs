@@ -6,26 +6,28 @@
 
 use std::path::Path;
 use wrapcalc::design::{Design, SceneKind};
-use wrapcalc::run::{self, Options, SceneResult};
-use wrapcalc::{numerics::work_tally, sheet};
+use wrapcalc::run::{self, Options, SceneResult, Work};
+use wrapcalc::sheet;
 
 fn design() -> Design {
     sheet::load(Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/tables/guo2020.toml")))
         .expect("the bundled sheet loads")
 }
 
-/// The scene run alone (from this thread, or inside a pool of one thread), its run time left out.
-fn alone(design: &Design, name: &str, one_thread: bool) -> SceneResult {
+/// The scene run alone (from this thread, or inside a pool of one thread), its run time left
+/// out, with the work the run did.
+fn alone(design: &Design, name: &str, one_thread: bool) -> (SceneResult, Work) {
     let scene = design.scenes.iter().find(|s| s.name == name).expect("scene in the bundled sheet");
     let options = Options { nodes: 90, utilization_map: false, ..Options::default() };
-    let go = || run::run(design, &[scene], options).expect("runs").scenes.remove(0);
-    let mut result = if one_thread {
+    let go = || run::run(design, &[scene], options).expect("runs");
+    let mut run = if one_thread {
         rayon::ThreadPoolBuilder::new().num_threads(1).build().expect("a pool").install(go)
     } else {
         go()
     };
+    let mut result = run.scenes.remove(0);
     result.runtime_ms = 0.0;
-    result
+    (result, run.work)
 }
 
 #[test]
@@ -47,14 +49,13 @@ fn a_wrap_run_beside_the_ropes_is_the_wrap_run_after_them() {
         (&slipping, "emergency-MID", false),
     ];
     for (design, name, kept) in cases {
-        let before = work_tally::wraps_beside();
-        let beside = alone(design, name, false);
-        assert_eq!(
-            work_tally::wraps_beside() - before,
-            u64::from(kept),
-            "{name}: the run beside the ropes kept or made again"
-        );
-        let after = alone(design, name, true);
+        let (beside, work) = alone(design, name, false);
+        assert_eq!(work.wraps_beside, u64::from(kept), "{name}: the run beside the ropes kept or made again");
+        let (after, work_after) = alone(design, name, true);
+        assert_eq!(work_after.wraps_beside, 0, "{name}: one thread, no core to spare for a run beside the ropes");
+        // A run kept is the run after the ropes to the last bit, and one not kept is not
+        // counted (the wrap runs again and counts then): the same increments either way.
+        assert_eq!(work.increments, work_after.increments, "{name}: the wrap's increments counted once");
         assert_eq!(beside.slip_onset.is_some(), !kept, "{name}");
         assert_eq!(beside, after, "{name}");
     }

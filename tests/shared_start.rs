@@ -10,10 +10,15 @@ use std::path::Path;
 use wrapcalc::design::{Design, DutyCycleScene, SceneKind};
 use wrapcalc::model::level4::shared::RopePlan;
 use wrapcalc::run::{self, Options, SceneResult};
-use wrapcalc::{numerics::work_tally, sheet};
+use wrapcalc::sheet;
 
-/// The increment tally is process-wide: tests that read it take turns.
-static TALLY: std::sync::Mutex<()> = std::sync::Mutex::new(());
+/// Two threads whatever the machine: a run of more scenes than threads has no core to spare
+/// for any of them, and those that share a start share it; a scene alone has one to spare, and
+/// shares nothing. Every test sets it before its first run (the first run would otherwise
+/// build the pool with a thread per core).
+fn two_threads() {
+    let _ = rayon::ThreadPoolBuilder::new().num_threads(2).build_global();
+}
 
 fn design() -> Design {
     sheet::load(Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/tables/guo2020.toml")))
@@ -58,17 +63,24 @@ fn timeless(mut r: SceneResult) -> SceneResult {
     r
 }
 
+/// The increments a run of `scenes` computed (its `work`).
+fn increments(d: &Design, scenes: &[&wrapcalc::design::Scene], options: Options) -> u64 {
+    run::run(d, scenes, options).expect("runs").work.increments
+}
+
 /// Runs `scenes` together, then each alone, asserts that each result is the same to the last
 /// bit (`context` names the case) and returns the increments the run together saved.
 fn same_together_as_alone(d: &Design, scenes: &[&wrapcalc::design::Scene], options: Options, context: &str) -> u64 {
-    let before = work_tally::increments();
-    let together = run::run(d, scenes, options).expect("runs").scenes;
-    let shared = work_tally::increments() - before;
-    let before = work_tally::increments();
-    let alone: Vec<SceneResult> =
-        scenes.iter().map(|s| run::run(d, &[*s], options).expect("runs").scenes.remove(0)).collect();
-    let separate = work_tally::increments() - before;
-    for (a, b) in together.into_iter().zip(alone) {
+    let together = run::run(d, scenes, options).expect("runs");
+    let shared = together.work.increments;
+    let mut separate = 0;
+    let mut alone: Vec<SceneResult> = Vec::new();
+    for s in scenes {
+        let mut run = run::run(d, &[*s], options).expect("runs");
+        separate += run.work.increments;
+        alone.push(run.scenes.remove(0));
+    }
+    for (a, b) in together.scenes.into_iter().zip(alone) {
         let name = a.name.clone();
         assert_eq!(timeless(a), timeless(b), "{name}{context}");
     }
@@ -77,10 +89,8 @@ fn same_together_as_alone(d: &Design, scenes: &[&wrapcalc::design::Scene], optio
 
 #[test]
 fn scenes_sharing_a_start_give_what_each_gives_alone() {
-    let _turn = TALLY.lock().unwrap_or_else(|e| e.into_inner());
-    // Two threads whatever the machine: six scenes on two threads have no core to spare, and
-    // those that share a start share it.
-    let _ = rayon::ThreadPoolBuilder::new().num_threads(2).build_global();
+    // Six scenes on two threads have no core to spare, and those that share a start share it.
+    two_threads();
     let d = design();
     let names = ["duty-MID", "emergency-MID", "brake-MID", "round-trip-MID", "duty-MAX-lower", "emergency-MAX-lower"];
     let scenes: Vec<_> = names.iter().map(|n| d.scenes.iter().find(|s| s.name == *n).expect("in the sheet")).collect();
@@ -95,11 +105,7 @@ fn scenes_sharing_a_start_give_what_each_gives_alone() {
     // stop's from the lowering trip's at 29.995 s: each saves some of its provider's wrap
     // increments, at most all of them (a trip alone counts its 64 030 rope steps of 1 ms and
     // its wrap's increments).
-    let wrap_of = |scene: &[&wrapcalc::design::Scene]| {
-        let before = work_tally::increments();
-        run::run(&d, scene, options).expect("runs");
-        work_tally::increments() - before - 64_030
-    };
+    let wrap_of = |scene: &[&wrapcalc::design::Scene]| increments(&d, scene, options) - 64_030;
     let (lift_wrap, lower_wrap) = (wrap_of(&scenes[..1]), wrap_of(&scenes[4..5]));
     let most = saved_steps + 3 * lift_wrap + lower_wrap;
     assert!(saved > saved_steps && saved <= most, "{saved} against {saved_steps} … {most}");
@@ -115,8 +121,7 @@ fn scenes_sharing_a_start_give_what_each_gives_alone() {
 /// brake trip's mirror is a lowering trip stopped by the brake.
 #[test]
 fn a_stop_goes_on_from_its_trip_s_wrap_at_another_row_interval() {
-    let _turn = TALLY.lock().unwrap_or_else(|e| e.into_inner());
-    let _ = rayon::ThreadPoolBuilder::new().num_threads(2).build_global();
+    two_threads();
     let d = design();
     let options = Options { nodes: 90, utilization_map: false, ..Options::default() };
     for (trip, stop) in
@@ -125,9 +130,7 @@ fn a_stop_goes_on_from_its_trip_s_wrap_at_another_row_interval() {
         let scenes: Vec<_> = [trip, stop].iter().map(|n| d.scenes.iter().find(|s| s.name == *n).unwrap()).collect();
         assert_eq!((cycle(&d, trip).output_step_s, cycle(&d, stop).output_step_s), (0.05, 0.02));
         let saved = same_together_as_alone(&d, &scenes, options, &format!(" ({trip} with {stop})"));
-        let before = work_tally::increments();
-        run::run(&d, &scenes[..1], options).expect("runs");
-        let trip_wrap = work_tally::increments() - before - 64_030;
+        let trip_wrap = increments(&d, &scenes[..1], options) - 64_030;
         assert!(saved > 29_995 && saved <= 29_995 + trip_wrap, "{trip}: {saved} against 29 995 + {trip_wrap}");
     }
     // The mirror of the brake trip: the MID lowering trip stopped by the brake at 30 s.
@@ -139,9 +142,7 @@ fn a_stop_goes_on_from_its_trip_s_wrap_at_another_row_interval() {
     assert!(cycle(&d, "down-braked").brake_stop_s.is_some(), "a stop by the brake");
     let scenes: Vec<_> = d.scenes.iter().collect();
     let saved = same_together_as_alone(&d, &scenes, options, " (lowering, stopped by the brake)");
-    let before = work_tally::increments();
-    run::run(&d, &scenes[..1], options).expect("runs");
-    let trip_wrap = work_tally::increments() - before - 64_030;
+    let trip_wrap = increments(&d, &scenes[..1], options) - 64_030;
     assert!(saved > 29_995 && saved <= 29_995 + trip_wrap, "lowering: {saved} against 29 995 + {trip_wrap}");
 }
 
@@ -161,8 +162,7 @@ fn with_scenes(scenes: &str) -> Design {
 /// results are again its own.
 #[test]
 fn a_lowering_trip_and_its_round_trip_share_their_wrap_as_the_lift_does() {
-    let _turn = TALLY.lock().unwrap_or_else(|e| e.into_inner());
-    let _ = rayon::ThreadPoolBuilder::new().num_threads(2).build_global();
+    two_threads();
     let options = Options { nodes: 90, utilization_map: false, ..Options::default() };
     for (round_step_s, continues) in [(0.05, true), (0.04, true), (0.013, false)] {
         let d = with_scenes(&format!(
@@ -188,8 +188,7 @@ fn a_lowering_trip_and_its_round_trip_share_their_wrap_as_the_lift_does() {
 /// row 1 ulp beside a sample would cut its interval and move the results in their last bits).
 #[test]
 fn a_trip_reported_at_two_intervals_agrees_where_both_report() {
-    // Its runs count increments too: it takes its turn with the tests that read the tally.
-    let _turn = TALLY.lock().unwrap_or_else(|e| e.into_inner());
+    two_threads();
     let options = Options { nodes: 90, utilization_map: false, ..Options::default() };
     for direction in ["lift", "lower"] {
         let rows = |step_s: f64| {

@@ -45,11 +45,36 @@ pub fn simulate_resumable(
     from: Option<&Checkpoint>,
     keep_at_s: Option<f64>,
 ) -> Result<(Vec<DynSample>, Option<Checkpoint>), DynamicsError> {
-    simulate_streamed(p, profile, opt, from, keep_at_s, &mut |_| {})
+    simulate_streamed(p, profile, opt, from, keep_at_s, &mut |_| {}).map(|run| (run.samples, run.checkpoint))
 }
 
 /// Samples handed on together by [`simulate_streamed`].
 pub const STREAM_CHUNK: usize = 64;
+
+/// A run of the suspended ropes as [`simulate_streamed`] makes it: its samples, the checkpoint
+/// it kept, and the time steps it integrated (its work).
+#[derive(Debug, Clone)]
+pub struct Streamed {
+    /// The samples (from the checkpoint's instant when the run continued from one).
+    pub samples: Vec<DynSample>,
+    /// The checkpoint kept, when one was asked for.
+    pub checkpoint: Option<Checkpoint>,
+    /// Time steps integrated: those after the checkpoint the run continued from (all of the
+    /// run's steps when it started afresh).
+    pub steps: u64,
+}
+
+/// The start of a run as [`simulate_prefix`] makes it: its samples, the checkpoints it kept,
+/// and the time steps it integrated (its work).
+#[derive(Debug, Clone)]
+pub struct Prefix {
+    /// The samples up to the last step kept.
+    pub samples: Vec<DynSample>,
+    /// The checkpoints, at the steps asked for, ascending.
+    pub checkpoints: Vec<Checkpoint>,
+    /// Time steps integrated: up to the last step kept.
+    pub steps: u64,
+}
 
 /// [`simulate_resumable`], handing the samples to `sink` as they are made, [`STREAM_CHUNK`] at a
 /// time and the rest at the end, in order (with `opt.parallel_sides`, all at the end): another
@@ -61,7 +86,7 @@ pub fn simulate_streamed(
     from: Option<&Checkpoint>,
     keep_at_s: Option<f64>,
     sink: &mut dyn FnMut(&[DynSample]),
-) -> Result<(Vec<DynSample>, Option<Checkpoint>), DynamicsError> {
+) -> Result<Streamed, DynamicsError> {
     let steps = step_count(p, profile, opt)?;
     let (dt, n, total_s) = (opt.dt_s, opt.elements, profile.duration_s());
     let every = opt.record_every.max(1);
@@ -75,10 +100,9 @@ pub fn simulate_streamed(
     let keep_step = keep_at_s.and_then(|t| keep_step(t, total_s, dt, steps));
     if opt.parallel_sides && !opt.energy {
         let plan = super::split::Plan { first_step, t_prev_s: t_prev, steps, keep_step, work_j, dissipated_j };
-        let run = super::split::run(p, profile, opt, sides, plan)?;
-        crate::numerics::work_tally::add_increments((steps + 1 - first_step) as u64);
-        sink(&run.0);
-        return Ok(run);
+        let (samples, checkpoint) = super::split::run(p, profile, opt, sides, plan)?;
+        sink(&samples);
+        return Ok(Streamed { samples, checkpoint, steps: (steps + 1 - first_step) as u64 });
     }
     let mut out = Vec::with_capacity((steps + 1 - first_step) / every + 2);
     out.push(sample_of(p, t_prev, profile.at(t_prev), &sides, (work_j, dissipated_j), opt.energy));
@@ -97,8 +121,7 @@ pub fn simulate_streamed(
     if out.len() > sent {
         sink(&out[sent..]);
     }
-    crate::numerics::work_tally::add_increments((steps + 1 - first_step) as u64);
-    Ok((out, kept))
+    Ok(Streamed { samples: out, checkpoint: kept, steps: (steps + 1 - first_step) as u64 })
 }
 
 /// The start of a run over `profile` (from static equilibrium, on one thread) up to the last of
@@ -106,13 +129,13 @@ pub fn simulate_streamed(
 /// the stretch that runs over profiles agreeing with `profile` up to those steps share
 /// ([`MotionProfile::agrees_until`]); each continues from its checkpoint
 /// ([`simulate_resumable`]). Returns the samples up to the last step kept (those of the whole
-/// run, bit for bit) and the checkpoints.
+/// run, bit for bit), the checkpoints and the steps integrated.
 pub fn simulate_prefix(
     p: &HoistParams,
     profile: &MotionProfile,
     opt: &SimOptions,
     keep_steps: &[usize],
-) -> Result<(Vec<DynSample>, Vec<Checkpoint>), DynamicsError> {
+) -> Result<Prefix, DynamicsError> {
     let steps = step_count(p, profile, opt)?;
     let last = keep_steps.iter().copied().filter(|k| *k < steps).max().unwrap_or(0);
     let sides = initial_sides(p, profile, opt)?;
@@ -125,8 +148,7 @@ pub fn simulate_prefix(
             kept.push(run.checkpoint(step, opt));
         }
     })?;
-    crate::numerics::work_tally::add_increments(last as u64);
-    Ok((out, kept))
+    Ok(Prefix { samples: out, checkpoints: kept, steps: last as u64 })
 }
 
 /// The integrator's state between steps of a sequential run.

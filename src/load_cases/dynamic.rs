@@ -11,34 +11,34 @@ use super::rigid::{Emergency, MOVING_M_S, emergency_mode, from_states, stop_case
 use super::{CaseResult, Position};
 use crate::check::{Relation, all_pass};
 use crate::design::{Design, Direction, Hoist, LoadCases, Phase, SafetyFactorBasis};
-use crate::dynamics::{self, DynSample, HoistParams, SimOptions};
+use crate::dynamics::{self, DynSample, HoistParams, MotionProfile, SimOptions};
 use crate::model::level0::{DYNAMIC_CHECK, EndState, euler_limit, safety_factor};
 use crate::model::level4::{self, ELEMENTS_PER_SIDE, Level4Error, ROPE_DYNAMICS_CHECK, WRAP_SAMPLE_S};
 use crate::model::stop::{self, StopMode};
 use crate::plan::Level;
 
-/// Every level-4 case, and the number of rope-dynamics runs it took.
+/// Every level-4 case, the number of rope-dynamics runs it took and the time steps they
+/// integrated (their work).
 pub fn cases(
     design: &Design,
     hoist: &Hoist,
     lc: &LoadCases,
     prof: &Characteristics,
-) -> Result<(Vec<CaseResult>, usize), Level4Error> {
+) -> Result<(Vec<CaseResult>, usize, u64), Level4Error> {
     let emergency = emergency_mode(design, lc);
     let record_every = ((WRAP_SAMPLE_S / lc.time_step_s).round() as usize).max(1);
     let options = SimOptions { record_every, energy: false, ..SimOptions::new(lc.time_step_s, ELEMENTS_PER_SIDE) };
     let normal: Vec<Phase> = lc.rope_dynamics.iter().copied().filter(|p| *p != Phase::Emergency).collect();
     let stops = lc.rope_dynamics.contains(&Phase::Emergency) && emergency != Emergency::None;
     let mut out = Vec::new();
-    let mut runs = 0;
+    let (mut runs, mut steps) = (0, 0);
     for &payload in &lc.payloads_kg {
         for &dir in &lc.directions {
             let (params, x0) = trip_params(design, hoist, payload, dir, prof.travel_m);
             let stages = level4::stages(hoist, dir);
             if !normal.is_empty() {
                 let profile = dynamics::MotionProfile::new(&stages)?;
-                let mut samples = dynamics::simulate_with(&params, &profile, &options)?;
-                stop::with_guide(design, &mut samples);
+                let samples = guided_ropes(design, &params, &profile, &options, &mut steps)?;
                 runs += 1;
                 out.extend(phase_cases(design, &params, payload, dir, x0, &normal, &samples)?);
             }
@@ -53,15 +53,15 @@ pub fn cases(
                     runs += 1;
                     let trip =
                         stop::BrakedTrip { stages: &stages, trips_s: &times, time_step_s: lc.time_step_s, from: None };
-                    let trips = stop::braked_ropes(design, &params, trip, &b)?;
-                    (trips, b.idle_time_s + b.build_up_s, StopMode::Brake)
+                    let braked = stop::braked_ropes(design, &params, trip, &b)?;
+                    steps += braked.steps;
+                    (braked.trips, b.idle_time_s + b.build_up_s, StopMode::Brake)
                 }
                 Emergency::Imposed(d) => {
                     let mut trips = Vec::new();
                     for &t in &times {
                         let profile = level4::imposed_stop_profile(&stages, t, d)?;
-                        let mut samples = dynamics::simulate_with(&params, &profile, &options)?;
-                        stop::with_guide(design, &mut samples);
+                        let samples = guided_ropes(design, &params, &profile, &options, &mut steps)?;
                         runs += 1;
                         trips.push(samples);
                     }
@@ -80,7 +80,22 @@ pub fn cases(
             }
         }
     }
-    Ok((out, runs))
+    Ok((out, runs, steps))
+}
+
+/// The suspended ropes over `profile` from static equilibrium, tensions at the friction pulley
+/// (guide sheave included); adds the time steps integrated to `steps`.
+fn guided_ropes(
+    design: &Design,
+    params: &HoistParams,
+    profile: &MotionProfile,
+    options: &SimOptions,
+    steps: &mut u64,
+) -> Result<Vec<DynSample>, Level4Error> {
+    let mut run = dynamics::simulate_streamed(params, profile, options, None, None, &mut |_| {})?;
+    stop::with_guide(design, &mut run.samples);
+    *steps += run.steps;
+    Ok(run.samples)
 }
 
 fn states_of(design: &Design, samples: &[DynSample]) -> Vec<(f64, EndState)> {

@@ -138,6 +138,10 @@ pub struct MatrixResult {
     pub checks_pass: bool,
     /// Level-4 runs of the suspended ropes.
     pub rope_dynamics_runs: usize,
+    /// Time steps those runs integrated (the matrix's share of a run's work,
+    /// [`crate::run::RunResult::work`]; not in summary.json).
+    #[serde(skip)]
+    pub rope_dynamics_steps: u64,
     /// Wall time of the matrix (ms).
     pub runtime_ms: f64,
 }
@@ -159,11 +163,11 @@ pub fn evaluate(design: &Design, rope_dynamics: bool) -> Option<Result<MatrixRes
         let start = Instant::now();
         let prof = profile::Characteristics::of(hoist)?;
         let mut results = rigid::cases(design, hoist, cases, &prof)?;
-        let mut runs = 0;
+        let (mut runs, mut steps) = (0, 0);
         if rope_dynamics {
-            let (dynamic, n) = dynamic::cases(design, hoist, cases, &prof)?;
+            let (dynamic, n, integrated) = dynamic::cases(design, hoist, cases, &prof)?;
             results.extend(dynamic);
-            runs = n;
+            (runs, steps) = (n, integrated);
         }
         let checks = govern::governing(&results);
         let checks_pass = crate::check::all_pass(&checks);
@@ -178,6 +182,7 @@ pub fn evaluate(design: &Design, rope_dynamics: bool) -> Option<Result<MatrixRes
             checks,
             checks_pass,
             rope_dynamics_runs: runs,
+            rope_dynamics_steps: steps,
             runtime_ms: start.elapsed().as_secs_f64() * 1e3,
         })
     })())

@@ -1,24 +1,26 @@
 //! The answers a scene asks for beyond its model level's own: margins and the creep-theory fit,
 //! and the final check that every reported number is finite.
 
-use super::{RunError, SceneResult};
+use super::{RunError, SceneResult, Work};
 use crate::design::{Design, Direction, Output, Scene, SceneKind};
 use crate::margins;
 use crate::margins::fit;
 use crate::model::level0::EndState;
-use crate::model::level4::{RopeRun, StopTrials};
+use crate::model::level4::{self, RopeRun, StopTrials};
 use crate::plan::Level;
 
 /// The answers derived from a scene's result that it asks for: margins from its state (a time
 /// scene's worst instant), the creep-theory fit of its reported distribution.
 /// A duty cycle's emergency margins continue from its own suspended ropes' run (`ropes`) when
-/// it is given.
+/// it is given. Returns the work computed: the ropes' steps of the margins' trial stops (and
+/// of the run they start from when `ropes` is not given).
 pub(super) fn derive_answers(
     design: &Design,
     scene: &Scene,
     result: &mut SceneResult,
     ropes: Option<RopeRun>,
-) -> Result<(), RunError> {
+) -> Result<Work, RunError> {
+    let mut work = Work::default();
     if scene.outputs.contains(Output::Margins) {
         let (at_t_s, state) = match result.worst {
             Some((t, s)) => (Some(t), s),
@@ -38,14 +40,17 @@ pub(super) fn derive_answers(
         // An emergency stop with the ropes' dynamics (level 4): each trial runs the ropes.
         if let (SceneKind::DutyCycle(cycle), Some(hoist), Level::Dynamic4) =
             (&scene.kind, &design.hoist, result.plan.level)
-            && let Some(trials) = match ropes {
-                Some(run) => StopTrials::from_run(design, hoist, cycle, run),
-                None => StopTrials::new(design, hoist, cycle),
-            }
+            && let Some(run) = ropes.or_else(|| {
+                let run = level4::scene_ropes(design, hoist, cycle, false).ok()?;
+                work += Work::increments(run.steps);
+                Some(run)
+            })
+            && let Some(trials) = StopTrials::from_run(design, hoist, cycle, run)
         {
             let (slip, sf) = margins::emergency(design, &trials, &mut m.root_finding);
             m.emergency_braking_to_slip_m_s2 = Some(slip);
             m.emergency_braking_to_min_safety_factor_m_s2 = Some(sf);
+            work += Work::increments(trials.steps());
         }
         result.margins = Some(m);
     }
@@ -61,7 +66,7 @@ pub(super) fn derive_answers(
             .map_err(|source| RunError::Fit { scene: scene.name.clone(), source })?;
         result.fit = Some(fitted);
     }
-    Ok(())
+    Ok(work)
 }
 
 /// Every reported number must be finite: a non-finite intermediate becomes an error.

@@ -1,7 +1,7 @@
 //! `loads` scenes: level 0, creep theory (level 1), or a steady run-through at level 2–3.
 
 use super::wrap_run::{Initial, steady_run, wrap_history};
-use super::{Options, RunError, SceneResult, WrapResult, empty};
+use super::{Options, RunError, SceneResult, Work, WrapResult, empty};
 use crate::design::{Design, EndLoads, LoadsScene, Scene};
 use crate::model::level0;
 use crate::model::level1;
@@ -9,15 +9,17 @@ use crate::plan::{Level, Plan};
 use crate::wrap::Distribution;
 use crate::wrap::summary;
 
+/// A `loads` scene, and the work it computed (the wrap's increments of a run-through).
 pub(super) fn run_loads(
     design: &Design,
     scene: &Scene,
     loads: &LoadsScene,
     plan: Plan,
     options: Options,
-) -> Result<SceneResult, RunError> {
+) -> Result<(SceneResult, Work), RunError> {
     let classical = level0::loads(design, loads);
     let mut result = empty(scene, plan, classical);
+    let mut work = Work::default();
     if let EndLoads::Masses { m1_kg, m2_kg } = loads.ends {
         result.hanging_kg = Some([m1_kg, m2_kg]);
     }
@@ -61,7 +63,7 @@ pub(super) fn run_loads(
                 initial,
                 options,
             )?;
-            crate::numerics::work_tally::add_increments(run.stats.increments);
+            work = Work::increments(run.stats.increments);
             result.level3 = level3;
             let last = run.snapshots.into_iter().last();
             result.wrap = last
@@ -69,5 +71,5 @@ pub(super) fn run_loads(
             result.nodes = Some(options.nodes);
         }
     }
-    Ok(result)
+    Ok((result, work))
 }

@@ -15,6 +15,7 @@ pub mod track;
 mod trip;
 mod wrap_run;
 
+pub use crate::numerics::work::Work;
 pub use design_checks::DesignResult;
 pub use trip::ROPE_DYNAMICS_CHECK;
 
@@ -265,6 +266,10 @@ pub struct RunResult {
     pub design: Option<DesignResult>,
     /// The run's wall time (ms).
     pub runtime_ms: f64,
+    /// The work the run computed, summed over its scenes, the starts they shared and the
+    /// design's load-case matrix. How the run was split (shared starts, a wrap run beside the
+    /// ropes, both depending on the cores free) changes it, not the results; not in summary.json.
+    pub work: Work,
 }
 
 impl RunResult {
@@ -323,7 +328,7 @@ pub fn run_with_progress(
         let seconds = e.seconds;
         let context = SceneContext { parallel_sides, prefix, wrap };
         let (result, kept) = match run_scene(design, scenes[i], options, context) {
-            Ok((r, kept)) => (Ok(SceneResult { cost: Some(e), ..r }), kept),
+            Ok((r, kept, work)) => (Ok((SceneResult { cost: Some(e), ..r }, work)), kept),
             Err(e) => (Err(e), Vec::new()),
         };
         failed.fetch_or(result.is_err(), Ordering::Relaxed);
@@ -337,21 +342,24 @@ pub fn run_with_progress(
     } else {
         speed::share::groups(design, scenes, options)
     };
-    let mut done = if groups.is_empty() {
+    let (mut done, shared) = if groups.is_empty() {
         let mut queue: Vec<(usize, Estimate)> = estimates.into_iter().enumerate().collect();
         queue.sort_by(|a, b| b.1.typical_seconds.total_cmp(&a.1.typical_seconds));
-        queue
+        let done = queue
             .into_iter()
             .par_bridge()
             .filter(|_| !failed.load(Ordering::Relaxed))
             .map(|(i, e)| one(i, e, None, WrapShare::default()).0)
-            .collect()
+            .collect();
+        (done, Work::default())
     } else {
         run_shared(&groups, estimates, &failed, &one)
     };
     done.sort_by_key(|(i, _)| *i);
-    let scenes = done.into_iter().map(|(_, r)| r).collect::<Result<Vec<_>, _>>()?;
-    Ok(RunResult { scenes, design: None, runtime_ms: start.elapsed().as_secs_f64() * 1e3 })
+    let (scenes, works): (Vec<SceneResult>, Vec<Work>) =
+        done.into_iter().map(|(_, r)| r).collect::<Result<Vec<_>, _>>()?.into_iter().unzip();
+    let work = shared + works.into_iter().sum();
+    Ok(RunResult { scenes, design: None, runtime_ms: start.elapsed().as_secs_f64() * 1e3, work })
 }
 
 /// [`run`], then the design as a whole: the load-case matrix of `[load_cases]` (with its level-4
@@ -374,7 +382,9 @@ pub fn run_all_with_progress(
         options.request,
         plan::Request::ChecksOnly | plan::Request::Full { forced_level: Some(Level::Closed0) }
     );
-    result.design = Some(design_checks::evaluate(design, &result.scenes, rope_dynamics)?);
+    let checks = design_checks::evaluate(design, &result.scenes, rope_dynamics)?;
+    result.work += Work::increments(checks.matrix.as_ref().map_or(0, |m| m.rope_dynamics_steps));
+    result.design = Some(checks);
     result.runtime_ms = start.elapsed().as_secs_f64() * 1e3;
     Ok(result)
 }
@@ -392,30 +402,35 @@ struct SceneContext<'a> {
     wrap: WrapShare<'a>,
 }
 
-/// Runs one scene; returns with it the wrap's states it kept for other scenes.
+/// Runs one scene; returns with it the wrap's states it kept for other scenes and the work it
+/// computed.
 fn run_scene(
     design: &Design,
     scene: &Scene,
     options: Options,
     context: SceneContext,
-) -> Result<(SceneResult, Kept), RunError> {
+) -> Result<(SceneResult, Kept, Work), RunError> {
     let start = Instant::now();
     let plan = plan::plan_with_lining(scene, options.request, design.lining.is_some())?;
     let spare_core = context.parallel_sides;
-    let (mut result, ropes, kept) = match &scene.kind {
-        SceneKind::Loads(loads) => (run_loads(design, scene, loads, plan, options)?, None, Vec::new()),
+    let (mut result, ropes, kept, mut work) = match &scene.kind {
+        SceneKind::Loads(loads) => {
+            let (result, work) = run_loads(design, scene, loads, plan, options)?;
+            (result, None, Vec::new(), work)
+        }
         SceneKind::History(history) => {
-            (run_history_scene(design, scene, history, plan, options, spare_core)?, None, Vec::new())
+            let (result, work) = run_history_scene(design, scene, history, plan, options, spare_core)?;
+            (result, None, Vec::new(), work)
         }
         SceneKind::DutyCycle(cycle) => {
             let run = run_duty_cycle(design, scene, cycle, plan, options, context)?;
-            (run.result, run.ropes, run.kept)
+            (run.result, run.ropes, run.kept, run.work)
         }
     };
-    derive_answers(design, scene, &mut result, ropes)?;
+    work += derive_answers(design, scene, &mut result, ropes)?;
     result.runtime_ms = start.elapsed().as_secs_f64() * 1e3;
     ensure_finite(&result)?;
-    Ok((result, kept))
+    Ok((result, kept, work))
 }
 
 fn empty(scene: &Scene, plan: Plan, classical: Classical) -> SceneResult {

@@ -5,7 +5,7 @@
 use super::speed::pipelined;
 use super::trip::{self, Trip};
 use super::wrap_run::{Initial, Kept, Model, ModelRun, WrapShare, rolling_initial, run_model, wrap_model};
-use super::{HistoryOutput, Options, RunError, SceneContext, SceneResult, WrapResult, empty};
+use super::{HistoryOutput, Options, RunError, SceneContext, SceneResult, Work, WrapResult, empty};
 use crate::check;
 use crate::design::{Design, Direction, DutyCycleScene, HistorySample, HistoryScene, Hoist, Scene};
 use crate::dynamics::Kinematics;
@@ -20,7 +20,8 @@ use crate::plan::{Level, Plan};
 pub const SKIPPED_TRACKS: &str = "; skipped: track_* (rope elements followed through the wrap need the wrap \
                                   model, level 2 or more; `run` without --level 0 follows them)";
 
-/// A history scene; with `spare_core` its rows' summaries may run on another thread.
+/// A history scene, and the work it computed (the wrap's increments); with `spare_core` its
+/// rows' summaries may run on another thread.
 pub(super) fn run_history_scene(
     design: &Design,
     scene: &Scene,
@@ -28,7 +29,7 @@ pub(super) fn run_history_scene(
     plan: Plan,
     options: Options,
     spare_core: bool,
-) -> Result<SceneResult, RunError> {
+) -> Result<(SceneResult, Work), RunError> {
     let output = history::Output {
         snapshots_s: &history.snapshots_s,
         step_s: history.output_step_s,
@@ -52,7 +53,7 @@ pub(super) fn run_history_scene(
         share: WrapShare::default(),
         centrifugal_max_n: None,
     };
-    run_samples(design, scene, input, plan, options).map(|(result, _)| result)
+    run_samples(design, scene, input, plan, options).map(|run| (run.result, run.work))
 }
 
 /// A duty cycle: the suspended ropes give the end tensions, which then run as a history. The
@@ -104,6 +105,9 @@ pub(super) fn run_duty_cycle(
     let ropes_len = dynamics.as_ref().map_or(0, |(r, _)| r.samples.len());
     let centrifugal_max_n = centrifugal_max_n(design, hoist, cycle, &trip.samples);
     let made_beside = unconfirmed.zip(centrifugal_max_n).and_then(|(u, c)| u.confirmed(&trip.samples, ropes_len, c));
+    // The ropes' steps, and a wrap run beside them that the whole trip confirmed.
+    let ropes_steps = dynamics.as_ref().map_or(0, |(r, _)| r.steps);
+    let mut work = Work { increments: ropes_steps, wraps_beside: u64::from(made_beside.is_some()) };
     let input = Samples {
         samples: &trip.samples,
         accel_m_s2: Some(&accel),
@@ -116,7 +120,8 @@ pub(super) fn run_duty_cycle(
         share: context.wrap,
         centrifugal_max_n,
     };
-    let (mut result, kept) = run_samples(design, scene, input, plan, options)?;
+    let Sampled { mut result, kept, work: wrap } = run_samples(design, scene, input, plan, options)?;
+    work += wrap;
     if let Some((ropes, rigid)) = &dynamics {
         let dynamics = &ropes.samples;
         let code = trip::code_classical(design, rigid);
@@ -137,15 +142,25 @@ pub(super) fn run_duty_cycle(
     if let Some(set) = &design.ropes {
         super::ropes::share(design, set, &mut result, (&trip.samples, &trip.kinematics), &params, cycle.output_step_s)?;
     }
-    Ok(DutyCycleRun { result, ropes: dynamics.map(|(ropes, _)| ropes), kept })
+    Ok(DutyCycleRun { result, ropes: dynamics.map(|(ropes, _)| ropes), kept, work })
 }
 
-/// A duty cycle's result, its suspended ropes' run (the emergency margins continue from it)
-/// and the wrap's states kept for other scenes ([`WrapShare::keep`]).
+/// A duty cycle's result, its suspended ropes' run (the emergency margins continue from it),
+/// the wrap's states kept for other scenes ([`WrapShare::keep`]) and the work computed (the
+/// ropes' steps, the wrap's increments, the wrap run beside the ropes if kept).
 pub(super) struct DutyCycleRun {
     pub result: SceneResult,
     pub ropes: Option<RopeRun>,
     pub kept: Kept,
+    pub work: Work,
+}
+
+/// A time scene's result, the wrap's states kept for other scenes and the wrap's increments
+/// computed ([`run_samples`]).
+struct Sampled {
+    result: SceneResult,
+    kept: Kept,
+    work: Work,
 }
 
 /// The suspended ropes of a level-4 duty cycle, with the wrap's run beside them where it can be
@@ -246,14 +261,15 @@ fn centrifugal_max_n(design: &Design, hoist: &Hoist, cycle: &DutyCycleScene, sam
 
 /// A scene given as end tensions and speed over time (history and duty-cycle scenes): level 0
 /// over every sample, then (level ≥ 2) the discrete model through them; with the wrap's state
-/// kept for other scenes, as asked for and made.
+/// kept for other scenes, as asked for and made, and the wrap's increments (of the run kept,
+/// made here or beside the ropes; those taken over from another scene's wrap not again).
 fn run_samples(
     design: &Design,
     scene: &Scene,
     input: Samples,
     plan: Plan,
     options: Options,
-) -> Result<(SceneResult, Kept), RunError> {
+) -> Result<Sampled, RunError> {
     let Samples {
         samples,
         accel_m_s2,
@@ -280,7 +296,7 @@ fn run_samples(
             // (which need the wrap model) are left out and the reason says so.
             result.plan.reason.push_str(SKIPPED_TRACKS);
         }
-        return Ok((result, Vec::new()));
+        return Ok(Sampled { result, kept: Vec::new(), work: Work::default() });
     }
     let first = states[0].1;
     // Uniform rope when the history starts balanced, else the steady rolling state of its first loads.
@@ -302,14 +318,14 @@ fn run_samples(
         }
     };
     let ModelRun { run, level3, kept, reused_increments } = done;
-    crate::numerics::work_tally::add_increments(run.stats.increments - reused_increments);
+    let work = Work::increments(run.stats.increments - reused_increments);
     result.level3 = level3;
     take_run(design, &mut result, run, options);
     if let (Some(tracks), Some(model)) = (&scene.tracks, for_tracks) {
         let out = super::track::run(design, scene, tracks, samples, model, travel, side1_length_m)?;
         result.tracks = Some(out);
     }
-    Ok((result, kept))
+    Ok(Sampled { result, kept, work })
 }
 
 /// Each sample's end state with its acceleration: the given one, else the slope of the speed to

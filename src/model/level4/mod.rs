@@ -19,11 +19,12 @@ pub use slack::{SlackRope, first_slack, slack_advice};
 use crate::design::{Design, Direction, DutyCycleScene, EmergencyStop, HistorySample, Hoist};
 use crate::dynamics::{
     self, AT_REST_M_S, Checkpoint, DynSample, DynamicsError, HoistParams, Kinematics, MotionProfile, SimOptions,
+    Streamed,
 };
 use crate::model::braking::{self, BrakeError};
 use crate::plan::Level;
 use shared::{RopePlan, RopePrefix};
-use std::cell::RefCell;
+use std::cell::{Cell, RefCell};
 
 /// Name of the dynamic safety factor with the suspended ropes' dynamics (level 4).
 pub const ROPE_DYNAMICS_CHECK: &str = "dynamic safety factor with rope dynamics (level 4)";
@@ -120,6 +121,9 @@ pub struct RopeRun {
     /// The samples, one every [`WRAP_SAMPLE_S`].
     pub samples: Vec<DynSample>,
     at_brake: Option<Checkpoint>,
+    /// Time steps of the suspended ropes this run integrated (not those of a shared start it
+    /// continued from).
+    pub steps: u64,
 }
 
 /// [`suspended_ropes`], keeping the state at the brake of an imposed emergency stop. With
@@ -148,13 +152,13 @@ pub fn scene_ropes_from(
         let params = hoist_params(design, hoist, scene);
         let stages = trip_stages(hoist, scene.direction, scene.return_after_s);
         let trip = stop::BrakedTrip { stages: &stages, trips_s: &[at_s], time_step_s: scene.time_step_s, from: prefix };
-        let mut trips = stop::braked_ropes(design, &params, trip, &brake)?;
-        return Ok(RopeRun { samples: trips.pop().unwrap_or_default(), at_brake: None });
+        let mut run = stop::braked_ropes(design, &params, trip, &brake)?;
+        return Ok(RopeRun { samples: run.trips.pop().unwrap_or_default(), at_brake: None, steps: run.steps });
     }
     let keep_at_s = scene.emergency.map(|stop| stop.at_s);
     let from = prefix.map(RopePrefix::checkpoint);
-    let (samples, at_brake) = resumable_ropes(design, hoist, scene, from, keep_at_s, parallel_sides, &mut |_| {})?;
-    Ok(RopeRun { samples: after_prefix(design, prefix, samples), at_brake })
+    let run = resumable_ropes(design, hoist, scene, from, keep_at_s, parallel_sides, &mut |_| {})?;
+    Ok(RopeRun { samples: after_prefix(design, prefix, run.samples), at_brake: run.checkpoint, steps: run.steps })
 }
 
 /// The samples of a run continued from `prefix` (guided, from the checkpoint on) after those of
@@ -192,12 +196,13 @@ pub fn scene_ropes_streamed(
         sink(&chunk);
     };
     let keep_at_s = scene.emergency.map(|stop| stop.at_s);
-    let (samples, at_brake) = resumable_ropes(design, hoist, scene, None, keep_at_s, false, &mut guided)?;
-    Ok(RopeRun { samples, at_brake })
+    let run = resumable_ropes(design, hoist, scene, None, keep_at_s, false, &mut guided)?;
+    Ok(RopeRun { samples: run.samples, at_brake: run.checkpoint, steps: run.steps })
 }
 
 /// [`suspended_ropes`] from a checkpoint and/or keeping one, handing the raw samples to `sink`
-/// as they are made ([`dynamics::simulate_streamed`]).
+/// as they are made ([`dynamics::simulate_streamed`]); the samples returned have the guide
+/// sheave's inertia added.
 fn resumable_ropes(
     design: &Design,
     hoist: &Hoist,
@@ -206,12 +211,12 @@ fn resumable_ropes(
     keep_at_s: Option<f64>,
     parallel_sides: bool,
     sink: &mut dyn FnMut(&[DynSample]),
-) -> Result<(Vec<DynSample>, Option<Checkpoint>), Level4Error> {
+) -> Result<Streamed, Level4Error> {
     let RopePlan { params, profile, options } = RopePlan::of(design, hoist, scene)?;
     let options = SimOptions { parallel_sides, ..options };
-    let (mut samples, cp) = dynamics::simulate_streamed(&params, &profile, &options, from, keep_at_s, sink)?;
-    stop::with_guide(design, &mut samples);
-    Ok((samples, cp))
+    let mut run = dynamics::simulate_streamed(&params, &profile, &options, from, keep_at_s, sink)?;
+    stop::with_guide(design, &mut run.samples);
+    Ok(run)
 }
 
 /// The end tensions of the classical design check (level 0 of a duty cycle): rigid ropes, so
@@ -316,6 +321,8 @@ pub struct StopTrials<'a> {
     /// the margins' searches ask for some decelerations more than once (the ends of their
     /// ranges, shared by both searches), and each run is made once.
     runs: RefCell<Vec<(u64, Option<Vec<DynSample>>)>>,
+    /// Time steps of the suspended ropes the trials made so far integrated.
+    steps: Cell<u64>,
 }
 
 impl<'a> StopTrials<'a> {
@@ -333,7 +340,14 @@ impl<'a> StopTrials<'a> {
         let t = checkpoint.t_s();
         let own: Vec<DynSample> = run.samples.iter().filter(|s| s.t_s > t).copied().collect();
         let runs = RefCell::new(vec![(stop.decel_m_s2.to_bits(), Some(own))]);
-        Some(Self { design, hoist, scene, stop, before: run.samples, checkpoint, runs })
+        Some(Self { design, hoist, scene, stop, before: run.samples, checkpoint, runs, steps: Cell::new(0) })
+    }
+
+    /// Time steps of the suspended ropes the trials made so far integrated, each from the
+    /// checkpoint at the brake (the run the trials start from, and the scene's own deceleration,
+    /// are not counted: that run counted them).
+    pub fn steps(&self) -> u64 {
+        self.steps.get()
     }
 
     /// The scene's own emergency deceleration (m/s²).
@@ -365,7 +379,8 @@ impl<'a> StopTrials<'a> {
                 let trial = DutyCycleScene { emergency, ..self.scene.clone() };
                 let run =
                     resumable_ropes(self.design, self.hoist, &trial, Some(&self.checkpoint), None, false, &mut |_| {});
-                runs.push((key, run.ok().map(|(samples, _)| samples)));
+                self.steps.set(self.steps.get() + run.as_ref().map_or(0, |run| run.steps));
+                runs.push((key, run.ok().map(|run| run.samples)));
                 runs.len() - 1
             }
         };

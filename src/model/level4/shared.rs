@@ -89,12 +89,14 @@ impl RopePrefix {
 
 /// Integrates `runner`'s ropes up to the last of `fork_steps` once and returns, for each fork
 /// step in the order given, the start of the trip a scene forking there continues from (`None`
-/// for a step at or beyond the runner's last, which no scene shares).
-pub fn prefixes(runner: &RopePlan, fork_steps: &[usize]) -> Result<Vec<Option<RopePrefix>>, Level4Error> {
+/// for a step at or beyond the runner's last, which no scene shares), and the time steps
+/// integrated (the shared start's work, which no scene's own run counts).
+pub fn prefixes(runner: &RopePlan, fork_steps: &[usize]) -> Result<(Vec<Option<RopePrefix>>, u64), Level4Error> {
     let mut keep: Vec<usize> = fork_steps.to_vec();
     keep.sort_unstable();
     keep.dedup();
-    let (samples, checkpoints) = dynamics::simulate_prefix(&runner.params, &runner.profile, &runner.options, &keep)?;
+    let dynamics::Prefix { samples, checkpoints, steps } =
+        dynamics::simulate_prefix(&runner.params, &runner.profile, &runner.options, &keep)?;
     let samples = Arc::new(samples);
     let every = runner.options.record_every.max(1);
     let prefix = |k: usize| {
@@ -103,5 +105,5 @@ pub fn prefixes(runner: &RopePlan, fork_steps: &[usize]) -> Result<Vec<Option<Ro
         let recorded = samples.get(len - 1).is_some_and(|s| s.t_s == checkpoint.t_s());
         recorded.then(|| RopePrefix { samples: Arc::clone(&samples), len, checkpoint })
     };
-    Ok(fork_steps.iter().map(|&k| prefix(k)).collect())
+    Ok((fork_steps.iter().map(|&k| prefix(k)).collect(), steps))
 }

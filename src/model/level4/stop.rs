@@ -90,17 +90,29 @@ pub struct BrakedTrip<'a> {
     pub from: Option<&'a RopePrefix>,
 }
 
+/// The runs of [`braked_ropes`]: per trip, the samples from the start to standstill, and the
+/// suspended ropes' time steps integrated up to the trips (their work; the stops with the pulley
+/// as a body are not counted).
+#[derive(Debug, Clone, Default)]
+pub struct BrakedRopes {
+    /// Per trip, the samples from the start to standstill, tensions at the friction pulley
+    /// (guide sheave included).
+    pub trips: Vec<Vec<DynSample>>,
+    /// Time steps of the suspended ropes integrated (not those of a shared start continued from).
+    pub steps: u64,
+}
+
 /// The level-4 samples of a trip whose brake trips at each of `trip.trips_s`: the suspended
 /// ropes over the profile up to each trip (one run, continued from trip to trip, and from
 /// `trip.from` when given), then each stop with the pulley as a body
 /// ([`dynamics::braked_stop`]). Returns, per trip, the samples from the start to standstill,
-/// tensions at the friction pulley (guide sheave included).
+/// tensions at the friction pulley (guide sheave included), and the steps integrated.
 pub fn braked_ropes(
     design: &Design,
     params: &HoistParams,
     trip: BrakedTrip,
     brake: &Brake,
-) -> Result<Vec<Vec<DynSample>>, Level4Error> {
+) -> Result<BrakedRopes, Level4Error> {
     let BrakedTrip { stages, trips_s, time_step_s, from } = trip;
     let record_every = ((WRAP_SAMPLE_S / time_step_s).round() as usize).max(1);
     let options = SimOptions { record_every, energy: false, ..SimOptions::new(time_step_s, ELEMENTS_PER_SIDE) };
@@ -111,13 +123,21 @@ pub fn braked_ropes(
         brake_force_n: &force,
         max_stop_s: braking::MAX_STOP_S,
     };
-    let mut out = Vec::with_capacity(trips_s.len());
+    let mut out = BrakedRopes { trips: Vec::with_capacity(trips_s.len()), steps: 0 };
     let mut before: Vec<DynSample> = from.map(|p| p.samples().to_vec()).unwrap_or_default();
     let mut checkpoint = from.map(|p| p.checkpoint().clone());
     for &at_s in trips_s {
         let profile = profile_until(stages, at_s)?;
-        let (samples, cp) =
-            dynamics::simulate_resumable(params, &profile, &options, checkpoint.as_ref(), Some(f64::INFINITY))?;
+        let run = dynamics::simulate_streamed(
+            params,
+            &profile,
+            &options,
+            checkpoint.as_ref(),
+            Some(f64::INFINITY),
+            &mut |_| {},
+        )?;
+        out.steps += run.steps;
+        let (samples, cp) = (run.samples, run.checkpoint);
         let cp = cp.ok_or(Level4Error::EmergencyAtRest { at_s })?;
         // The samples of a continued run start at its checkpoint, which the previous run (or
         // the shared start) ended with; a run that started afresh replaces those.
@@ -132,7 +152,7 @@ pub fn braked_ropes(
             s
         }));
         with_guide(design, &mut trip);
-        out.push(trip);
+        out.trips.push(trip);
         checkpoint = Some(cp);
     }
     Ok(out)

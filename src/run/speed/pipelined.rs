@@ -60,11 +60,7 @@ impl Unconfirmed {
     pub fn confirmed(self, samples: &[HistorySample], ropes_len: usize, centrifugal_max_n: f64) -> Option<HistoryRun> {
         let spacing = lattice::spacing_n(samples, centrifugal_max_n, &Numerics::default());
         let whole = samples.len() == ropes_len && self.fed == samples.len();
-        let kept = self.wrap.filter(|_| whole && spacing == self.centrifugal_step_n);
-        if kept.is_some() {
-            crate::numerics::work_tally::add_wrap_beside();
-        }
-        kept
+        self.wrap.filter(|_| whole && spacing == self.centrifugal_step_n)
     }
 }
 

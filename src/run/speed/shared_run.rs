@@ -6,12 +6,12 @@ use super::{schedule, share};
 use crate::model::level4::{self, shared::RopePrefix};
 use crate::plan::cost::Estimate;
 use crate::run::wrap_run::{Kept, WrapCheckpoint, WrapKeep, WrapShare};
-use crate::run::{RunError, SceneResult};
+use crate::run::{RunError, SceneResult, Work};
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicBool, Ordering};
 
-/// A scene's result with its index among the run's scenes.
-pub(in crate::run) type Done = (usize, Result<SceneResult, RunError>);
+/// A scene's result and the work it computed, with its index among the run's scenes.
+pub(in crate::run) type Done = (usize, Result<(SceneResult, Work), RunError>);
 
 /// A scene run with the wrap's states it kept for others.
 pub(in crate::run) type OneScene<'a> =
@@ -20,13 +20,14 @@ pub(in crate::run) type OneScene<'a> =
 /// The scenes of a run with `groups` sharing the start of their trip: each group's start is a
 /// task that makes its scenes ready when done ([`schedule`]), but those whose wrap goes on from
 /// another's, which that one makes ready when done with the state it kept for them; a scene
-/// starts only while none has failed.
+/// starts only while none has failed. Returns the scenes' results and the work of the shared
+/// starts (which no scene's own work counts).
 pub(in crate::run) fn run_shared(
     groups: &[share::Group],
     estimates: Vec<Estimate>,
     failed: &AtomicBool,
     one: &OneScene,
-) -> Vec<Done> {
+) -> (Vec<Done>, Work) {
     let grouped: Vec<usize> = groups.iter().flat_map(|g| g.members.iter().map(|m| m.index)).collect();
     let mut initial: Vec<(f64, Task)> = (0..groups.len()).map(|g| (f64::INFINITY, Task::Start(g))).collect();
     initial.extend((0..estimates.len()).filter(|i| !grouped.contains(i)).map(|i| {
@@ -34,9 +35,12 @@ pub(in crate::run) fn run_shared(
         (estimates[i].typical_seconds, Task::Scene(Box::new(task)))
     }));
     let done = Mutex::new(Vec::with_capacity(estimates.len()));
+    let starts = Mutex::new(Work::default());
     schedule::run(initial, rayon::current_num_threads(), |task, push| match task {
         Task::Start(g) => {
-            for (priority, task) in start_tasks(&groups[g], &estimates, failed) {
+            let (tasks, work) = start_tasks(&groups[g], &estimates, failed);
+            *starts.lock().unwrap_or_else(|poisoned| poisoned.into_inner()) += work;
+            for (priority, task) in tasks {
                 push(priority, task);
             }
         }
@@ -55,7 +59,8 @@ pub(in crate::run) fn run_shared(
             }
         }
     });
-    done.into_inner().unwrap_or_else(|poisoned| poisoned.into_inner())
+    let starts = starts.into_inner().unwrap_or_else(|poisoned| poisoned.into_inner());
+    (done.into_inner().unwrap_or_else(|poisoned| poisoned.into_inner()), starts)
 }
 
 /// A scene with its ropes' start, the wrap's state it goes on from, and the scenes whose wrap
@@ -75,14 +80,15 @@ enum Task {
 }
 
 /// A group's shared start integrated: its members' scenes as tasks with their priorities, each
-/// with its ropes' start (none when the start cannot be integrated, or after a failure).
-fn start_tasks(group: &share::Group, estimates: &[Estimate], failed: &AtomicBool) -> Vec<(f64, Task)> {
+/// with its ropes' start (none when the start cannot be integrated, or after a failure), and
+/// the work of integrating it.
+fn start_tasks(group: &share::Group, estimates: &[Estimate], failed: &AtomicBool) -> (Vec<(f64, Task)>, Work) {
     let mut out = Vec::new();
     let forks: Vec<usize> = group.members.iter().map(|m| m.fork_step).collect();
     // A start that cannot be integrated leaves each scene to run (and fail) on its own;
     // after a failure, when no scene starts, it is not integrated.
-    let prefixes = if failed.load(Ordering::Relaxed) {
-        Vec::new()
+    let (prefixes, steps) = if failed.load(Ordering::Relaxed) {
+        (Vec::new(), 0)
     } else {
         level4::shared::prefixes(&group.leader, &forks).unwrap_or_default()
     };
@@ -111,5 +117,5 @@ fn start_tasks(group: &share::Group, estimates: &[Estimate], failed: &AtomicBool
         let task = SceneTask { index: i, prefix: prefix_of(i), from: None, then, keep };
         out.push((remaining(i) + waiting, Task::Scene(Box::new(task))));
     }
-    out
+    (out, Work::increments(steps))
 }
