@@ -176,12 +176,17 @@ impl RuleLimit {
     }
 }
 
-/// Every bundled rule set, in the order of their ids.
-pub fn bundled() -> Vec<RuleSet> {
+/// The bundled rule sets, read once per process (a sweep validates a sheet at every point).
+static BUNDLED_SETS: std::sync::LazyLock<Vec<RuleSet>> = std::sync::LazyLock::new(|| {
     BUNDLED
         .iter()
         .map(|(id, text)| RuleSet::from_toml(text).unwrap_or_else(|e| panic!("bundled rule set {id} is invalid: {e}")))
         .collect()
+});
+
+/// Every bundled rule set, in the order of their ids.
+pub fn bundled() -> Vec<RuleSet> {
+    BUNDLED_SETS.clone()
 }
 
 /// The ids of the bundled rule sets.
@@ -191,5 +196,5 @@ pub fn ids() -> Vec<&'static str> {
 
 /// The bundled rule set `id`.
 pub fn find(id: &str) -> Option<RuleSet> {
-    bundled().into_iter().find(|s| s.id == id)
+    BUNDLED_SETS.iter().find(|s| s.id == id).cloned()
 }

@@ -38,21 +38,28 @@ struct SignRun {
     end_tension: Option<TensionAt>,
 }
 
-/// A tension known lazily: a piece to evaluate at an angle, or a value. A run's end is known
-/// only when the next run starts, so the piece is kept and evaluated only for the runs'
-/// ends, two per run, not for every stretch.
+/// A tension known lazily: a piece to evaluate at an angle, a piece of the summarized state by
+/// its index (evaluated by the caller's [`HeldTension`]), or a value. A run's end is known only
+/// when the next run starts, so the piece is kept and evaluated only for the runs' ends, two
+/// per run, and only where there are two demarcations or more to choose from.
 #[derive(Debug, Clone, Copy)]
 pub enum TensionAt {
     /// The piece's tension at the angle (rad).
     Piece(Piece, f64),
+    /// The tension of the state's piece `.0` at the angle `.1` (rad).
+    Held(usize, f64),
     /// A tension (N).
     Value(f64),
 }
 
+/// The tension of the summarized state's piece `i` at θ (rad), for [`TensionAt::Held`].
+pub type HeldTension<'h> = &'h dyn Fn(usize, f64) -> f64;
+
 impl TensionAt {
-    fn value(self) -> f64 {
+    fn value(self, held: Option<HeldTension>) -> f64 {
         match self {
             Self::Piece(p, theta) => p.tension_n(theta),
+            Self::Held(i, theta) => held.expect("held tensions are resolved by their summary")(i, theta),
             Self::Value(t) => t,
         }
     }
@@ -73,6 +80,11 @@ pub struct Demarcation {
 }
 
 impl ArcTally {
+    /// An empty tally with room for a few runs (most wraps hold a handful).
+    pub fn new() -> Self {
+        Self { runs: Vec::with_capacity(8), ..Self::default() }
+    }
+
     /// Adds the stretch [start, end] where friction has the sign of `positive` and is
     /// `above` the arc threshold (0.001 μn) or not; the demarcations are weighed by the runs'
     /// measures.
@@ -82,9 +94,17 @@ impl ArcTally {
 
     /// [`Self::add`] of a stretch of `piece`: the demarcations are weighed by the friction the
     /// runs beside them hold, the tension change over each.
+    #[inline]
     pub fn add_piece(&mut self, start: f64, end: f64, above: bool, positive: bool, piece: &Piece) {
         let ends = (TensionAt::Piece(*piece, start), TensionAt::Piece(*piece, end));
         self.add_with(start, end, above, positive, Some(ends));
+    }
+
+    /// [`Self::add`] of a stretch of the state's piece `i` (resolved by
+    /// [`Self::demarcations_held`]).
+    #[inline]
+    pub fn add_held(&mut self, start: f64, end: f64, above: bool, positive: bool, i: usize) {
+        self.add_with(start, end, above, positive, Some((TensionAt::Held(i, start), TensionAt::Held(i, end))));
     }
 
     /// [`Self::add`] with the tensions at the stretch's ends (N), as [`Self::add_piece`].
@@ -93,6 +113,7 @@ impl ArcTally {
         self.add_with(start, end, above, positive, Some(ends));
     }
 
+    #[inline(always)]
     fn add_with(&mut self, start: f64, end: f64, above: bool, positive: bool, ends: Option<(TensionAt, TensionAt)>) {
         if end <= start {
             return;
@@ -125,24 +146,58 @@ impl ArcTally {
         }
     }
 
-    /// Every demarcation, in θ order: each positive run that a reverse run follows.
+    /// Each positive run with the reverse run that follows it, in θ order.
+    fn demarcation_pairs(&self) -> impl Iterator<Item = (&SignRun, &SignRun)> {
+        self.runs.windows(2).map(|w| (&w[0], &w[1])).filter(|(p, r)| p.positive && !r.positive)
+    }
+
+    /// Every demarcation, in θ order: each positive run that a reverse run follows. Their
+    /// weights are worked out only where there is a choice, two or more (a lone demarcation
+    /// weighs 0): the tensions at the runs' ends cost an exponential each.
     pub fn demarcations(&self) -> Vec<Demarcation> {
-        let held = |r: &SignRun| match (r.start_tension, r.end_tension) {
-            (Some(a), Some(b)) => Some((b.value() - a.value()).abs()),
-            _ => None,
-        };
-        self.runs
-            .windows(2)
-            .filter(|w| w[0].positive && !w[1].positive)
-            .map(|w| Demarcation {
-                at_rad: w[0].end_rad,
-                gap_end_rad: w[1].start_rad,
-                weight: match (held(&w[0]), held(&w[1])) {
+        self.demarcations_held(None)
+    }
+
+    /// [`Self::demarcations`] of a tally whose stretches were added by [`Self::add_held`]:
+    /// `tension` evaluates the state's pieces.
+    pub fn demarcations_held(&self, tension: Option<HeldTension>) -> Vec<Demarcation> {
+        let mut marks: Vec<Demarcation> = self
+            .demarcation_pairs()
+            .map(|(p, r)| Demarcation { at_rad: p.end_rad, gap_end_rad: r.start_rad, weight: 0.0 })
+            .collect();
+        if marks.len() > 1 {
+            // Where one run ends at the angle the next starts, the tension there is evaluated once
+            // (it is continuous): one evaluation per run boundary.
+            let mut last: Option<(f64, f64)> = None;
+            let mut at = |theta: f64, t: TensionAt| match last {
+                Some((th, v)) if th == theta => v,
+                _ => {
+                    let v = t.value(tension);
+                    last = Some((theta, v));
+                    v
+                }
+            };
+            let mut held = |r: &SignRun| match (r.start_tension, r.end_tension) {
+                (Some(a), Some(b)) => {
+                    // In θ order, so that a run's end is the next one's start.
+                    let start = at(r.start_rad, a);
+                    Some((at(r.end_rad, b) - start).abs())
+                }
+                _ => None,
+            };
+            for (d, (p, r)) in marks.iter_mut().zip(self.demarcation_pairs()) {
+                d.weight = match (held(p), held(r)) {
                     (Some(a), Some(b)) => a + b,
-                    _ => w[0].measure_rad + w[1].measure_rad,
-                },
-            })
-            .collect()
+                    _ => p.measure_rad + r.measure_rad,
+                };
+            }
+        }
+        marks
+    }
+
+    /// The principal one of `demarcations` (of this wrap, made by [`Self::demarcations`]).
+    pub fn principal_of(&self, demarcations: &[Demarcation]) -> Option<Demarcation> {
+        principal(demarcations, self.extent_rad)
     }
 
     /// Measure of the positive arc so far (rad).

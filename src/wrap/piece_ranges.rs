@@ -179,6 +179,17 @@ impl<'a, S: Screens> Held<'a, S> {
         &self.runs
     }
 
+    /// Piece `i` (in θ order), as held.
+    pub fn piece(&self, mut i: usize) -> &'a Piece {
+        for (pieces, _) in self.runs {
+            match pieces.get(i) {
+                Some(p) => return p,
+                None => i -= pieces.len(),
+            }
+        }
+        panic!("piece index beyond the held pieces")
+    }
+
     /// The friction coefficient the screens are for.
     pub fn mu(&self) -> f64 {
         self.mu

@@ -10,7 +10,7 @@
 //! evaluates only the pieces their screens do not decide (docs/physics.md §8, points of the
 //! distribution).
 
-use super::arcs::ArcTally;
+use super::arcs::{ArcTally, Demarcation, HeldTension};
 use crate::numerics::roots::{RootError, RootStats, bracketed};
 use crate::wrap::contact::{ARC_THRESHOLD, ContactLaw, NodeState, SLIP_UTILIZATION};
 use crate::wrap::piece_ranges::{Held, Screen, Screens, Side};
@@ -160,8 +160,8 @@ pub fn summarize_pieces(
 ) -> Result<WrapSummary, RootError> {
     let mut gather = Gather::new(zones);
     for piece in pieces {
-        if !gather.exponential(&piece, law) {
-            gather.evaluate(&piece, law, Evaluate { peak: true, arc: true, slip: true })?;
+        if !gather.exponential(&piece, law, None) {
+            gather.evaluate(&piece, law, Evaluate { peak: true, arc: true, slip: true }, None)?;
         }
     }
     Ok(gather.summary())
@@ -222,7 +222,7 @@ pub fn summarize_screened<S: Screens>(
             .map(|(i, (p, s))| (s.utilization_bound(mu, c), i, p))
             .max_by(|a, b| a.0.total_cmp(&b.0));
         if let Some((_, i, p)) = top {
-            gather.evaluate(&carried.piece(p, i), law, Evaluate { peak: true, arc: false, slip: false })?;
+            gather.evaluate(&carried.piece(p, i), law, Evaluate { peak: true, arc: false, slip: false }, Some(i))?;
         }
     }
     let mut i = 0;
@@ -235,7 +235,8 @@ pub fn summarize_screened<S: Screens>(
             i += 1;
         }
     }
-    Ok(gather.summary())
+    let tension = |i: usize, theta: f64| carried.piece(held.piece(i), i).tension_n(theta);
+    Ok(gather.summary_held(Some(&tension)))
 }
 
 /// The utilization `|k|/μ` (at most 1) of an exponential of the contact force of rate `k`.
@@ -274,7 +275,7 @@ impl Gather {
         Self {
             roots: RootStats::default(),
             states: ZoneRuns::default(),
-            arcs: ArcTally::default(),
+            arcs: ArcTally::new(),
             max_utilization: 0.0,
             zones,
         }
@@ -282,12 +283,12 @@ impl Gather {
 
     /// Adds a piece that is an exponential of the contact force itself (u = |k|/μ on the whole
     /// piece) and returns true; false for any other piece.
-    fn exponential(&mut self, piece: &Piece, law: &ContactLaw) -> bool {
+    fn exponential(&mut self, piece: &Piece, law: &ContactLaw, index: Option<usize>) -> bool {
         let Some((_, rate)) = piece.contact_exponential(law.centrifugal_n) else { return false };
         let positive = piece.friction_positive();
         let u = contact_utilization(rate, law.mu);
         self.max_utilization = self.max_utilization.max(u);
-        self.arcs.add_piece(piece.theta0_rad, piece.theta1_rad, u >= ARC_THRESHOLD, positive, piece);
+        self.add_arc((piece.theta0_rad, piece.theta1_rad), u >= ARC_THRESHOLD, positive, (piece, index));
         if self.zones {
             self.states.push(piece.theta0_rad, piece.theta1_rad, state_of(u >= SLIP_UTILIZATION, positive));
         }
@@ -308,7 +309,7 @@ impl Gather {
         let (mu, c) = (law.mu, law.centrifugal_n);
         // Shifting a piece changes neither its shape nor the sign of its friction.
         if screen.contact_exponential(c) {
-            self.exponential(&carried.piece(p, i), law);
+            self.exponential(&carried.piece(p, i), law, Some(i));
             return Ok(());
         }
         let positive = screen.positive();
@@ -316,7 +317,7 @@ impl Gather {
         let arc = match screen.arc.side(c) {
             Side::Open => true,
             side => {
-                self.arcs.add_piece(a, b, side == Side::Above, positive, &carried.piece(p, i));
+                self.arcs.add_held(a, b, side == Side::Above, positive, i);
                 false
             }
         };
@@ -330,7 +331,7 @@ impl Gather {
             };
         let peak = !at_limit && screen.may_exceed(mu, c, self.max_utilization);
         if peak || arc || slip {
-            self.evaluate(&carried.piece(p, i), law, Evaluate { peak, arc, slip })?;
+            self.evaluate(&carried.piece(p, i), law, Evaluate { peak, arc, slip }, Some(i))?;
         }
         Ok(())
     }
@@ -338,7 +339,13 @@ impl Gather {
     /// Evaluates a piece part by part (each of monotone utilization): the peak at the parts'
     /// ends, and the stretches above and below the arc and slip thresholds (a root where a
     /// part's ends lie on both sides), as `what` asks.
-    fn evaluate(&mut self, piece: &Piece, law: &ContactLaw, what: Evaluate) -> Result<(), RootError> {
+    fn evaluate(
+        &mut self,
+        piece: &Piece,
+        law: &ContactLaw,
+        what: Evaluate,
+        index: Option<usize>,
+    ) -> Result<(), RootError> {
         // Friction keeps its sign over a piece.
         let positive = piece.friction_positive();
         for part in monotone_parts(*piece, law.centrifugal_n) {
@@ -348,7 +355,7 @@ impl Gather {
             }
             if what.arc {
                 for &(s, e, above) in split(&part, law, ends, ARC_THRESHOLD, &mut self.roots)?.parts() {
-                    self.arcs.add_piece(s, e, above, positive, &part);
+                    self.add_arc((s, e), above, positive, (&part, index));
                 }
             }
             if what.slip && self.zones {
@@ -360,8 +367,30 @@ impl Gather {
         Ok(())
     }
 
+    /// A stretch of the arcs, of `piece` or of the state's piece `index` where given (its
+    /// tension then evaluated only if needed, [`ArcTally::add_held`]).
+    #[inline(always)]
+    fn add_arc(
+        &mut self,
+        (start, end): (f64, f64),
+        above: bool,
+        positive: bool,
+        (piece, index): (&Piece, Option<usize>),
+    ) {
+        match index {
+            Some(i) => self.arcs.add_held(start, end, above, positive, i),
+            None => self.arcs.add_piece(start, end, above, positive, piece),
+        }
+    }
+
     fn summary(self) -> WrapSummary {
-        self.arcs.summary(self.max_utilization, self.states, self.roots)
+        self.summary_held(None)
+    }
+
+    /// The summary, the state's pieces evaluated by `tension` where stretches were added by index.
+    fn summary_held(self, tension: Option<HeldTension>) -> WrapSummary {
+        let marks = self.arcs.demarcations_held(tension);
+        self.arcs.summary_of(&marks, self.max_utilization, self.states, self.roots)
     }
 }
 
@@ -423,12 +452,24 @@ impl ArcTally {
     /// The summary of the tallied wrap: its arcs and JDP, the peak utilization (at most 1), the
     /// zones and the root finder's tally.
     pub fn summary(&self, max_utilization: f64, zones: ZoneRuns, roots: RootStats) -> WrapSummary {
+        self.summary_of(&self.demarcations(), max_utilization, zones, roots)
+    }
+
+    /// [`Self::summary`] with the demarcations given (made by [`ArcTally::demarcations`], their
+    /// points moved where a model places them more closely).
+    pub fn summary_of(
+        &self,
+        marks: &[Demarcation],
+        max_utilization: f64,
+        zones: ZoneRuns,
+        roots: RootStats,
+    ) -> WrapSummary {
         WrapSummary {
             positive_arc_rad: self.positive_rad(),
             reverse_arc_rad: self.reverse_rad(),
             idle_arc_rad: self.idle_rad(),
-            jdp_rad: self.jdp_rad(),
-            demarcations_rad: self.demarcations().iter().map(|d| d.at_rad).collect(),
+            jdp_rad: self.principal_of(marks).map(|d| d.at_rad),
+            demarcations_rad: marks.iter().map(|d| d.at_rad).collect(),
             max_utilization: max_utilization.min(1.0),
             zones: zones.into_zones(),
             roots,

@@ -7,7 +7,7 @@ use crate::model::history::{
     self, HistoryRun, HistorySample, Local, MAP_COLUMNS, Output, SolverReport, Wrap, WrapModel,
 };
 use crate::numerics::roots::{RootError, RootStats, brent};
-use crate::wrap::arcs::{ArcTally, principal};
+use crate::wrap::arcs::ArcTally;
 use crate::wrap::contact::{ARC_THRESHOLD, ContactLaw, SLIP_UTILIZATION};
 use crate::wrap::summary::{WrapSummary, ZoneRuns};
 use crate::wrap::{Distribution, Sample};
@@ -147,9 +147,7 @@ pub fn summarize(state: &State, mu: f64, zones: bool) -> Result<WrapSummary, Roo
     for d in &mut marks {
         d.at_rad = sign_change(state, segment(d.at_rad) - 1, segment(d.gap_end_rad), &mut roots)?;
     }
-    let jdp_rad = principal(&marks, state.wrap_angle_rad).map(|d| d.at_rad);
-    let demarcations_rad = marks.iter().map(|d| d.at_rad).collect();
-    Ok(WrapSummary { jdp_rad, demarcations_rad, ..arcs.summary(max_u, runs, roots) })
+    Ok(arcs.summary_of(&marks, max_u, runs, roots))
 }
 
 /// The first zero of the piecewise linear q(θ) through the midpoints of segments `p` (q > 0)
