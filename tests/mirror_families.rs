@@ -96,10 +96,6 @@ fn alternating_history() -> impl Strategy<Value = (Params, Vec<HistorySample>)> 
         })
 }
 
-fn mirrored(samples: &[HistorySample]) -> Vec<HistorySample> {
-    samples.iter().map(|x| HistorySample { t_s: x.t_s, t1_n: x.t2_n, t2_n: x.t1_n, speed_m_s: -x.speed_m_s }).collect()
-}
-
 /// At every sample: tension, friction (sign reversed) and utilization of the history and its
 /// mirror at 41 mirrored angles, the two ends among them (where a slip zone starts), and the
 /// gross-slip verdict. Both runs are the same closed forms built from opposite ends, so they
@@ -111,7 +107,7 @@ fn mirrored(samples: &[HistorySample]) -> Vec<HistorySample> {
 /// keep a factor of 7 to 40 above those; a frame-dependent rule (a sliver of slip at one end
 /// only, as before the clamp took an end within rounding of its line as on it) shows as 2e-6.
 fn mirror_at_every_sample(p: Params, samples: &[HistorySample]) -> Result<(), TestCaseError> {
-    let mirror = mirrored(samples);
+    let mirror = common::mirror(samples);
     let start = samples[0].t1_n.max(samples[0].t2_n);
     let alpha = p.wrap_angle_rad;
     let mut a = Simulation::new(p, samples, Profile::uniform(alpha, start, p.mu));
@@ -165,7 +161,7 @@ fn duty_cycle_history(payload_kg: f64, stop: Option<(f64, f64)>) -> (wrapcalc::d
 /// arcs' placement of 1e-6°) and the JDP the same demarcation in both. The arcs and the peak
 /// utilization to 1e-6° and 1e-8, the bounds of [`mirror_at_every_sample`].
 fn rows_mirror(p: Params, samples: &[HistorySample], step_s: Option<f64>) -> Result<(), TestCaseError> {
-    let mirror = mirrored(samples);
+    let mirror = common::mirror(samples);
     let start = samples[0].t1_n.max(samples[0].t2_n);
     let alpha = p.wrap_angle_rad;
     let output = Output { snapshots_s: &[], step_s, sample_rows: step_s.is_none(), utilization_map: false };

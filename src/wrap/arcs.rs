@@ -218,7 +218,7 @@ impl ArcTally {
     /// The JDP: the [`principal`] demarcation's point (rad from the side-1 tangent point);
     /// `None` where reverse friction never follows positive.
     pub fn jdp_rad(&self) -> Option<f64> {
-        principal(&self.demarcations(), self.extent_rad).map(|d| d.at_rad)
+        self.principal_of(&self.demarcations()).map(|d| d.at_rad)
     }
 }
 

@@ -449,14 +449,10 @@ pub fn distribution(
 }
 
 impl ArcTally {
-    /// The summary of the tallied wrap: its arcs and JDP, the peak utilization (at most 1), the
-    /// zones and the root finder's tally.
-    pub fn summary(&self, max_utilization: f64, zones: ZoneRuns, roots: RootStats) -> WrapSummary {
-        self.summary_of(&self.demarcations(), max_utilization, zones, roots)
-    }
-
-    /// [`Self::summary`] with the demarcations given (made by [`ArcTally::demarcations`], their
-    /// points moved where a model places them more closely).
+    /// The summary of the tallied wrap: its arcs, the demarcations `marks` (made by
+    /// [`ArcTally::demarcations`], their points moved where a model places them more closely)
+    /// and the JDP among them, the peak utilization (at most 1), the zones and the root finder's
+    /// tally.
     pub fn summary_of(
         &self,
         marks: &[Demarcation],
