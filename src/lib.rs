@@ -1,12 +1,12 @@
 //! wrapcalc — design calculator for friction (Koepe) hoists.
 //!
 //! Data flow, one module per stage:
-//! [`sheet`] (TOML design sheet → validated [`design::Design`]) → [`planner`] (cheapest model
+//! [`sheet`] (TOML design sheet → validated [`design::Design`]) → [`plan`] (cheapest model
 //! level per scene) → [`model`] levels (closed-form checks, creep theory) on the shared
-//! [`wrap`] discretization and [`contact`] law → [`derived`] quantities (arcs, JDP, zones) →
+//! [`wrap`] discretization and [`wrap::contact`] law → [`wrap::summary`] quantities (arcs, JDP, zones) →
 //! [`report`] (summary.json/csv, distribution.csv, PNG plots, terminal table). Every design check
 //! is a [`check::Check`] record (formula, inputs, values, limit and its source from
-//! [`requirements`], verdict); [`load_cases`] builds and answers the load-case matrix of a
+//! [`design::requirements`], verdict); [`load_cases`] builds and answers the load-case matrix of a
 //! sheet's `[load_cases]`. A lift sheet (`[lift]`) goes to [`lift`]: EN 81-50's traction cases
 //! and rope safety factor, each case's wrap at level 1.
 //!

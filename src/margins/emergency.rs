@@ -22,7 +22,7 @@ pub const TRIAL_REL_TOL: f64 = 1e-8;
 /// - `h_slip(d) = min_t [(T_lo − m'v²)·e^{μα} − (T_hi − m'v²)]`,
 /// - `h_σ(d) = min_t [(T_lo − m'v²)(e^{μα} − 1) − σ_min(T_hi − T_lo)]`,
 ///
-/// whose roots in d (Brent to [`TRIAL_REL_TOL`], on [d₀/2, 0.999 g], d₀ the scene's own
+/// whose roots in d (Brent to `TRIAL_REL_TOL`, on [d₀/2, 0.999 g], d₀ the scene's own
 /// deceleration: a much gentler brake would run the conveyance past the end of the shaft) are
 /// the margins, to slip and to the safety factor. Each search starts from the runs known
 /// before it ([`crate::numerics::roots::largest_holding_among`]): the scene's own stop at d₀ (where it

@@ -77,7 +77,7 @@ impl Overview {
         Self { governing, attention: attention.into_iter().map(entry).collect(), unjudged }
     }
 
-    /// The governing check in one line, e.g. "governing check: dynamic safety factor [design],
+    /// The governing check in one line, e.g. "governing check: dynamic safety factor \[design\],
     /// 1.7398 ≥ 1.2500, margin +39.2 %, at payload 30000 kg, …".
     pub fn governing_line(&self) -> Option<String> {
         let g = self.governing.as_ref()?;

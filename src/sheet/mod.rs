@@ -3,7 +3,7 @@
 //! The document is parsed once with spans; each section (`[pulley]`, `[rope]`,
 //! `[requirements]`, `[hoist]`, `[lining]`, `[brake]`, `[load_cases]`, `[ropes]`, every `[[scene]]`) is deserialized on its own so that an error in one does
 //! not hide errors in the others; then every value is checked (finite, in range, consistent).
-//! A sheet with `[lift]` is a lift sheet ([`lift`]), read by [`load_sheet`] / [`parse_sheet`].
+//! A sheet with `[lift]` is a lift sheet (`sheet::lift`, for [`crate::lift`]), read by [`load_sheet`] / [`parse_sheet`].
 //! Each diagnostic names the file, line:column, scene, key path, the bad value and what is allowed.
 
 pub(crate) mod codes;

@@ -72,7 +72,7 @@ fn stages_until(stages: &[Stage], at_s: f64) -> Result<Vec<Stage>, Level4Error> 
 /// The scene's motion profile: the hoist's stages (mirrored when lowering side 1), cut at the
 /// emergency stop and followed by constant braking to rest when the scene has an imposed
 /// deceleration; cut at the trip when the `[brake]` stops it (the stop then follows from the
-/// pulley as a body, [`stop`]).
+/// pulley as a body, [`crate::model::stop`]).
 pub fn motion_profile(hoist: &Hoist, scene: &DutyCycleScene) -> Result<MotionProfile, Level4Error> {
     let stages = trip_stages(hoist, scene.direction, scene.return_after_s);
     if let Some(at_s) = scene.brake_stop_s {

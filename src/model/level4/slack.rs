@@ -40,7 +40,7 @@ pub fn first_slack(samples: &[HistorySample], mass_per_m_kg: f64) -> Option<Slac
     })
 }
 
-/// What to change about a slack rope of `scene` (the [`Level4Error::SlackRope`] advice): during
+/// What to change about a slack rope of `scene` (the [`super::Level4Error::SlackRope`] advice): during
 /// an emergency stop, the deceleration (with the ropes' dynamics, `level` 4, the largest that
 /// keeps both ropes on the pulley, by Brent's method on `min_t (T_lo − m'v²)` over [d₀/4, d₀]),
 /// else the motion profile's accelerations; or more mass hanging on the slack side.
