@@ -111,7 +111,8 @@ impl Piece {
     pub fn tension_n(&self, theta_rad: f64) -> f64 {
         match self.shape {
             Shape::Exp { base_n, amp_n, rate_per_rad } => {
-                if rate_per_rad == 0.0 {
+                // At the piece's start e^0 = 1 exactly: the same value without the exponential.
+                if rate_per_rad == 0.0 || theta_rad == self.theta0_rad {
                     base_n + amp_n
                 } else {
                     base_n + amp_n * (rate_per_rad * (theta_rad - self.theta0_rad)).exp()
@@ -137,6 +138,22 @@ impl Piece {
         }
     }
 
+    /// The sign of the friction at θ as [`Self::friction_n_per_rad`] gives it: 1, −1, or 0 where
+    /// the friction is zero. On an exponential piece, `q = c e^x` with `c = −amp·k`: for
+    /// |x| < 700, `e^x` ≥ 1e−304 is a positive normal number, and for |c| ≥ 1e−19 the product is
+    /// at least 9.9e−324, above half the smallest subnormal, so it is not rounded to zero and
+    /// has the sign of `c`; no exponential is evaluated then.
+    pub fn friction_signum(&self, theta_rad: f64) -> f64 {
+        if let Shape::Exp { amp_n, rate_per_rad, .. } = self.shape {
+            let (c, x) = (-amp_n * rate_per_rad, rate_per_rad * (theta_rad - self.theta0_rad));
+            if rate_per_rad != 0.0 && x.abs() < 700.0 && c.abs() >= 1e-19 {
+                return c.signum();
+            }
+        }
+        let q = self.friction_n_per_rad(theta_rad);
+        if q == 0.0 { 0.0 } else { q.signum() }
+    }
+
     /// Tension (N) and friction (N/rad) at θ together (one root of Φ for an entry ramp).
     pub fn tension_friction(&self, theta_rad: f64) -> (f64, f64) {
         match self.shape {
@@ -146,7 +163,16 @@ impl Piece {
                 let q = if r.slope_n_per_s == 0.0 || w == 0.0 { 0.0 } else { r.slope_n_per_s / w };
                 (r.tension_n + r.slope_n_per_s * tau, q)
             }
-            Shape::Exp { .. } => (self.tension_n(theta_rad), self.friction_n_per_rad(theta_rad)),
+            // One exponential for both, in the very expressions of tension_n and
+            // friction_n_per_rad (the same values to the bit).
+            Shape::Exp { base_n, amp_n, rate_per_rad } => {
+                if rate_per_rad == 0.0 {
+                    return (base_n + amp_n, 0.0);
+                }
+                let e = (rate_per_rad * (theta_rad - self.theta0_rad)).exp();
+                let tension_n = if theta_rad == self.theta0_rad { base_n + amp_n } else { base_n + amp_n * e };
+                (tension_n, -amp_n * rate_per_rad * e)
+            }
         }
     }
 
@@ -284,6 +310,33 @@ mod tests {
                 let phi = w * tau_true + 0.5 * e * tau_true * tau_true;
                 let tau = r.entry_time_s(-phi);
                 assert!((tau - tau_true).abs() <= 1e-12, "ω {w}, ε {e}: τ {tau} vs {tau_true}");
+            }
+        }
+    }
+
+    /// The sign of friction without the exponential is the sign of the evaluated friction, on
+    /// exponential pieces of either sign of amplitude and rate (and 0), amplitudes down to
+    /// subnormal ones (where c e^x can round to zero) and angles that take the exponent beyond
+    /// ±700 (where e^x overflows or underflows); by hand, T = 1e5 e^{−0.2θ} holds
+    /// q = 2e4 e^{−0.2θ} > 0: +1. Tension and friction together are each to the bit what
+    /// tension_n and friction_n_per_rad give.
+    #[test]
+    fn the_sign_of_friction_and_the_pair_agree_with_the_evaluated_friction() {
+        use super::Piece;
+        assert_eq!(Piece::exponential(0.0, 3.0, 0.0, 1e5, -0.2).friction_signum(1.0), 1.0);
+        let amps = [1e5, -1e5, 1.0, 1e-19, -1e-19, 1e-25, 5e-324, 0.0];
+        let rates = [0.25, -0.25, 1e-3, -3.0, 0.0, 400.0, -400.0];
+        for (&amp, &rate) in amps.iter().flat_map(|a| rates.iter().map(move |r| (a, r))) {
+            let p = Piece::exponential(0.5, 3.5, 2e3, amp, rate);
+            for theta in [0.5, 0.5 + 1e-9, 1.0, 2.25, 3.5, -2.0, 5.0] {
+                let q = p.friction_n_per_rad(theta);
+                let want = if q == 0.0 { 0.0 } else { q.signum() };
+                // NaN (0 · ∞ where e^x overflows on a zero amplitude) on both sides as well.
+                let got = p.friction_signum(theta);
+                assert!(got == want || got.is_nan() && want.is_nan(), "amp {amp}, rate {rate}, θ {theta}");
+                let (t, q2) = p.tension_friction(theta);
+                let same = |a: f64, b: f64| a.to_bits() == b.to_bits() || a.is_nan() && b.is_nan();
+                assert!(same(t, p.tension_n(theta)) && same(q2, q), "amp {amp}, rate {rate}, θ {theta}");
             }
         }
     }

@@ -158,13 +158,15 @@ pub fn summarize_pieces(
     law: &ContactLaw,
     zones: bool,
 ) -> Result<WrapSummary, RootError> {
+    let pieces: Vec<Piece> = pieces.into_iter().collect();
     let mut gather = Gather::new(zones);
-    for piece in pieces {
-        if !gather.exponential(&piece, law, None) {
-            gather.evaluate(&piece, law, Evaluate { peak: true, arc: true, slip: true }, None)?;
+    for (i, piece) in pieces.iter().enumerate() {
+        if !gather.exponential(piece, law, i) {
+            gather.evaluate(piece, law, Evaluate { peak: true, arc: true, slip: true }, i)?;
         }
     }
-    Ok(gather.summary())
+    let tension = |i: usize, theta: f64| pieces[i].tension_n(theta);
+    Ok(gather.summary_held(&tension))
 }
 
 /// Pieces as a state carries them ([`crate::model::level2::Profile`]): in θ order, held in the
@@ -222,7 +224,7 @@ pub fn summarize_screened<S: Screens>(
             .map(|(i, (p, s))| (s.utilization_bound(mu, c), i, p))
             .max_by(|a, b| a.0.total_cmp(&b.0));
         if let Some((_, i, p)) = top {
-            gather.evaluate(&carried.piece(p, i), law, Evaluate { peak: true, arc: false, slip: false }, Some(i))?;
+            gather.evaluate(&carried.piece(p, i), law, Evaluate { peak: true, arc: false, slip: false }, i)?;
         }
     }
     let mut i = 0;
@@ -236,7 +238,7 @@ pub fn summarize_screened<S: Screens>(
         }
     }
     let tension = |i: usize, theta: f64| carried.piece(held.piece(i), i).tension_n(theta);
-    Ok(gather.summary_held(Some(&tension)))
+    Ok(gather.summary_held(&tension))
 }
 
 /// The utilization `|k|/μ` (at most 1) of an exponential of the contact force of rate `k`.
@@ -283,12 +285,13 @@ impl Gather {
 
     /// Adds a piece that is an exponential of the contact force itself (u = |k|/μ on the whole
     /// piece) and returns true; false for any other piece.
-    fn exponential(&mut self, piece: &Piece, law: &ContactLaw, index: Option<usize>) -> bool {
+    fn exponential(&mut self, piece: &Piece, law: &ContactLaw, index: usize) -> bool {
         let Some((_, rate)) = piece.contact_exponential(law.centrifugal_n) else { return false };
         let positive = piece.friction_positive();
         let u = contact_utilization(rate, law.mu);
         self.max_utilization = self.max_utilization.max(u);
-        self.add_arc((piece.theta0_rad, piece.theta1_rad), u >= ARC_THRESHOLD, positive, (piece, index));
+        let (a, b) = (piece.theta0_rad, piece.theta1_rad);
+        self.arcs.add_held((a, b), u >= ARC_THRESHOLD, positive, index, || piece.tension_n(a));
         if self.zones {
             self.states.push(piece.theta0_rad, piece.theta1_rad, state_of(u >= SLIP_UTILIZATION, positive));
         }
@@ -309,7 +312,7 @@ impl Gather {
         let (mu, c) = (law.mu, law.centrifugal_n);
         // Shifting a piece changes neither its shape nor the sign of its friction.
         if screen.contact_exponential(c) {
-            self.exponential(&carried.piece(p, i), law, Some(i));
+            self.exponential(&carried.piece(p, i), law, i);
             return Ok(());
         }
         let positive = screen.positive();
@@ -317,7 +320,7 @@ impl Gather {
         let arc = match screen.arc.side(c) {
             Side::Open => true,
             side => {
-                self.arcs.add_held(a, b, side == Side::Above, positive, i);
+                self.arcs.add_held((a, b), side == Side::Above, positive, i, || carried.piece(p, i).tension_n(a));
                 false
             }
         };
@@ -331,7 +334,7 @@ impl Gather {
             };
         let peak = !at_limit && screen.may_exceed(mu, c, self.max_utilization);
         if peak || arc || slip {
-            self.evaluate(&carried.piece(p, i), law, Evaluate { peak, arc, slip }, Some(i))?;
+            self.evaluate(&carried.piece(p, i), law, Evaluate { peak, arc, slip }, i)?;
         }
         Ok(())
     }
@@ -339,13 +342,7 @@ impl Gather {
     /// Evaluates a piece part by part (each of monotone utilization): the peak at the parts'
     /// ends, and the stretches above and below the arc and slip thresholds (a root where a
     /// part's ends lie on both sides), as `what` asks.
-    fn evaluate(
-        &mut self,
-        piece: &Piece,
-        law: &ContactLaw,
-        what: Evaluate,
-        index: Option<usize>,
-    ) -> Result<(), RootError> {
+    fn evaluate(&mut self, piece: &Piece, law: &ContactLaw, what: Evaluate, index: usize) -> Result<(), RootError> {
         // Friction keeps its sign over a piece.
         let positive = piece.friction_positive();
         for part in monotone_parts(*piece, law.centrifugal_n) {
@@ -355,7 +352,7 @@ impl Gather {
             }
             if what.arc {
                 for &(s, e, above) in split(&part, law, ends, ARC_THRESHOLD, &mut self.roots)?.parts() {
-                    self.add_arc((s, e), above, positive, (&part, index));
+                    self.arcs.add_held((s, e), above, positive, index, || piece.tension_n(s));
                 }
             }
             if what.slip && self.zones {
@@ -367,30 +364,12 @@ impl Gather {
         Ok(())
     }
 
-    /// A stretch of the arcs, of `piece` or of the state's piece `index` where given (its
-    /// tension then evaluated only if needed, [`ArcTally::add_held`]).
-    #[inline(always)]
-    fn add_arc(
-        &mut self,
-        (start, end): (f64, f64),
-        above: bool,
-        positive: bool,
-        (piece, index): (&Piece, Option<usize>),
-    ) {
-        match index {
-            Some(i) => self.arcs.add_held(start, end, above, positive, i),
-            None => self.arcs.add_piece(start, end, above, positive, piece),
-        }
-    }
-
-    fn summary(self) -> WrapSummary {
-        self.summary_held(None)
-    }
-
     /// The summary, the state's pieces evaluated by `tension` where stretches were added by index.
-    fn summary_held(self, tension: Option<HeldTension>) -> WrapSummary {
-        let marks = self.arcs.demarcations_held(tension);
-        self.arcs.summary_of(&marks, self.max_utilization, self.states, self.roots)
+    fn summary_held(mut self, tension: HeldTension) -> WrapSummary {
+        let marks = self.arcs.demarcations_held(Some(tension));
+        let summary = self.arcs.summary_of(&marks, self.max_utilization, self.states, self.roots);
+        ArcTally::recycle(marks);
+        summary
     }
 }
 
@@ -423,8 +402,8 @@ pub fn distribution(
         .into_iter()
         .map(|theta| {
             let piece = field.piece_at(theta, law);
-            let tension_n = piece.tension_n(theta);
-            let friction = law.clamp_friction(tension_n, piece.friction_n_per_rad(theta));
+            let (tension_n, q) = piece.tension_friction(theta);
+            let friction = law.clamp_friction(tension_n, q);
             let utilization = law.utilization_of(tension_n, friction);
             Sample {
                 theta_deg: theta.to_degrees(),

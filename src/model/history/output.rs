@@ -86,7 +86,10 @@ impl HistoryRun {
 
     /// Adds the row of the wrap at `t_s`: the end state `end` (per rope), the wrap's summary,
     /// the safety factor of `end` against the Euler limit `e^{μα}`, and the gross-slip flag.
-    pub fn push_row(&mut self, t_s: f64, end: &EndState, summary: &WrapSummary, euler_limit: f64, gross_slip: bool) {
+    pub fn push_row(&mut self, t_s: f64, end: &EndState, summary: WrapSummary, euler_limit: f64, gross_slip: bool) {
+        // The summary's list of demarcations becomes the row's, in degrees, without a copy.
+        let mut demarcations_deg = summary.demarcations_rad;
+        demarcations_deg.iter_mut().for_each(|d| *d = d.to_degrees());
         self.roots.calls += summary.roots.calls;
         self.roots.iterations += summary.roots.iterations;
         self.rows.push(HistoryRow {
@@ -96,7 +99,7 @@ impl HistoryRun {
             speed_m_s: end.speed_m_s,
             accel_m_s2: end.accel_m_s2,
             jdp_deg: summary.jdp_rad.map(f64::to_degrees),
-            demarcations_deg: summary.demarcations_rad.iter().map(|r| r.to_degrees()).collect(),
+            demarcations_deg,
             positive_arc_deg: summary.positive_arc_rad.to_degrees(),
             reverse_arc_deg: summary.reverse_arc_rad.to_degrees(),
             max_utilization: summary.max_utilization,

@@ -106,9 +106,12 @@ pub(super) fn run_rows<M: WrapModel, S: RowSamples<M>>(
         let to = targets.map_or(1, |t| t[k]);
         let mut map_row = map.next();
         let mut to_runs = runs.iter_mut().enumerate().filter(|(j, _)| to & (1 << j) != 0).peekable();
+        let mut summary = Some(summary);
         while let Some((_, run)) = to_runs.next() {
-            run.push_row(t, &end, &summary, limit, gross_slip);
-            let row = if to_runs.peek().is_some() { map_row.clone() } else { map_row.take() };
+            let more = to_runs.peek().is_some();
+            let own = if more { summary.clone() } else { summary.take() };
+            run.push_row(t, &end, own.expect("a row's summary goes to its last run"), limit, gross_slip);
+            let row = if more { map_row.clone() } else { map_row.take() };
             run.map.extend(row);
         }
     }

@@ -173,8 +173,18 @@ fn utilization_map(profile: &Profile, law: &ContactLaw) -> Vec<f64> {
                 j += 1;
                 piece = profile.piece(j);
             }
-            let q = piece.friction_n_per_rad(theta);
-            if q == 0.0 { 0.0 } else { law.utilization(&piece, theta) * q.signum() }
+            match piece.contact_exponential(law.centrifugal_n) {
+                // u = |k|/μ over the whole piece (as law.utilization has it) with the sign of
+                // the friction: no exponential to evaluate.
+                Some((_, rate)) => match piece.friction_signum(theta) {
+                    0.0 => 0.0,
+                    sign => (rate.abs() / law.mu).min(1.0) * sign,
+                },
+                None => {
+                    let q = piece.friction_n_per_rad(theta);
+                    if q == 0.0 { 0.0 } else { law.utilization(&piece, theta) * q.signum() }
+                }
+            }
         })
         .collect()
 }
