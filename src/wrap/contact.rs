@@ -78,11 +78,16 @@ impl ContactLaw {
         (friction_n_per_rad.abs() / capacity).min(1.0)
     }
 
+    /// `u = |k|/μ`, clamped to 1: the utilization everywhere on a piece that is an exponential
+    /// of the contact force of rate `k` ([`Piece::contact_exponential`]).
+    pub fn exponential_utilization(&self, rate_per_rad: f64) -> f64 {
+        (rate_per_rad.abs() / self.mu).min(1.0)
+    }
+
     /// `u = |q| / (μ n)` of a piece at θ, clamped to [0, 1].
     pub fn utilization(&self, piece: &Piece, theta_rad: f64) -> f64 {
         if let Some((_, rate)) = piece.contact_exponential(self.centrifugal_n) {
-            // Exponential of the contact force itself: u = |k|/μ everywhere on the piece.
-            return (rate.abs() / self.mu).min(1.0);
+            return self.exponential_utilization(rate);
         }
         let (tension_n, friction_n_per_rad) = piece.tension_friction(theta_rad);
         self.utilization_of(tension_n, friction_n_per_rad)

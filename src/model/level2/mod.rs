@@ -174,11 +174,11 @@ fn utilization_map(profile: &Profile, law: &ContactLaw) -> Vec<f64> {
                 piece = profile.piece(j);
             }
             match piece.contact_exponential(law.centrifugal_n) {
-                // u = |k|/μ over the whole piece (as law.utilization has it) with the sign of
-                // the friction: no exponential to evaluate.
+                // u = |k|/μ over the whole piece with the sign of the friction: no exponential
+                // to evaluate.
                 Some((_, rate)) => match piece.friction_signum(theta) {
                     0.0 => 0.0,
-                    sign => (rate.abs() / law.mu).min(1.0) * sign,
+                    sign => law.exponential_utilization(rate) * sign,
                 },
                 None => {
                     let q = piece.friction_n_per_rad(theta);
