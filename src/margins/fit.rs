@@ -127,6 +127,8 @@ struct Shape<'a> {
     alpha_rad: f64,
     k: f64,
     entry: Side,
+    /// Whether the samples are in increasing θ.
+    sorted: bool,
 }
 
 impl<'a> Shape<'a> {
@@ -138,7 +140,7 @@ impl<'a> Shape<'a> {
                 Side::Two => (-k * t).exp(),
             })
             .collect();
-        Self { theta_rad, y_n, scaled, alpha_rad, k, entry }
+        Self { theta_rad, y_n, scaled, alpha_rad, k, entry, sorted: theta_rad.is_sorted() }
     }
 
     /// Whether θ lies in the active arc of length β (φ > 0; φ = 0 on the idle arc).
@@ -157,6 +159,68 @@ impl<'a> Shape<'a> {
 
     /// Best A for this β and the squared residual.
     fn solve(&self, beta: f64) -> (f64, f64) {
+        match self.active_run(beta) {
+            Some(run) => self.solve_sorted(beta, run),
+            None => self.solve_any(beta),
+        }
+    }
+
+    /// The samples of the active arc of length β, `start..end`, when the samples are in
+    /// increasing θ (then the active arc is a suffix at entry side 1 and a prefix at side 2,
+    /// since `active` is monotone in θ); `None` for unsorted samples.
+    fn active_run(&self, beta: f64) -> Option<std::ops::Range<usize>> {
+        if !self.sorted {
+            return None;
+        }
+        let n = self.theta_rad.len();
+        Some(match self.entry {
+            Side::One => self.theta_rad.partition_point(|&t| !self.active(t, beta))..n,
+            Side::Two => 0..self.theta_rad.partition_point(|&t| self.active(t, beta)),
+        })
+    }
+
+    /// [`Shape::solve`] over samples in increasing θ: the same sums in the same order as
+    /// [`Shape::solve_any`] (on the idle arc `s = 1` makes `s·y = y`, `s² = 1` and `y − A·s =
+    /// y − A` exactly), without testing each sample for the active arc.
+    fn solve_sorted(&self, beta: f64, active: std::ops::Range<usize>) -> (f64, f64) {
+        let growth = (self.k * beta).exp();
+        let n = self.y_n.len();
+        let runs = [(0, active.start, false), (active.start, active.end, true), (active.end, n, false)];
+        let (mut sy, mut ss) = (0.0, 0.0);
+        for &(from, to, is_active) in &runs {
+            if is_active {
+                for (&e, &y) in self.scaled[from..to].iter().zip(&self.y_n[from..to]) {
+                    let s = e * growth;
+                    sy += s * y;
+                    ss += s * s;
+                }
+            } else {
+                for &y in &self.y_n[from..to] {
+                    sy += y;
+                    ss += 1.0;
+                }
+            }
+        }
+        let a = sy / ss;
+        let mut r = 0.0;
+        for &(from, to, is_active) in &runs {
+            if is_active {
+                for (&e, &y) in self.scaled[from..to].iter().zip(&self.y_n[from..to]) {
+                    let d = y - a * (e * growth);
+                    r += d * d;
+                }
+            } else {
+                for &y in &self.y_n[from..to] {
+                    let d = y - a;
+                    r += d * d;
+                }
+            }
+        }
+        (a, r)
+    }
+
+    /// [`Shape::solve`] over samples in any order.
+    fn solve_any(&self, beta: f64) -> (f64, f64) {
         let (mut sy, mut ss) = (0.0, 0.0);
         for (s, &y) in self.shapes(beta).zip(self.y_n) {
             sy += s * y;
@@ -191,7 +255,7 @@ impl Sums {
     /// The sums of a shape whose samples are in increasing θ (else `None`: the scan then
     /// evaluates each β in full).
     fn of(shape: &Shape) -> Option<Self> {
-        if !shape.theta_rad.is_sorted() {
+        if !shape.sorted {
             return None;
         }
         let prefix = |f: &dyn Fn(usize) -> f64| {
@@ -360,6 +424,28 @@ fn uniform_fit(d: &Distribution, travel: Option<Direction>) -> Option<CreepFit> 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Skipping the active-arc test on sorted samples changes no bit: the same sums in the same
+    /// order as the pass that tests every sample, for both entry sides, both signs of k and β
+    /// over the whole wrap (including 0 and α, an empty active or idle arc).
+    #[test]
+    fn sorted_pass_is_the_general_pass_to_the_bit() {
+        let alpha = 187.42_f64.to_radians();
+        let theta: Vec<f64> = (0..=90).map(|i| alpha * i as f64 / 90.0).collect();
+        let y: Vec<f64> = theta.iter().map(|t| 1e5 - 3e3 * t + 800.0 * (5.0 * t).sin()).collect();
+        for entry in Side::BOTH {
+            for k in [-0.25, 0.25] {
+                let shape = Shape::new(&theta, &y, alpha, k, entry);
+                for i in 0..=377 {
+                    let beta = alpha * i as f64 / 377.0;
+                    let run = shape.active_run(beta).expect("sorted samples");
+                    let (fast, full) = (shape.solve_sorted(beta, run), shape.solve_any(beta));
+                    assert_eq!(fast.0.to_bits(), full.0.to_bits(), "{entry:?}, k {k}, β {beta}: A");
+                    assert_eq!(fast.1.to_bits(), full.1.to_bits(), "{entry:?}, k {k}, β {beta}: residual");
+                }
+            }
+        }
+    }
 
     /// The residual from the running sums against the pass over every sample, for both entry
     /// sides and both signs of k (the mirror images of one another), over the whole range of

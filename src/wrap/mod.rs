@@ -57,9 +57,49 @@ impl TensionField {
         }
     }
 
+    /// A cursor for looking up pieces at increasing θ: each lookup gives what
+    /// [`TensionField::piece_at`] gives, walking forward from the previous piece instead of
+    /// searching the whole field.
+    pub fn cursor<'a>(&'a self, law: &'a ContactLaw) -> PieceCursor<'a> {
+        PieceCursor { field: self, law, index: 0, last_theta_rad: f64::NEG_INFINITY }
+    }
+
     /// Interior breakpoints between pieces (rad).
     pub fn breakpoints_rad(&self) -> impl Iterator<Item = f64> + '_ {
         self.pieces.iter().skip(1).map(|p| p.theta0_rad)
+    }
+}
+
+/// Looks up the pieces of a [`TensionField`] at increasing θ ([`TensionField::cursor`]).
+pub struct PieceCursor<'a> {
+    field: &'a TensionField,
+    law: &'a ContactLaw,
+    /// The first piece whose end is at or after the last θ looked up.
+    index: usize,
+    last_theta_rad: f64,
+}
+
+impl<'a> PieceCursor<'a> {
+    /// The piece that contains θ, as [`TensionField::piece_at`]: the first piece ending at or
+    /// after θ is found by walking forward from the last one (θ at or after the previous θ;
+    /// an earlier θ starts the walk again from the first piece).
+    pub fn piece_at(&mut self, theta_rad: f64) -> &'a Piece {
+        let pieces = &self.field.pieces;
+        if theta_rad < self.last_theta_rad || theta_rad.is_nan() {
+            self.index = 0;
+        }
+        self.last_theta_rad = theta_rad;
+        let last = pieces.len().saturating_sub(1);
+        while self.index < last && pieces[self.index].theta1_rad < theta_rad {
+            self.index += 1;
+        }
+        let here = &pieces[self.index.min(last)];
+        match pieces.get(self.index + 1) {
+            Some(next) if (next.theta0_rad - theta_rad).abs() <= 1e-12 => {
+                if self.law.utilization(next, theta_rad) > self.law.utilization(here, theta_rad) { next } else { here }
+            }
+            _ => here,
+        }
     }
 }
 
@@ -149,4 +189,42 @@ pub struct Distribution {
     pub jdp_deg: Option<f64>,
     /// Whether the rope slips over the whole wrap (gross slip).
     pub gross_slip: bool,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The cursor finds the piece the binary search finds (the same reference), at every
+    /// θ of a grid with the breakpoints inserted exactly, where the piece of higher
+    /// utilization must win, and again after a step back in θ.
+    #[test]
+    fn cursor_finds_the_piece_the_search_finds() {
+        let law = ContactLaw::new(0.25, 2.0e3);
+        // Idle, slipping (positive friction), idle at the end tension, slipping (reverse):
+        // a breakpoint between a stuck and a slipping piece takes the slipping one.
+        let b = [0.0, 0.7, 1.9, 2.4, 3.27];
+        let n0 = 8.0e4;
+        let n1 = n0 * (-0.25_f64 * 1.2).exp();
+        let field = TensionField {
+            pieces: vec![
+                Piece::constant(b[0], b[1], n0 + 2.0e3),
+                Piece::exponential(b[1], b[2], 2.0e3, n0, -0.25),
+                Piece::constant(b[2], b[3], n1 + 2.0e3),
+                Piece::exponential(b[3], b[4], 2.0e3, n1, 0.25),
+            ],
+        };
+        let grid = output_grid_rad(b[4], 97, field.breakpoints_rad());
+        assert!(b[1..4].iter().all(|x| grid.contains(x)), "breakpoints on the grid");
+        let mut cursor = field.cursor(&law);
+        for &theta in grid.iter().chain(&[0.5, 2.0, 3.27, 0.0]) {
+            let (walked, searched) = (cursor.piece_at(theta), field.piece_at(theta, &law));
+            assert!(std::ptr::eq(walked, searched), "θ {theta}: {walked:?} against {searched:?}");
+        }
+        // At each breakpoint the slipping neighbour (utilization 1 against 0).
+        let mut cursor = field.cursor(&law);
+        for (theta, slipping) in [(b[1], 1), (b[2], 1), (b[3], 3)] {
+            assert!(std::ptr::eq(cursor.piece_at(theta), &field.pieces[slipping]), "θ {theta}");
+        }
+    }
 }

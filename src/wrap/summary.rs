@@ -398,10 +398,11 @@ pub fn distribution(
         .breakpoints_rad()
         .chain(summary.zones.iter().skip(1).map(|z| z.start_deg.to_radians()))
         .chain(summary.jdp_rad);
+    let mut pieces = field.cursor(law);
     let samples = output_grid_rad(alpha, nodes, boundaries)
         .into_iter()
         .map(|theta| {
-            let piece = field.piece_at(theta, law);
+            let piece = pieces.piece_at(theta);
             let (tension_n, q) = piece.tension_friction(theta);
             let friction = law.clamp_friction(tension_n, q);
             let utilization = law.utilization_of(tension_n, friction);
