@@ -328,7 +328,7 @@ pub fn run_with_progress(
         let seconds = e.seconds;
         let context = SceneContext { parallel_sides, prefix, wrap };
         let (result, kept) = match run_scene(design, scenes[i], options, context) {
-            Ok((r, kept, work)) => (Ok((SceneResult { cost: Some(e), ..r }, work)), kept),
+            Ok((r, kept, work)) => (Ok((Box::new(SceneResult { cost: Some(e), ..r }), work)), kept),
             Err(e) => (Err(e), Vec::new()),
         };
         failed.fetch_or(result.is_err(), Ordering::Relaxed);
@@ -356,9 +356,14 @@ pub fn run_with_progress(
         run_shared(&groups, estimates, &failed, &one)
     };
     done.sort_by_key(|(i, _)| *i);
-    let (scenes, works): (Vec<SceneResult>, Vec<Work>) =
-        done.into_iter().map(|(_, r)| r).collect::<Result<Vec<_>, _>>()?.into_iter().unzip();
-    let work = shared + works.into_iter().sum();
+    // In the sheet's order; the first failure in that order is the one reported.
+    let mut scenes = Vec::with_capacity(done.len());
+    let mut work = shared;
+    for (_, result) in done {
+        let (scene, scene_work) = result?;
+        scenes.push(*scene);
+        work += scene_work;
+    }
     Ok(RunResult { scenes, design: None, runtime_ms: start.elapsed().as_secs_f64() * 1e3, work })
 }
 

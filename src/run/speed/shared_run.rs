@@ -11,7 +11,9 @@ use std::sync::Mutex;
 use std::sync::atomic::{AtomicBool, Ordering};
 
 /// A scene's result and the work it computed, with its index among the run's scenes.
-pub(in crate::run) type Done = (usize, Result<(SceneResult, Work), RunError>);
+/// A scene's index and outcome; the result boxed, so that collecting and ordering the scenes
+/// moves a pointer rather than the whole result.
+pub(in crate::run) type Done = (usize, Result<(Box<SceneResult>, Work), RunError>);
 
 /// A scene run with the wrap's states it kept for others.
 pub(in crate::run) type OneScene<'a> =
