@@ -169,14 +169,16 @@ impl<'a> Shape<'a> {
     /// increasing θ (then the active arc is a suffix at entry side 1 and a prefix at side 2,
     /// since `active` is monotone in θ); `None` for unsorted samples.
     fn active_run(&self, beta: f64) -> Option<std::ops::Range<usize>> {
-        if !self.sorted {
-            return None;
-        }
+        self.sorted.then(|| self.active_range(beta))
+    }
+
+    /// [`Shape::active_run`] for samples known to be in increasing θ.
+    fn active_range(&self, beta: f64) -> std::ops::Range<usize> {
         let n = self.theta_rad.len();
-        Some(match self.entry {
+        match self.entry {
             Side::One => self.theta_rad.partition_point(|&t| !self.active(t, beta))..n,
             Side::Two => 0..self.theta_rad.partition_point(|&t| self.active(t, beta)),
-        })
+        }
     }
 
     /// [`Shape::solve`] over samples in increasing θ: the same sums in the same order as
@@ -280,16 +282,13 @@ impl Sums {
     /// The squared residual at the best A for an active arc of length β.
     fn residual(&self, shape: &Shape, beta: f64) -> f64 {
         let n = shape.y_n.len();
-        // The active samples are a suffix (entry at side 1: θ > α − β) or a prefix (θ < β).
-        let (active, idle) = match shape.entry {
-            Side::One => {
-                let j = shape.theta_rad.partition_point(|&t| !shape.active(t, beta));
-                ((j, n), (0, j))
-            }
-            Side::Two => {
-                let j = shape.theta_rad.partition_point(|&t| shape.active(t, beta));
-                ((0, j), (j, n))
-            }
+        // The active samples are a suffix (entry at side 1: θ > α − β) or a prefix (θ < β);
+        // the samples are sorted, or there would be no sums.
+        let run = shape.active_range(beta);
+        let active = (run.start, run.end);
+        let idle = match shape.entry {
+            Side::One => (0, run.start),
+            Side::Two => (run.end, n),
         };
         let span = |p: &[f64], (a, b): (usize, usize)| p[b] - p[a];
         let growth = (shape.k * beta).exp();

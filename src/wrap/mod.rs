@@ -47,8 +47,13 @@ impl TensionField {
     pub fn piece_at(&self, theta_rad: f64, law: &ContactLaw) -> &Piece {
         let last = self.pieces.len().saturating_sub(1);
         let i = self.pieces.partition_point(|p| p.theta1_rad < theta_rad).min(last);
+        self.at_breakpoint(i, theta_rad, law)
+    }
+
+    /// Piece `i`, the first ending at or after θ, or its successor where θ is (within
+    /// round-off of) their breakpoint and the successor's utilization there is higher.
+    fn at_breakpoint(&self, i: usize, theta_rad: f64, law: &ContactLaw) -> &Piece {
         let here = &self.pieces[i];
-        // At (or within round-off of) a breakpoint the neighbour may also contain θ.
         match self.pieces.get(i + 1) {
             Some(next) if (next.theta0_rad - theta_rad).abs() <= 1e-12 => {
                 if law.utilization(next, theta_rad) > law.utilization(here, theta_rad) { next } else { here }
@@ -93,13 +98,7 @@ impl<'a> PieceCursor<'a> {
         while self.index < last && pieces[self.index].theta1_rad < theta_rad {
             self.index += 1;
         }
-        let here = &pieces[self.index.min(last)];
-        match pieces.get(self.index + 1) {
-            Some(next) if (next.theta0_rad - theta_rad).abs() <= 1e-12 => {
-                if self.law.utilization(next, theta_rad) > self.law.utilization(here, theta_rad) { next } else { here }
-            }
-            _ => here,
-        }
+        self.field.at_breakpoint(self.index, theta_rad, self.law)
     }
 }
 

@@ -10,9 +10,8 @@ use crate::run::{RunError, SceneResult, Work};
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicBool, Ordering};
 
-/// A scene's result and the work it computed, with its index among the run's scenes.
-/// A scene's index and outcome; the result boxed, so that collecting and ordering the scenes
-/// moves a pointer rather than the whole result.
+/// A scene's result and the work it computed, with its index among the run's scenes; the
+/// result boxed, so that collecting and ordering the scenes moves a pointer, not the result.
 pub(in crate::run) type Done = (usize, Result<(Box<SceneResult>, Work), RunError>);
 
 /// A scene run with the wrap's states it kept for others.
