@@ -73,7 +73,7 @@ fn groove_factor_by_hand_at_two_angles_each_kind() {
 /// The car-stalled case of an unhardened V groove takes the hardened one's f = μ/sin(γ/2)
 /// (EN 81-50 5.11 as transcribed: "stalled (both): f = μ/sin(γ/2)"), not the undercut formula of
 /// the holding cases. By hand, γ = 40°, μ = 0.2: sin 20° = 0.34202014, f = 0.2/0.34202014
-/// = 0.58476088 (the 0.5848); with β = 90° the holding formula would give 0.2·2.0525235
+/// = 0.58476088; with β = 90° the holding formula would give 0.2·2.0525235
 /// = 0.4105047 (the unsafe 0.41). e^{fπ} = e^{1.8370805} = 6.2781822 against e^{1.2896385} = 3.6315.
 /// Through a sheet: the example with an unhardened V groove (β = 90°, γ = 40°); the stalled
 /// check prints f and e^{fα} from the stalled formula, the loading case from the holding one.

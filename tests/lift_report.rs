@@ -52,6 +52,45 @@ fn report_html_states_every_check_with_formula_limit_and_clause() {
     }
 }
 
+/// Page 1 like the hoist's, from the typed verdicts of summary.json: the example has 7 checks,
+/// 4 pass, 2 fail (emergency braking, D/d), 1 not judged (Sf at D/d 30). The governing check is
+/// the failure with the least margin: D/d 30 against 40, margin 30/40 − 1 = −25.0 %, against the
+/// braking's 1 − 1.6809/1.5688 = −7.1 %. Each failure has its sentence of meaning; the Sf check
+/// is listed as not judged with its reason; the headline counts them.
+#[test]
+fn page_one_counts_verdicts_names_the_governing_check_and_explains_failures() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let out = example_report(dir.path());
+    let html = std::fs::read_to_string(out.join("report.html")).expect("report.html");
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).expect("summary")).expect("json");
+    let v = &summary["verdict"];
+    assert_eq!(v["governing"]["check"], "D/d of the traction sheave and pulleys");
+    assert_eq!(v["governing"]["verdict"], "fail");
+    let margin = v["governing"]["margin"].as_f64().expect("a margin");
+    assert!((margin + 0.25).abs() < 1e-12, "{margin}");
+    let attention: Vec<&str> =
+        v["attention"].as_array().expect("attention").iter().map(|e| e["check"].as_str().expect("name")).collect();
+    assert_eq!(attention, ["traction: emergency braking", "D/d of the traction sheave and pulleys"]);
+    assert_eq!(v["unjudged"][0]["check"], "suspension rope safety factor");
+    assert_eq!((summary["unjudged"].as_u64(), summary["warnings"].as_u64()), (Some(1), Some(0)));
+    let headline = summary["headline"].as_str().expect("headline");
+    assert!(headline.contains("2 failing checks") && headline.contains("1 check not judged"), "{headline}");
+    // Page 1 comes before the Basis and says the same.
+    let front = &html[..html.find("<h2>Basis</h2>").expect("a Basis section")];
+    for text in [
+        "Governing check:",
+        "D/d of the traction sheave and pulleys = 30.0000 (limit 40.0000), margin -25.0 %",
+        "<td>7</td><td>4</td><td>2</td><td>0</td><td>1</td>",
+        "the ropes would slip on the sheave",
+        "the ropes bend too sharply",
+        "Checks not judged",
+        "34 ≤ D_t/d_r ≤ 80",
+    ] {
+        assert!(front.contains(text), "page 1 lacks {text:?}");
+    }
+}
+
 /// The workbook's inputs are the doubles wrapcalc used and LibreOffice evaluates the same few
 /// operations in double precision: 1e-9 relative leaves rounding far behind.
 #[test]
