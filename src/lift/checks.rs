@@ -163,8 +163,18 @@ fn euler_limit(t: &Traction, mu: &Limit, lift: &Lift) -> Limit {
 
 /// A traction check of one case (or the worse of the two braking cases).
 pub fn traction_check(lift: &Lift, limits: &Limits, t: &Traction, name: &'static str) -> Check {
-    let (formula, relation) = if t.case.must_slip() {
-        ("T1/T2 ≥ e^{fα} (the ropes must slip); T from the masses, f from μ and the groove", Relation::AtLeast)
+    let (formula, relation) = if t.case == Case::CarStalledBottom {
+        (
+            "T1/T2 ≥ e^{fα} (the ropes must slip); the lowest position read as the empty car on its buffer, the machine \
+             turning down; T from the masses, f from μ and the groove",
+            Relation::AtLeast,
+        )
+    } else if t.case.must_slip() {
+        (
+            "T1/T2 ≥ e^{fα} (the ropes must slip); the empty car at the highest position, the counterweight on its \
+             buffer; T from the masses, f from μ and the groove",
+            Relation::AtLeast,
+        )
     } else {
         ("T1/T2 ≤ e^{fα} (the ropes must hold); T from the masses, f from μ and the groove", Relation::AtMost)
     };

@@ -44,7 +44,7 @@ fn sheave_note(lift: &Lift, eq: &Equivalent) -> String {
     };
     let table = match rope::table_value(&lift.groove) {
         Ok((v, _)) => format!("Table 2 gives {v:.4} for this groove"),
-        Err(why) => why,
+        Err(_) => "Table 2 has no value for this groove".to_string(),
     };
     match &eq.sheave_source {
         SheaveSource::Sheet => format!(
