@@ -193,6 +193,24 @@ fn sf_outside_figure_10_is_not_judged() {
     }
 }
 
+/// EN 81-20 5.5.1.2 a) (as transcribed): suspension ropes of at least 8 mm nominal diameter. A
+/// 6.5 mm rope (D_t = 260 mm keeps D/d = 40) fails at 6.5 against 8 and says what it means;
+/// 8 mm, the bound itself, passes.
+#[test]
+fn suspension_ropes_of_less_than_8_mm_fail() {
+    let thin = lift_of(&sheet_text("2:1", UNDERCUT_90, 260.0, 6.5, ""));
+    let checks = checks_of(&thin);
+    let c = named(&checks, checks::ROPE_DIAMETER_CHECK);
+    assert_eq!((c.verdict, c.value, c.limit), (Verdict::Fail, Some(6.5), Some(8.0)));
+    assert!(c.clause.contains("EN 81-20 5.5.1.2 a)"), "{}", c.clause);
+    let run = evaluate(&thin, false).expect("runs");
+    let summary = LiftSummary::of(&thin, &run);
+    let e = summary.verdict.attention.iter().find(|e| e.check == checks::ROPE_DIAMETER_CHECK).expect("listed");
+    assert!(e.explanation.contains("thinner than the standard allows"), "{}", e.explanation);
+    let at_bound = lift_of(&sheet_text("2:1", UNDERCUT_90, 320.0, 8.0, ""));
+    assert_eq!(named(&checks_of(&at_bound), checks::ROPE_DIAMETER_CHECK).verdict, Verdict::Pass);
+}
+
 /// Both stalled positions are checks of their own, with the stalled μ 0.2; declaring the electric
 /// safety device of EN 81-20 5.5.3 c) leaves both reported but not judged, saying so, and turns a
 /// failing stalled case (travel 150 m: ratio 2.8478 < e^{fα} 3.2830, the ropes would hold) into

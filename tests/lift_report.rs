@@ -52,8 +52,8 @@ fn report_html_states_every_check_with_formula_limit_and_clause() {
     }
 }
 
-/// Page 1 like the hoist's, from the typed verdicts of summary.json: the example has 7 checks,
-/// 4 pass, 2 fail (emergency braking, D/d), 1 not judged (Sf at D/d 30). The governing check is
+/// Page 1 like the hoist's, from the typed verdicts of summary.json: the example has 8 checks,
+/// 5 pass, 2 fail (emergency braking, D/d), 1 not judged (Sf at D/d 30). The governing check is
 /// the failure with the least margin: D/d 30 against 40, margin 30/40 − 1 = −25.0 %, against the
 /// braking's 1 − 1.6809/1.5688 = −7.1 %. Each failure has its sentence of meaning; the Sf check
 /// is listed as not judged with its reason; the headline counts them.
@@ -81,7 +81,7 @@ fn page_one_counts_verdicts_names_the_governing_check_and_explains_failures() {
     for text in [
         "Governing check:",
         "D/d of the traction sheave and pulleys = 30.0000 (limit 40.0000), margin -25.0 %",
-        "<td>7</td><td>4</td><td>2</td><td>0</td><td>1</td>",
+        "<td>8</td><td>5</td><td>2</td><td>0</td><td>1</td>",
         "the ropes would slip on the sheave",
         "the ropes bend too sharply",
         "Checks not judged",

@@ -53,6 +53,7 @@ pub const LIFT_LIMIT_KEYS: &[&str] = &[
     "lift_d_ratio_min",
     "lift_groove_undercut_angle_max_deg",
     "lift_groove_v_angle_min_deg",
+    "lift_rope_diameter_min_mm",
 ];
 
 /// One limit of a rule set as written in its file.

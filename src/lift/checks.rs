@@ -5,7 +5,7 @@
 //! count ([`super::rope_checks`]), and D/d of the sheave and pulleys.
 
 use super::cases::{Case, Loading, Tensions, tensions};
-use super::rope_checks::{d_ratio, rope_minimum, rope_safety_factor};
+use super::rope_checks::{d_ratio, rope_diameter, rope_minimum, rope_safety_factor};
 use super::{Lift, RULE_SET, StalledProtection};
 use crate::check::{Check, Quantity, Relation, Verdict, q};
 use crate::codes::{self, formula::Quantities};
@@ -19,7 +19,7 @@ pub const BRAKING_CHECK: &str = "traction: emergency braking";
 pub const STALLED_CHECK: &str = "traction: car stalled";
 /// Name of the car-stalled traction check at the lowest position (car on its buffer).
 pub const STALLED_BOTTOM_CHECK: &str = "traction: car stalled at the lowest position";
-pub use super::rope_checks::{D_RATIO_CHECK, ROPE_MIN_CHECK, ROPE_SF_CHECK};
+pub use super::rope_checks::{D_RATIO_CHECK, ROPE_DIAMETER_CHECK, ROPE_MIN_CHECK, ROPE_SF_CHECK};
 
 /// The rule set's values for one lift.
 #[derive(Debug, Clone, PartialEq)]
@@ -36,6 +36,8 @@ pub struct Limits {
     pub rope_sf_min: Limit,
     /// Minimum D/d.
     pub d_ratio_min: Limit,
+    /// Minimum nominal diameter of a suspension rope (mm).
+    pub rope_diameter_min_mm: Limit,
 }
 
 impl Limits {
@@ -59,6 +61,7 @@ impl Limits {
             mu_stalled: get("lift_traction_mu_stalled")?,
             rope_sf_min: get("lift_rope_safety_factor_min")?,
             d_ratio_min: get("lift_d_ratio_min")?,
+            rope_diameter_min_mm: get("lift_rope_diameter_min_mm")?,
         })
     }
 
@@ -245,6 +248,7 @@ pub fn all(lift: &Lift, limits: &Limits) -> (Vec<Check>, Vec<Traction>) {
         traction_check(lift, limits, &cases[4], STALLED_BOTTOM_CHECK),
         rope_safety_factor(lift),
         rope_minimum(lift, limits),
+        rope_diameter(lift, limits),
         d_ratio(lift, limits),
     ];
     (checks, cases)

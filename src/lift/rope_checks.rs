@@ -1,7 +1,8 @@
 //! The suspension ropes' checks: the actual safety factor `n F_min / T_car` (rated load at rest
 //! at the lowest landing) against Sf of EN 81-50 5.12 (not judged outside Figure 10's range or
-//! without N_equiv(t)) and against EN 81-20 5.5.2.2's minimum for the rope count; and D/d of the
-//! traction sheave, a double wrap's secondary sheave and every pulley.
+//! without N_equiv(t)) and against EN 81-20 5.5.2.2's minimum for the rope count; their nominal
+//! diameter (EN 81-20 5.5.1.2 a)); and D/d of the traction sheave, a double wrap's secondary
+//! sheave and every pulley.
 
 use super::cases::rated_load_at_bottom;
 use super::checks::Limits;
@@ -15,6 +16,8 @@ use crate::design::requirements::Rule;
 pub const ROPE_SF_CHECK: &str = "suspension rope safety factor";
 /// Name of the check of the ropes' safety factor against the minimum for the rope count.
 pub const ROPE_MIN_CHECK: &str = "suspension rope safety factor: minimum for the rope count";
+/// Name of the check of the ropes' nominal diameter.
+pub const ROPE_DIAMETER_CHECK: &str = "suspension rope nominal diameter";
 /// Name of the D/d check.
 pub const D_RATIO_CHECK: &str = "D/d of the traction sheave and pulleys";
 
@@ -126,6 +129,18 @@ pub fn rope_minimum(lift: &Lift, limits: &Limits) -> Check {
         .inputs(inputs)
         .intermediates(vec![t_car])
         .against(Relation::AtLeast, Some(&limits.rope_sf_min), true)
+}
+
+/// The suspension ropes' nominal diameter against the minimum (EN 81-20 5.5.1.2 a): 8 mm).
+pub fn rope_diameter(lift: &Lift, limits: &Limits) -> Check {
+    // Back to the sheet's millimetres, rounded to 1e-9 mm (6.5 mm comes back from metres as
+    // 6.500000000000001), so that a diameter at the bound is judged as written.
+    let d_mm = (lift.rope.diameter_m * 1e12).round() / 1e9;
+    Check::new(ROPE_DIAMETER_CHECK, "d_r ≥ 8 mm", Some(d_mm), "mm").inputs(vec![q("d_r", d_mm, "mm")]).against(
+        Relation::AtLeast,
+        Some(&limits.rope_diameter_min_mm),
+        true,
+    )
 }
 
 /// D/d of the sheave, a double wrap's secondary sheave and every pulley: the smallest against

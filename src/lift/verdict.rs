@@ -5,7 +5,7 @@
 //! judged, each with its reason. summary.json, the terminal and report.html print these records.
 
 use super::checks::{BRAKING_CHECK, LOADING_CHECK, STALLED_BOTTOM_CHECK, STALLED_CHECK};
-use super::rope_checks::{D_RATIO_CHECK, ROPE_MIN_CHECK, ROPE_SF_CHECK};
+use super::rope_checks::{D_RATIO_CHECK, ROPE_DIAMETER_CHECK, ROPE_MIN_CHECK, ROPE_SF_CHECK};
 use crate::check::{Check, Verdict};
 use crate::report::checklist::{Tally, margin};
 use crate::report::verdict::{Entry, Overview, explain};
@@ -51,6 +51,7 @@ fn meaning(c: &Check) -> Option<&'static str> {
              stronger ropes, or larger sheaves and pulleys (a smaller N_equiv), would meet it."
         }
         ROPE_MIN_CHECK => "The ropes are weaker than the minimum safety factor for their number.",
+        ROPE_DIAMETER_CHECK => "The suspension ropes are thinner than the standard allows for a lift.",
         D_RATIO_CHECK => {
             "A sheave or pulley is smaller than the minimum number of rope diameters: the ropes bend too sharply over it."
         }
