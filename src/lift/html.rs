@@ -20,7 +20,7 @@ pub fn render(lift: &Lift, run: &LiftRun, plots: bool) -> String {
     let _ = writeln!(out, "<h1>{}</h1>", esc(&lift.title));
     let _ = writeln!(
         out,
-        "<p>Lift sheet <code>{}</code>, wrapcalc {}.</p>\n<p class=\"headline\"><strong>{}</strong></p>",
+        "<p>Lift sheet <code>{}</code>, wrapcalc {}.</p>\n<p class=\"overall\"><strong>{}</strong></p>",
         esc(&lift.sheet),
         summary.version,
         esc(&summary.headline)
