@@ -57,8 +57,10 @@ fn every_sheet(dir: &Path) -> Vec<PathBuf> {
 }
 
 /// EN 81-50's traction cases, which every lift sheet (`[lift]`) reports as its scenes, in order
-/// (docs/lifts.md: car loading, emergency braking in its two positions, car stalled).
-const LIFT_CASES: [&str; 4] = ["car-loading", "braking-loaded-bottom", "braking-empty-top", "car-stalled"];
+/// (docs/lifts.md: car loading, emergency braking and car stalled, each of the last two in its
+/// two positions).
+const LIFT_CASES: [&str; 5] =
+    ["car-loading", "braking-loaded-bottom", "braking-empty-top", "car-stalled", "car-stalled-bottom"];
 
 /// Whether the sheet is a lift sheet (it has `[lift]`), read from its TOML.
 fn is_lift(sheet: &Path) -> bool {

@@ -12,7 +12,7 @@ use std::path::Path;
 use wrapcalc::check::Verdict;
 use wrapcalc::lift::cases::Case;
 use wrapcalc::lift::checks::{self, Limits};
-use wrapcalc::lift::groove::Groove;
+use wrapcalc::lift::groove::{Duty, Groove};
 use wrapcalc::lift::output::evaluate;
 use wrapcalc::lift::{Lift, rope, wrap};
 use wrapcalc::sheet::{self, Sheet};
@@ -50,19 +50,59 @@ fn groove_factor_by_hand_at_two_angles_each_kind() {
         (Groove::Undercut { beta_rad: r(100.0), gamma_rad: r(30.0) }, 2.0613932),
         (Groove::VHardened { gamma_rad: r(35.0) }, 3.3255095),
         (Groove::VHardened { gamma_rad: r(40.0) }, 2.9238044),
-        (Groove::VUnhardened { beta_rad: r(90.0) }, 2.0525235),
-        (Groove::VUnhardened { beta_rad: r(100.0) }, 2.2744182),
+        (Groove::VUnhardened { beta_rad: r(90.0), gamma_rad: r(40.0) }, 2.0525235),
+        (Groove::VUnhardened { beta_rad: r(100.0), gamma_rad: r(40.0) }, 2.2744182),
     ];
     for (g, hand) in cases {
         let g = Groove::new(g).expect("in range");
-        assert!(close(g.shape_factor(), hand, 1e-7), "{g:?}: {} vs {hand}", g.shape_factor());
-        assert!(close(g.factor(0.1), 0.1 * hand, 1e-7), "{g:?}");
+        let shape = g.shape_factor(Duty::Hold);
+        assert!(close(shape, hand, 1e-7), "{g:?}: {shape} vs {hand}");
+        assert!(close(g.factor(0.1, Duty::Hold), 0.1 * hand, 1e-7), "{g:?}");
+        // U grooves and the hardened V groove have one formula for every case.
+        if !matches!(g, Groove::VUnhardened { .. }) {
+            assert_eq!(g.shape_factor(Duty::Stalled), shape, "{g:?}");
+        }
     }
     // Outside each formula's range: refused, not a negative or infinite f.
     assert!(Groove::new(Groove::Undercut { beta_rad: r(150.0), gamma_rad: r(30.0) }).is_err());
     assert!(Groove::new(Groove::VHardened { gamma_rad: 0.0 }).is_err());
-    assert!(Groove::new(Groove::VUnhardened { beta_rad: PI }).is_err());
+    assert!(Groove::new(Groove::VUnhardened { beta_rad: PI, gamma_rad: r(40.0) }).is_err());
     assert!(Groove::new(Groove::Semicircular { gamma_rad: r(-1.0) }).is_err());
+}
+
+/// The car-stalled case of an unhardened V groove takes the hardened one's f = μ/sin(γ/2)
+/// (EN 81-50 5.11 as transcribed: "stalled (both): f = μ/sin(γ/2)"), not the undercut formula of
+/// the holding cases. By hand, γ = 40°, μ = 0.2: sin 20° = 0.34202014, f = 0.2/0.34202014
+/// = 0.58476088; with β = 90° the holding formula would give 0.2·2.0525235
+/// = 0.4105047 (the unsafe 0.41). e^{fπ} = e^{1.8370805} = 6.2781822 against e^{1.2896385} = 3.6315.
+/// Through a sheet: the example with an unhardened V groove (β = 90°, γ = 40°); the stalled
+/// check prints f and e^{fα} from the stalled formula, the loading case from the holding one.
+/// Hand values carry 8 digits: 1e-7 relative.
+#[test]
+fn stalled_unhardened_v_groove_takes_mu_over_sin_half_gamma() {
+    let r = f64::to_radians;
+    let g = Groove::new(Groove::VUnhardened { beta_rad: r(90.0), gamma_rad: r(40.0) }).expect("in range");
+    assert!(close(g.factor(0.2, Duty::Stalled), 0.58476088, 1e-7), "{}", g.factor(0.2, Duty::Stalled));
+    assert!(close(g.factor(0.2, Duty::Hold), 0.4105047, 1e-7), "{}", g.factor(0.2, Duty::Hold));
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tables/lift-example.toml");
+    let text = std::fs::read_to_string(path)
+        .expect("the example")
+        .replace("groove = \"undercut\"", "groove = \"v-unhardened\"")
+        .replace("groove_angle_deg = 30.0", "groove_angle_deg = 40.0");
+    let lift = match sheet::parse_sheet("v.toml", &text) {
+        Ok(Sheet::Lift(l)) => *l,
+        other => panic!("a lift sheet: {other:?}"),
+    };
+    let limits = Limits::of(&lift).expect("limits");
+    let stalled = checks::traction(&lift, &limits, Case::CarStalled);
+    assert!(close(stalled.f, 0.58476088, 1e-7), "{}", stalled.f);
+    assert!(close(stalled.euler_limit, 6.2781822, 1e-7), "{}", stalled.euler_limit);
+    let loading = checks::traction(&lift, &limits, Case::CarLoading);
+    assert!(close(loading.f, 0.1 * 2.0525235, 1e-7), "{}", loading.f);
+    let check = checks::traction_check(&lift, &limits, &stalled, checks::STALLED_CHECK);
+    let f = check.intermediates.iter().find(|q| q.name == "f").expect("f printed");
+    assert!(close(f.value, 0.58476088, 1e-7));
+    assert!(check.limit_source.as_deref().is_some_and(|s| s.contains("μ/sin(γ/2)")), "{:?}", check.limit_source);
 }
 
 /// Sf = 10^(2.6834 − A/B), A = log10(695.85e6·N/x^8.567), B = log10(77.09·x^−2.894), x = D_t/d_r:
@@ -99,12 +139,16 @@ fn rope_safety_factor_by_hand_at_two_points() {
 /// * braking, empty car at the top (car accelerating down): T_car = 1107.5·9.31/2 + 2.64·8.81
 ///   = 5178.6709, T_cwt = 1600·10.31/2 + 42.24·10.81 = 8704.6144, ratio 1.6808588;
 /// * car stalled (counterweight on its buffer, empty car at the top): T_car = 1107.5·9.81/2
-///   + 2.64·9.81 = 5458.1859, T_cwt = 42.24·9.81 = 414.3744, ratio 13.172112.
+///   + 2.64·9.81 = 5458.1859, T_cwt = 42.24·9.81 = 414.3744, ratio 13.172112;
+/// * car stalled at the lowest position (the empty car on its buffer, no cable or compensation
+///   under it there): T_car = 42.24·9.81 = 414.3744 (the rope alone), T_cwt = 1600·9.81/2
+///   + 2.64·9.81 = 7873.8984, ratio 19.001894.
 ///
 /// Limits: f/μ = 1.8919606 (undercut 90°/30°), α = π: e^{0.1·1.8919606·π} = e^{0.5943759} = 1.8119017;
 /// μ = 0.1/(1 + 3.2/10) = 0.0757576, e^{0.4502886} = 1.5687601; μ = 0.2: e^{1.1887518} = 3.2829876.
 /// Verdicts: loading 1.5165 ≤ 1.8119 passes; braking, worst 1.6809 > 1.5688 fails; stalled
-/// 13.17 ≥ 3.28 slips: passes. The hand values carry 8 digits: 1e-7 relative.
+/// 13.17 ≥ 3.28 slips: passes; stalled at the bottom 19.00 ≥ 3.28: passes. The hand values carry
+/// 8 digits: 1e-7 relative.
 #[test]
 fn traction_cases_of_the_example_lift_by_hand() {
     let lift = example();
@@ -114,6 +158,7 @@ fn traction_cases_of_the_example_lift_by_hand() {
         (Case::BrakingLoadedBottom, 11282.1144, 7471.2584, 1.5100688, 1.5687601),
         (Case::BrakingEmptyTop, 5178.6709, 8704.6144, 1.6808588, 1.5687601),
         (Case::CarStalled, 5458.1859, 414.3744, 13.172112, 3.2829876),
+        (Case::CarStalledBottom, 414.3744, 7873.8984, 19.001894, 3.2829876),
     ];
     for (case, car, cwt, ratio, limit) in hand {
         let t = checks::traction(&lift, &limits, case);
@@ -127,6 +172,7 @@ fn traction_cases_of_the_example_lift_by_hand() {
     assert_eq!(verdict(checks::LOADING_CHECK), Some(Verdict::Pass));
     assert_eq!(verdict(checks::BRAKING_CHECK), Some(Verdict::Fail));
     assert_eq!(verdict(checks::STALLED_CHECK), Some(Verdict::Pass));
+    assert_eq!(verdict(checks::STALLED_BOTTOM_CHECK), Some(Verdict::Pass));
     let braking = checks.iter().find(|c| c.name == checks::BRAKING_CHECK).expect("braking");
     assert_eq!(braking.governing_case.as_deref(), Some("braking-empty-top"), "the worse of the two");
 }
@@ -216,9 +262,12 @@ fn mirror_symmetry_car_and_counterweight_swapped() {
     }
 }
 
-/// `wrapcalc run tables/lift-example.toml --format json` lists the three traction checks and the
-/// Sf check, each with a numeric value and limit, and exits 2 (a binding check fails); the
-/// summary's cases are EN 81-50's, each with its tension ratio and limit.
+/// `wrapcalc run tables/lift-example.toml --format json` lists the traction checks (both stalled
+/// positions among them) and the rope checks, each with a numeric value and limit, and exits 2 (a
+/// binding check fails); the summary's cases are EN 81-50's, each with its tension ratio and
+/// limit. The example's sheave is 30 rope diameters, below Figure 10's 34 ≤ D_t/d_r ≤ 80: its
+/// Sf check is not judged (typed `not_evaluated`, no limit) and says why, while the minimum for
+/// the rope count is still judged.
 #[test]
 fn run_json_lists_the_traction_and_sf_checks() {
     let dir = tempfile::tempdir().expect("tempdir");
@@ -236,16 +285,31 @@ fn run_json_lists_the_traction_and_sf_checks() {
     assert_eq!(out.status.code(), Some(2), "{}", String::from_utf8_lossy(&out.stderr));
     let json: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON on stdout");
     let checks = json["checks"].as_array().expect("checks");
-    for name in [checks::LOADING_CHECK, checks::BRAKING_CHECK, checks::STALLED_CHECK, checks::ROPE_SF_CHECK] {
+    let names = [
+        checks::LOADING_CHECK,
+        checks::BRAKING_CHECK,
+        checks::STALLED_CHECK,
+        checks::STALLED_BOTTOM_CHECK,
+        checks::ROPE_MIN_CHECK,
+    ];
+    for name in names {
         let c = checks.iter().find(|c| c["name"] == name).unwrap_or_else(|| panic!("{name} listed"));
         assert!(c["value"].is_f64() && c["limit"].is_f64(), "{name}: {c}");
         assert_eq!(c["code"], "en81-50", "{name}");
         assert!(!c["clause"].as_str().unwrap_or_default().is_empty(), "{name}");
     }
+    let sf = checks.iter().find(|c| c["name"] == checks::ROPE_SF_CHECK).expect("the Sf check");
+    assert_eq!(sf["verdict"], "not_evaluated", "{sf}");
+    assert!(sf["limit"].is_null() && sf["pass"] == true, "{sf}");
+    let note = sf["note"].as_str().unwrap_or_default();
+    assert!(note.contains("D_t/d_r = 30.00") && note.contains("34 ≤ D_t/d_r ≤ 80"), "{note}");
+    assert!(!sf["intermediates"].as_array().expect("intermediates").iter().any(|q| q["name"] == "Sf"), "{sf}");
     assert_eq!(json["all_checks_pass"], false);
+    assert_eq!(json["unjudged"], 1);
+    assert_eq!(json["verdict"]["unjudged"][0]["check"], checks::ROPE_SF_CHECK);
     let summary: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(out_dir.join("summary.json")).expect("written")).expect("JSON");
-    assert_eq!(summary["scenes"].as_array().map(Vec::len), Some(4));
+    assert_eq!(summary["scenes"].as_array().map(Vec::len), Some(5));
     assert!(out_dir.join("car-loading/distribution.csv").exists());
 }
 

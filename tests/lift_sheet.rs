@@ -91,7 +91,31 @@ fn bad_lift_values_name_line_column_and_key() {
         ("unknown groove", "groove = \"undercut\"", "groove = \"W\"", "lift.groove", 14, "\"v-hardened\""),
         ("wrap beyond a turn", "wrap_angle_deg = 180.0", "wrap_angle_deg = 400.0", "lift.wrap_angle_deg", 13, "360"),
         ("unknown key", "n_equiv_t = 5.0", "n_equiv_t = 5.0\ncar_mas_kg = 3.0", "lift.car_mas_kg", 18, "unknown field"),
-        ("missing N_equiv(t)", "n_equiv_t = 5.0\n", "", "lift.n_equiv_t", 1, "missing"),
+        ("zero N_equiv(t)", "n_equiv_t = 5.0", "n_equiv_t = 0.0", "lift.n_equiv_t", 17, "> 0"),
+        (
+            "secondary sheave of a single wrap",
+            "n_equiv_t = 5.0",
+            "n_equiv_t = 5.0\nsecondary_sheave_diameter_mm = 400.0",
+            "lift.secondary_sheave_diameter_mm",
+            18,
+            "wrap = \"double\"",
+        ),
+        (
+            "double wrap without its sheave",
+            "n_equiv_t = 5.0",
+            "n_equiv_t = 5.0\nwrap = \"double\"",
+            "lift.secondary_sheave_diameter_mm",
+            1,
+            "missing",
+        ),
+        (
+            "unknown stalled protection",
+            "n_equiv_t = 5.0",
+            "n_equiv_t = 5.0\nstalled_protection = \"brake\"",
+            "lift.stalled_protection",
+            18,
+            "\"electric-safety-device\"",
+        ),
     ];
     for (what, from, to, key, line, allowed) in cases {
         let text = BASE.replace(from, to);
@@ -114,8 +138,41 @@ fn each_groove_kind_takes_its_own_angles() {
         .replace("groove_angle_deg = 30.0", "groove_angle_deg = 0.0");
     let err = sheet::parse_sheet("lift.toml", &v).expect_err("γ = 0").to_string();
     assert!(err.contains("lift.groove_angle_deg") && err.contains("0° < γ < 180°"), "{err}");
-    let u = BASE.replace("groove = \"undercut\"", "groove = \"v-unhardened\"").replace("groove_angle_deg = 30.0\n", "");
+    // An unhardened V groove needs γ too: the stalled case's f = μ/sin(γ/2) uses it.
+    let u = BASE.replace("groove = \"undercut\"", "groove = \"v-unhardened\"");
+    let err = sheet::parse_sheet("lift.toml", &u.replace("groove_angle_deg = 30.0\n", "")).expect_err("no γ");
+    assert!(err.to_string().contains("lift.groove_angle_deg") && err.to_string().contains("missing"), "{err}");
+    let u = u.replace("groove_angle_deg = 30.0", "groove_angle_deg = 40.0");
     assert!(matches!(lift_of(&u).groove, Groove::VUnhardened { .. }));
+}
+
+/// The standard's groove ranges (EN 81-50 5.11 as transcribed: β ≤ 105°, V grooves γ ≥ 35°) are
+/// errors at the value's line:column that cite the clause: an undercut β = 120° (line 15, the
+/// value after `groove_undercut_angle_deg = `, 28 characters, at column 29) and a V groove
+/// γ = 20° (line 16, after `groove_angle_deg = `, 19 characters, column 20). The bounds
+/// themselves pass (β = 105°, γ = 35°), and a V groove's γ = 20° is refused hardened or not.
+#[test]
+fn groove_angles_outside_the_standard_are_refused_at_their_value() {
+    let beta = BASE.replace("groove_undercut_angle_deg = 90.0", "groove_undercut_angle_deg = 120.0");
+    let err = sheet::parse_sheet("lift.toml", &beta).expect_err("β = 120°").to_string();
+    assert!(err.contains("lift.toml:15:29") && err.contains("lift.groove_undercut_angle_deg"), "{err}");
+    assert!(err.contains("β ≤ 105°") && err.contains("5.11"), "{err}");
+    let v = BASE
+        .replace("groove = \"undercut\"", "groove = \"v-hardened\"")
+        .replace("groove_undercut_angle_deg = 90.0", "travelling_cable_mass_per_m_kg = 0.0")
+        .replace("groove_angle_deg = 30.0", "groove_angle_deg = 20.0");
+    let err = sheet::parse_sheet("lift.toml", &v).expect_err("γ = 20°").to_string();
+    assert!(err.contains("lift.toml:16:20") && err.contains("lift.groove_angle_deg"), "{err}");
+    assert!(err.contains("γ ≥ 35°") && err.contains("5.11"), "{err}");
+    let unhardened = BASE
+        .replace("groove = \"undercut\"", "groove = \"v-unhardened\"")
+        .replace("groove_angle_deg = 30.0", "groove_angle_deg = 20.0");
+    let err = sheet::parse_sheet("lift.toml", &unhardened).expect_err("γ = 20°").to_string();
+    assert!(err.contains("lift.toml:16:20") && err.contains("γ ≥ 35°"), "{err}");
+    let at_bounds = BASE.replace("groove_undercut_angle_deg = 90.0", "groove_undercut_angle_deg = 105.0");
+    assert!(matches!(lift_of(&at_bounds).groove, Groove::Undercut { .. }));
+    let v35 = v.replace("groove_angle_deg = 20.0", "groove_angle_deg = 35.0");
+    assert!(matches!(lift_of(&v35).groove, Groove::VHardened { .. }));
 }
 
 /// A sheet is a hoist sheet or a lift sheet: [hoist] or a hoist section beside [lift] is an

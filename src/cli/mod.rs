@@ -31,7 +31,7 @@ pub(crate) enum Command {
     Bench(BenchArgs),
     /// Print the design sheet's JSON Schema (for TOML editors), or with --markdown its key reference.
     Schema(SchemaArgs),
-    /// Write a commented template sheet that runs as written (kinds: tower-cage, ground-skips).
+    /// Write a commented template sheet that runs as written (kinds: tower-cage, ground-skips, lift).
     New(NewArgs),
     /// List the bundled rule sets (design codes), or print one rule set's limits with their
     /// formulas, clauses and sources.

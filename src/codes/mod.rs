@@ -43,7 +43,7 @@ pub const LIMIT_KEYS: &[&str] = &[
 ];
 
 /// The keys a rule set may give for a lift sheet (`[lift]`): the traction cases' load factor and
-/// friction coefficients, the ropes' minimum safety factor and D/d.
+/// friction coefficients, the ropes' minimum safety factor and D/d, the groove angles' range.
 pub const LIFT_LIMIT_KEYS: &[&str] = &[
     "lift_loading_factor",
     "lift_traction_mu_loading",
@@ -51,6 +51,9 @@ pub const LIFT_LIMIT_KEYS: &[&str] = &[
     "lift_traction_mu_stalled",
     "lift_rope_safety_factor_min",
     "lift_d_ratio_min",
+    "lift_groove_undercut_angle_max_deg",
+    "lift_groove_v_angle_min_deg",
+    "lift_rope_diameter_min_mm",
 ];
 
 /// One limit of a rule set as written in its file.

@@ -8,9 +8,9 @@
 //! T_cwt = M_cwt (g − a_car)/r + n m_r L_cwt (g − r a_car)
 //! ```
 //!
-//! `M_car` = car + load in it + compensation hanging under it + travelling cable it carries,
-//! `M_cwt` = counterweight + compensation under it (0 when the counterweight rests on its
-//! buffer), `a_car` the car's acceleration (upward positive; the counterweight's is −a_car),
+//! `M_car` = car + load in it + compensation hanging under it + travelling cable it carries (0
+//! when the car rests on its buffer), `M_cwt` = counterweight + compensation under it (0 when the
+//! counterweight rests on its buffer), `a_car` the car's acceleration (upward positive; the counterweight's is −a_car),
 //! `L` the hanging rope length from the sheave on each side (only the fall that reaches the
 //! sheave loads it: with r:1 the other falls end at the hitch), and the rope moving r times as
 //! fast as the car. Compensation: its whole length m_c·H hangs under the car at the top landing
@@ -19,9 +19,10 @@
 //! the wrap is left out, as EN 81-50's ratio leaves it out.
 
 use super::Lift;
+use super::groove::Duty;
 use crate::design::Side;
 
-/// EN 81-50's traction cases, the emergency braking one in its two positions.
+/// EN 81-50's traction cases, the emergency braking and the stalled one each in two positions.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Case {
     /// Car loading: 125 % of the rated load in the car at the lowest landing, at rest.
@@ -30,13 +31,18 @@ pub enum Case {
     BrakingLoadedBottom,
     /// Emergency braking of the empty car near the highest landing, travelling up.
     BrakingEmptyTop,
-    /// Car stalled: the counterweight on its buffer, the machine turning in the up direction.
+    /// Car stalled at the highest position: the counterweight on its buffer, the empty car at the
+    /// top, the machine turning in the up direction.
     CarStalled,
+    /// Car stalled at the lowest position: the empty car on its buffer, the machine turning in
+    /// the down direction (hauling the counterweight up).
+    CarStalledBottom,
 }
 
 impl Case {
     /// Every case, in report order.
-    pub const ALL: [Case; 4] = [Case::CarLoading, Case::BrakingLoadedBottom, Case::BrakingEmptyTop, Case::CarStalled];
+    pub const ALL: [Case; 5] =
+        [Case::CarLoading, Case::BrakingLoadedBottom, Case::BrakingEmptyTop, Case::CarStalled, Case::CarStalledBottom];
 
     /// The case's name in the outputs (a folder name in the report).
     pub fn name(self) -> &'static str {
@@ -45,6 +51,7 @@ impl Case {
             Case::BrakingLoadedBottom => "braking-loaded-bottom",
             Case::BrakingEmptyTop => "braking-empty-top",
             Case::CarStalled => "car-stalled",
+            Case::CarStalledBottom => "car-stalled-bottom",
         }
     }
 
@@ -53,13 +60,18 @@ impl Case {
         match self {
             Case::CarLoading => "lift_traction_mu_loading",
             Case::BrakingLoadedBottom | Case::BrakingEmptyTop => "lift_traction_mu_braking",
-            Case::CarStalled => "lift_traction_mu_stalled",
+            Case::CarStalled | Case::CarStalledBottom => "lift_traction_mu_stalled",
         }
     }
 
     /// Whether the ropes must slip (the stalled car) rather than hold.
     pub fn must_slip(self) -> bool {
-        self == Case::CarStalled
+        matches!(self, Case::CarStalled | Case::CarStalledBottom)
+    }
+
+    /// Which groove formula the case takes (an unhardened V groove has one for the stalled car).
+    pub fn duty(self) -> Duty {
+        if self.must_slip() { Duty::Stalled } else { Duty::Hold }
     }
 }
 
@@ -76,6 +88,8 @@ pub struct Loading {
     pub car_accel_m_s2: f64,
     /// The counterweight rests on its buffer.
     pub counterweight_on_buffer: bool,
+    /// The car rests on its buffer (its mass and what hangs under it are not on the ropes).
+    pub car_on_buffer: bool,
 }
 
 impl Loading {
@@ -89,6 +103,7 @@ impl Loading {
             car_velocity_m_s,
             car_accel_m_s2,
             counterweight_on_buffer,
+            car_on_buffer: false,
         };
         match case {
             Case::CarLoading => state(loading_factor * lift.rated_load_kg, true, 0.0, 0.0, false),
@@ -96,6 +111,8 @@ impl Loading {
             Case::BrakingLoadedBottom => state(lift.rated_load_kg, true, -v, a, false),
             Case::BrakingEmptyTop => state(0.0, false, v, -a, false),
             Case::CarStalled => state(0.0, false, v, 0.0, true),
+            // The machine turns down: the rope runs as if the car travelled down.
+            Case::CarStalledBottom => Loading { car_on_buffer: true, ..state(0.0, true, -v, 0.0, false) },
         }
     }
 }
@@ -148,7 +165,7 @@ pub fn tensions(lift: &Lift, loading: &Loading) -> Tensions {
     let comp = lift.compensation_mass_per_m_kg * h;
     let (comp_car, comp_cwt) = if at_bottom { (0.0, comp) } else { (comp, 0.0) };
     let cable = if at_bottom { 0.0 } else { 0.5 * lift.travelling_cable_mass_per_m_kg * h };
-    let car_mass_kg = lift.car_mass_kg + loading.load_kg + comp_car + cable;
+    let car_mass_kg = if loading.car_on_buffer { 0.0 } else { lift.car_mass_kg + loading.load_kg + comp_car + cable };
     let counterweight_mass_kg = if loading.counterweight_on_buffer { 0.0 } else { lift.counterweight_kg + comp_cwt };
     let car_rope_kg = n * lift.rope.mass_per_m_kg * l_car;
     let counterweight_rope_kg = n * lift.rope.mass_per_m_kg * l_cwt;
@@ -185,6 +202,7 @@ pub fn rated_load_at_bottom(lift: &Lift) -> Tensions {
         car_velocity_m_s: 0.0,
         car_accel_m_s2: 0.0,
         counterweight_on_buffer: false,
+        car_on_buffer: false,
     };
     tensions(lift, &loading)
 }

@@ -1,11 +1,13 @@
 //! The lift's checks as [`Check`] records, each limit resolved from the rule set `en81-50`
-//! (codes/en81-50.toml): the three traction cases (`T1/T2 ≤ e^{fα}`, the stalled car `≥`), the
-//! ropes' safety factor against max(Sf, the minimum for the rope count) and D/d of the sheave
-//! and pulleys.
+//! (codes/en81-50.toml): the traction cases (`T1/T2 ≤ e^{fα}`; the stalled car at the highest
+//! and the lowest position `≥`, or not judged where an electric safety device stops the machine),
+//! the ropes' safety factor against Sf of EN 81-50 5.12 and against the minimum for the rope
+//! count ([`super::rope_checks`]), and D/d of the sheave and pulleys.
 
-use super::cases::{Case, Loading, Tensions, rated_load_at_bottom, tensions};
-use super::{Lift, RULE_SET, rope};
-use crate::check::{Check, Quantity, Relation, q};
+use super::cases::{Case, Loading, Tensions, tensions};
+use super::rope_checks::{d_ratio, rope_diameter, rope_minimum, rope_safety_factor};
+use super::{Lift, RULE_SET, StalledProtection};
+use crate::check::{Check, Quantity, Relation, Verdict, q};
 use crate::codes::{self, formula::Quantities};
 use crate::design::Limit;
 
@@ -13,12 +15,11 @@ use crate::design::Limit;
 pub const LOADING_CHECK: &str = "traction: car loading";
 /// Name of the emergency-braking traction check.
 pub const BRAKING_CHECK: &str = "traction: emergency braking";
-/// Name of the car-stalled traction check.
+/// Name of the car-stalled traction check at the highest position (counterweight on its buffer).
 pub const STALLED_CHECK: &str = "traction: car stalled";
-/// Name of the suspension ropes' safety factor check.
-pub const ROPE_SF_CHECK: &str = "suspension rope safety factor";
-/// Name of the D/d check.
-pub const D_RATIO_CHECK: &str = "D/d of the traction sheave and pulleys";
+/// Name of the car-stalled traction check at the lowest position (car on its buffer).
+pub const STALLED_BOTTOM_CHECK: &str = "traction: car stalled at the lowest position";
+pub use super::rope_checks::{D_RATIO_CHECK, ROPE_DIAMETER_CHECK, ROPE_MIN_CHECK, ROPE_SF_CHECK};
 
 /// The rule set's values for one lift.
 #[derive(Debug, Clone, PartialEq)]
@@ -35,6 +36,8 @@ pub struct Limits {
     pub rope_sf_min: Limit,
     /// Minimum D/d.
     pub d_ratio_min: Limit,
+    /// Minimum nominal diameter of a suspension rope (mm).
+    pub rope_diameter_min_mm: Limit,
 }
 
 impl Limits {
@@ -58,6 +61,7 @@ impl Limits {
             mu_stalled: get("lift_traction_mu_stalled")?,
             rope_sf_min: get("lift_rope_safety_factor_min")?,
             d_ratio_min: get("lift_d_ratio_min")?,
+            rope_diameter_min_mm: get("lift_rope_diameter_min_mm")?,
         })
     }
 
@@ -66,7 +70,7 @@ impl Limits {
         match case {
             Case::CarLoading => &self.mu_loading,
             Case::BrakingLoadedBottom | Case::BrakingEmptyTop => &self.mu_braking,
-            Case::CarStalled => &self.mu_stalled,
+            Case::CarStalled | Case::CarStalledBottom => &self.mu_stalled,
         }
     }
 }
@@ -108,7 +112,7 @@ pub fn traction(lift: &Lift, limits: &Limits, case: Case) -> Traction {
     let loading = Loading::of(lift, case, limits.loading_factor.value);
     let tensions = tensions(lift, &loading);
     let mu = limits.mu(case).value;
-    let f = lift.groove.factor(mu);
+    let f = lift.groove.factor(mu, case.duty());
     Traction { case, loading, tensions, mu, f, euler_limit: (f * lift.wrap_angle_rad).exp(), ratio: tensions.ratio() }
 }
 
@@ -149,15 +153,31 @@ fn traction_quantities(lift: &Lift, t: &Traction) -> (Vec<Quantity>, Vec<Quantit
 fn euler_limit(t: &Traction, mu: &Limit, lift: &Lift) -> Limit {
     Limit {
         value: t.euler_limit,
-        source: format!("e^{{fα}}, f by the {} groove formula with μ = {:.6}: {}", lift.groove.word(), t.mu, mu.source),
+        source: format!(
+            "e^{{fα}}, f by the {} groove formula {} with μ = {:.6}: {}",
+            lift.groove.word(),
+            lift.groove.formula(t.case.duty()),
+            t.mu,
+            mu.source
+        ),
         rule: mu.rule.clone(),
     }
 }
 
 /// A traction check of one case (or the worse of the two braking cases).
 pub fn traction_check(lift: &Lift, limits: &Limits, t: &Traction, name: &'static str) -> Check {
-    let (formula, relation) = if t.case.must_slip() {
-        ("T1/T2 ≥ e^{fα} (the ropes must slip); T from the masses, f from μ and the groove", Relation::AtLeast)
+    let (formula, relation) = if t.case == Case::CarStalledBottom {
+        (
+            "T1/T2 ≥ e^{fα} (the ropes must slip); the lowest position read as the empty car on its buffer, the machine \
+             turning down; T from the masses, f from μ and the groove",
+            Relation::AtLeast,
+        )
+    } else if t.case.must_slip() {
+        (
+            "T1/T2 ≥ e^{fα} (the ropes must slip); the empty car at the highest position, the counterweight on its \
+             buffer; T from the masses, f from μ and the groove",
+            Relation::AtLeast,
+        )
     } else {
         ("T1/T2 ≤ e^{fα} (the ropes must hold); T from the masses, f from μ and the groove", Relation::AtMost)
     };
@@ -177,10 +197,32 @@ pub fn traction_check(lift: &Lift, limits: &Limits, t: &Traction, name: &'static
         }
     };
     check.governing_case = Some(t.case.name().to_string());
-    if t.case.must_slip() && !t.holds() {
-        check.note =
-            Some("the ropes hold: the machine could haul the car up with its counterweight on the buffer".into());
+    if t.case.must_slip() && lift.stalled_protection == StalledProtection::ElectricSafetyDevice {
+        return declared_device(check, t);
     }
+    if t.case.must_slip() && !t.holds() {
+        check.note = Some(match t.case {
+            Case::CarStalledBottom => {
+                "the ropes hold: the machine could haul the counterweight up with the car on its buffer".into()
+            }
+            _ => "the ropes hold: the machine could haul the car up with its counterweight on the buffer".into(),
+        });
+    }
+    check
+}
+
+/// A stalled case where the sheet declares that an electric safety device stops the machine
+/// (EN 81-20 5.5.3 c): the ratio and e^{fα} are reported, the slip is not judged.
+fn declared_device(mut check: Check, t: &Traction) -> Check {
+    let holds = if t.holds() { "the ropes would slip" } else { "the ropes would hold" };
+    check.verdict = Verdict::NotEvaluated;
+    check.pass = true;
+    check.note = Some(format!(
+        "not judged: the sheet declares (lift.stalled_protection = \"electric-safety-device\") that an electric safety \
+         device stops the machine when the car or the counterweight is stalled, the alternative EN 81-20 5.5.3 c) gives \
+         to the ropes slipping; {holds} ({})",
+        t.case.name()
+    ));
     check
 }
 
@@ -196,70 +238,6 @@ pub fn braking_check(lift: &Lift, limits: &Limits, loaded: &Traction, empty: &Tr
     check
 }
 
-/// The suspension ropes' safety factor `n F_min / T_car` (rated load at rest at the lowest
-/// landing) against max(Sf(N_equiv, D_t/d_r), the minimum for the rope count).
-pub fn rope_safety_factor(lift: &Lift, limits: &Limits) -> Check {
-    let t = rated_load_at_bottom(lift);
-    let n = f64::from(lift.rope.count);
-    let actual = n * lift.rope.min_breaking_force_n / t.car_n;
-    let eq = rope::equivalent(lift);
-    let ratio = lift.sheave_diameter_m / lift.rope.diameter_m;
-    let sf = rope::required_safety_factor(eq.total, ratio);
-    let mut inputs = vec![
-        q("n", n, ""),
-        q("F_min (one rope)", lift.rope.min_breaking_force_n, "N"),
-        q("N_equiv(t)", eq.sheave, ""),
-        q("N_ps", eq.simple as f64, ""),
-        q("N_pr", eq.reverse as f64, ""),
-        q("D_t", lift.sheave_diameter_m, "m"),
-        q("d_r", lift.rope.diameter_m, "m"),
-    ];
-    if let Some(d) = eq.pulley_diameter_m {
-        inputs.push(q("D_p (mean of the pulleys)", d, "m"));
-    }
-    let mut intermediates = vec![
-        q("T_car (rated load at rest, lowest landing, all ropes)", t.car_n, "N"),
-        q("K_p = (D_t/D_p)^4", eq.k_p, ""),
-        q("N_equiv(p) = K_p(N_ps + 4N_pr)", eq.pulleys, ""),
-        q("N_equiv", eq.total, ""),
-        q("D_t/d_r", ratio, ""),
-        q("minimum for the rope count", limits.rope_sf_min.value, ""),
-    ];
-    let formula = "n·F_min/T_car ≥ max(Sf, 12 with ≥ 3 ropes or 16 with 2); Sf = 10^(2.6834 − log(695.85e6·N_equiv/(D_t/d_r)^8.567)/log(77.09·(D_t/d_r)^−2.894))";
-    let check = Check::new(ROPE_SF_CHECK, formula, Some(actual), "");
-    let Some(sf) = sf else {
-        return check
-            .inputs(inputs)
-            .intermediates(intermediates)
-            .against(Relation::AtLeast, Some(&limits.rope_sf_min), true)
-            .with_note(format!("Sf not evaluated: the formula needs D_t/d_r > {:.2}", rope::smallest_ratio()));
-    };
-    intermediates.push(q("Sf", sf, ""));
-    let (value, source) = if sf > limits.rope_sf_min.value {
-        (sf, format!("Sf from N_equiv = {:.4} and D_t/d_r = {ratio:.2} (EN 81-50's formula)", eq.total))
-    } else {
-        (limits.rope_sf_min.value, limits.rope_sf_min.source.clone())
-    };
-    let limit = Limit { value, source, rule: limits.rope_sf_min.rule.clone() };
-    check.inputs(inputs).intermediates(intermediates).against(Relation::AtLeast, Some(&limit), true)
-}
-
-/// D/d of the sheave and every pulley: the smallest against the minimum.
-pub fn d_ratio(lift: &Lift, limits: &Limits) -> Check {
-    let d = lift.rope.diameter_m;
-    let mut ratios = vec![("traction sheave".to_string(), lift.sheave_diameter_m / d)];
-    ratios.extend(lift.pulleys.iter().enumerate().map(|(i, p)| (format!("pulley {}", i + 1), p.diameter_m / d)));
-    let (case, smallest) = ratios.iter().min_by(|a, b| a.1.total_cmp(&b.1)).cloned().unwrap_or_default();
-    let mut inputs = vec![q("d_r", d, "m"), q("D_t", lift.sheave_diameter_m, "m")];
-    inputs.extend(lift.pulleys.iter().enumerate().map(|(i, p)| q(&format!("D_p{}", i + 1), p.diameter_m, "m")));
-    let intermediates = ratios.iter().map(|(name, r)| q(&format!("D/d {name}"), *r, "")).collect();
-    Check::new(D_RATIO_CHECK, "min(D/d) over the sheave and pulleys ≥ 40", Some(smallest), "")
-        .inputs(inputs)
-        .intermediates(intermediates)
-        .against(Relation::AtLeast, Some(&limits.d_ratio_min), true)
-        .governed_by(case)
-}
-
 /// Every check of the lift, in report order, with the traction cases they rest on.
 pub fn all(lift: &Lift, limits: &Limits) -> (Vec<Check>, Vec<Traction>) {
     let cases: Vec<Traction> = Case::ALL.iter().map(|&c| traction(lift, limits, c)).collect();
@@ -267,7 +245,10 @@ pub fn all(lift: &Lift, limits: &Limits) -> (Vec<Check>, Vec<Traction>) {
         traction_check(lift, limits, &cases[0], LOADING_CHECK),
         braking_check(lift, limits, &cases[1], &cases[2]),
         traction_check(lift, limits, &cases[3], STALLED_CHECK),
-        rope_safety_factor(lift, limits),
+        traction_check(lift, limits, &cases[4], STALLED_BOTTOM_CHECK),
+        rope_safety_factor(lift),
+        rope_minimum(lift, limits),
+        rope_diameter(lift, limits),
         d_ratio(lift, limits),
     ];
     (checks, cases)

@@ -1,16 +1,20 @@
-//! The groove factor f of EN 81-50's traction formulas: the friction coefficient μ between rope
-//! and groove raised by the wedging of the groove's shape. For each kind of groove the formula as
-//! publicly discussed (docs/lifts.md gives the sources):
+//! The groove factor f of EN 81-50's traction formulas (5.11): the friction coefficient μ between
+//! rope and groove raised by the wedging of the groove's shape. For each kind of groove the
+//! formula of EN 81-50:2020 5.11 as transcribed in a public note of TS EN 81-50:2021
+//! (docs/lifts.md, §Sources):
 //!
 //! ```text
 //! semicircular and undercut:  f = 4μ (cos(γ/2) − sin(β/2)) / (π − β − γ − sin β + sin γ)
-//!                             (semicircular without undercut: β = 0)
-//! V, hardened:                f = μ / sin(γ/2)
-//! V, unhardened:              f = 4μ (1 − sin(β/2)) / (π − β − sin β)
+//!                             (semicircular without undercut: β = 0), every case
+//! V, hardened:                f = μ / sin(γ/2), every case
+//! V, unhardened:              f = 4μ (1 − sin(β/2)) / (π − β − sin β)   car loading, emergency braking
+//!                             f = μ / sin(γ/2)                          car stalled
 //! ```
 //!
 //! β is the undercut angle, γ the groove (seat or V) angle. Each formula is used only where it
 //! is a finite positive multiple of μ; outside that range [`Groove::new`] refuses the angles.
+//! The standard's own ranges (β ≤ 105°, V γ ≥ 35°) are the rule set's and are enforced where the
+//! sheet is read (`crate::sheet`), at the key's line:column.
 
 use std::f64::consts::PI;
 
@@ -37,11 +41,24 @@ pub enum Groove {
         /// V angle γ (rad).
         gamma_rad: f64,
     },
-    /// V groove, unhardened, with the undercut β it wears to.
+    /// V groove, unhardened: the undercut β it wears to in the holding cases, its V angle γ in
+    /// the stalled case.
     VUnhardened {
         /// Undercut angle β (rad).
         beta_rad: f64,
+        /// V angle γ (rad).
+        gamma_rad: f64,
     },
+}
+
+/// Which of EN 81-50's traction cases a groove factor is for: an unhardened V groove has one
+/// formula for the cases where the ropes must hold and another for the stalled car.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Duty {
+    /// Car loading and emergency braking: the ropes must hold.
+    Hold,
+    /// Car stalled: the ropes must slip.
+    Stalled,
 }
 
 /// Why a groove's angles are outside its formula's range.
@@ -80,7 +97,10 @@ impl Groove {
             Groove::VHardened { gamma_rad } if !(gamma_rad > 0.0 && gamma_rad < PI) => {
                 Err(GrooveError::Gamma(GAMMA_V_RANGE))
             }
-            Groove::VUnhardened { beta_rad } if !angle(beta_rad) => Err(GrooveError::Beta(BETA_RANGE)),
+            Groove::VUnhardened { beta_rad, .. } if !angle(beta_rad) => Err(GrooveError::Beta(BETA_RANGE)),
+            Groove::VUnhardened { gamma_rad, .. } if !(gamma_rad > 0.0 && gamma_rad < PI) => {
+                Err(GrooveError::Gamma(GAMMA_V_RANGE))
+            }
             g => Ok(g),
         }
     }
@@ -95,29 +115,33 @@ impl Groove {
         }
     }
 
-    /// f/μ: the factor the groove multiplies μ by (independent of μ in every formula).
-    pub fn shape_factor(&self) -> f64 {
-        match *self {
-            Groove::Semicircular { gamma_rad } => u_factor(0.0, gamma_rad),
-            Groove::Undercut { beta_rad, gamma_rad } => u_factor(beta_rad, gamma_rad),
-            Groove::VHardened { gamma_rad } => 1.0 / (0.5 * gamma_rad).sin(),
-            Groove::VUnhardened { beta_rad } => 4.0 * (1.0 - (0.5 * beta_rad).sin()) / (PI - beta_rad - beta_rad.sin()),
+    /// f/μ in `duty`: the factor the groove multiplies μ by (independent of μ in every formula).
+    pub fn shape_factor(&self, duty: Duty) -> f64 {
+        match (*self, duty) {
+            (Groove::Semicircular { gamma_rad }, _) => u_factor(0.0, gamma_rad),
+            (Groove::Undercut { beta_rad, gamma_rad }, _) => u_factor(beta_rad, gamma_rad),
+            (Groove::VHardened { gamma_rad }, _) | (Groove::VUnhardened { gamma_rad, .. }, Duty::Stalled) => {
+                1.0 / (0.5 * gamma_rad).sin()
+            }
+            (Groove::VUnhardened { beta_rad, .. }, Duty::Hold) => {
+                4.0 * (1.0 - (0.5 * beta_rad).sin()) / (PI - beta_rad - beta_rad.sin())
+            }
         }
     }
 
-    /// The groove factor f for friction coefficient μ.
-    pub fn factor(&self, mu: f64) -> f64 {
-        mu * self.shape_factor()
+    /// The groove factor f for friction coefficient μ in `duty`.
+    pub fn factor(&self, mu: f64, duty: Duty) -> f64 {
+        mu * self.shape_factor(duty)
     }
 
-    /// The formula of f as printed in a check.
-    pub fn formula(&self) -> &'static str {
-        match self {
-            Groove::Semicircular { .. } | Groove::Undercut { .. } => {
+    /// The formula of f in `duty` as printed in a check.
+    pub fn formula(&self, duty: Duty) -> &'static str {
+        match (self, duty) {
+            (Groove::Semicircular { .. } | Groove::Undercut { .. }, _) => {
                 "f = 4μ(cos(γ/2) − sin(β/2))/(π − β − γ − sin β + sin γ)"
             }
-            Groove::VHardened { .. } => "f = μ/sin(γ/2)",
-            Groove::VUnhardened { .. } => "f = 4μ(1 − sin(β/2))/(π − β − sin β)",
+            (Groove::VHardened { .. }, _) | (Groove::VUnhardened { .. }, Duty::Stalled) => "f = μ/sin(γ/2)",
+            (Groove::VUnhardened { .. }, Duty::Hold) => "f = 4μ(1 − sin(β/2))/(π − β − sin β)",
         }
     }
 
@@ -125,13 +149,53 @@ impl Groove {
     pub fn angles_deg(&self) -> Vec<(&'static str, f64)> {
         match *self {
             Groove::Semicircular { gamma_rad } => vec![("β", 0.0), ("γ", gamma_rad.to_degrees())],
-            Groove::Undercut { beta_rad, gamma_rad } => {
+            Groove::Undercut { beta_rad, gamma_rad } | Groove::VUnhardened { beta_rad, gamma_rad } => {
                 vec![("β", beta_rad.to_degrees()), ("γ", gamma_rad.to_degrees())]
             }
             Groove::VHardened { gamma_rad } => vec![("γ", gamma_rad.to_degrees())],
-            Groove::VUnhardened { beta_rad } => vec![("β", beta_rad.to_degrees())],
         }
     }
+
+    /// (β, γ) in radians, 0 where the kind has no such angle.
+    pub fn angles_rad(&self) -> (f64, f64) {
+        match *self {
+            Groove::Semicircular { gamma_rad } | Groove::VHardened { gamma_rad } => (0.0, gamma_rad),
+            Groove::Undercut { beta_rad, gamma_rad } | Groove::VUnhardened { beta_rad, gamma_rad } => {
+                (beta_rad, gamma_rad)
+            }
+        }
+    }
+}
+
+/// The rule-set key of the largest undercut angle β (undercut U and unhardened V grooves).
+pub const UNDERCUT_MAX_KEY: &str = "lift_groove_undercut_angle_max_deg";
+/// The rule-set key of the smallest V angle γ (V grooves, hardened or not).
+pub const V_ANGLE_MIN_KEY: &str = "lift_groove_v_angle_min_deg";
+
+/// A groove angle's admissible bound from the rule set `en81-50`: the bound (deg) and the rule
+/// it comes from (code id, clause, source) in words.
+#[derive(Debug, Clone, PartialEq)]
+pub struct AngleLimit {
+    /// The bound (deg).
+    pub deg: f64,
+    /// `EN 81-50 <clause>, rule set en81-50` (`wrapcalc codes en81-50` gives the source).
+    pub rule: String,
+}
+
+/// The bound of rule-set key `key` (`None` when the rule set does not give it).
+pub fn angle_limit(key: &str) -> Option<AngleLimit> {
+    let set = crate::codes::find(super::RULE_SET)?;
+    let limit = set.limit(key)?.resolve(&set, &crate::codes::formula::Quantities::default()).ok()?;
+    let rule =
+        format!("EN 81-50 {}, rule set {}; `wrapcalc codes {}` gives the source", limit.rule.clause, set.id, set.id);
+    Some(AngleLimit { deg: limit.value, rule })
+}
+
+/// The bounds on β and γ that apply to a groove `kind` (a sheet word): `(β max, γ min)`.
+pub fn code_ranges(kind: &str) -> (Option<AngleLimit>, Option<AngleLimit>) {
+    let beta = matches!(kind, "undercut" | "v-unhardened").then(|| angle_limit(UNDERCUT_MAX_KEY)).flatten();
+    let gamma = matches!(kind, "v-hardened" | "v-unhardened").then(|| angle_limit(V_ANGLE_MIN_KEY)).flatten();
+    (beta, gamma)
 }
 
 /// `4(cos(γ/2) − sin(β/2))/(π − β − γ − sin β + sin γ)`.

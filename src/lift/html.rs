@@ -4,9 +4,10 @@
 //! and their figures.
 
 use super::output::{LiftRun, LiftSummary};
-use super::{Lift, RULE_SET, workbook};
-use crate::check::Check;
+use super::{Lift, RULE_SET, verdict, workbook};
+use crate::check::{Check, Verdict};
 use crate::report::html::{esc, style::CSS};
+use crate::report::verdict::Entry;
 use std::fmt::Write as _;
 
 /// The report as HTML text; `plots`: the cases' distribution figures exist beside it.
@@ -19,11 +20,12 @@ pub fn render(lift: &Lift, run: &LiftRun, plots: bool) -> String {
     let _ = writeln!(out, "<h1>{}</h1>", esc(&lift.title));
     let _ = writeln!(
         out,
-        "<p>Lift sheet <code>{}</code>, wrapcalc {}. Verdict: <strong>{}</strong>.</p>",
+        "<p>Lift sheet <code>{}</code>, wrapcalc {}.</p>\n<p class=\"overall\"><strong>{}</strong></p>",
         esc(&lift.sheet),
         summary.version,
         esc(&summary.headline)
     );
+    front(&mut out, &summary, run);
     basis(&mut out, &summary);
     data(&mut out, lift);
     let _ = writeln!(out, "<h2>Checks</h2>");
@@ -33,6 +35,81 @@ pub fn render(lift: &Lift, run: &LiftRun, plots: bool) -> String {
     cases(&mut out, &summary, plots);
     out.push_str("</body></html>\n");
     out
+}
+
+/// A typed verdict as a labelled span (the report's stylesheet colours it).
+fn verdict_span(v: Verdict) -> String {
+    let class = match v {
+        Verdict::Pass => "pass",
+        Verdict::Fail => "fail",
+        Verdict::Warning => "warning",
+        _ => "note",
+    };
+    format!("<span class=\"verdict {class}\">{}</span>", v.label())
+}
+
+fn margin(m: Option<f64>) -> String {
+    m.map_or_else(|| "—".into(), |m| format!("{:+.1} %", 100.0 * m))
+}
+
+fn value_limit(e: &Entry) -> String {
+    let n = |x: Option<f64>| x.map_or_else(|| "—".into(), crate::report::check_text::number);
+    format!("{} / {}", n(e.value), n(e.limit))
+}
+
+/// Page 1 under the headline: the checks counted, the governing check with value, limit and
+/// margin, every failure and warning with its sentence, the checks not judged with their reason.
+fn front(out: &mut String, s: &LiftSummary, run: &LiftRun) {
+    let t = verdict::tally(&run.checks);
+    let _ = writeln!(
+        out,
+        "<section id=\"verdict-first\" class=\"front\"><table class=\"small counts\"><tr><th>checks</th><th>pass</th>\
+         <th>fail</th><th>warnings</th><th>not judged</th></tr><tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr></table>",
+        run.checks.len(),
+        t.pass,
+        t.fail,
+        t.warnings,
+        t.unjudged
+    );
+    if let Some(g) = &s.verdict.governing {
+        let _ = writeln!(
+            out,
+            "<p class=\"governing\"><b>Governing check:</b> {} = {} (limit {}), margin {}, {} — <b>governing case:</b> {}</p>",
+            esc(&g.check),
+            g.value.map_or_else(|| "—".into(), crate::report::check_text::number),
+            g.limit.map_or_else(|| "none".into(), crate::report::check_text::number),
+            margin(g.margin),
+            verdict_span(g.verdict),
+            esc(g.governing_case.as_deref().unwrap_or("the lift"))
+        );
+    }
+    let rows = |out: &mut String, entries: &[Entry]| {
+        for e in entries {
+            let _ = writeln!(
+                out,
+                "<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>",
+                esc(&e.check),
+                esc(&value_limit(e)),
+                margin(e.margin),
+                verdict_span(e.verdict),
+                esc(&e.explanation)
+            );
+        }
+    };
+    let head = "<tr><th>check</th><th>value / limit</th><th>margin</th><th>verdict</th><th>what it means</th></tr>";
+    if !s.verdict.attention.is_empty() {
+        let _ = writeln!(out, "<h3>Failures and warnings</h3><table class=\"small verdicts front\">{head}");
+        rows(out, &s.verdict.attention);
+        out.push_str("</table>\n");
+    }
+    if !s.verdict.unjudged.is_empty() {
+        let _ = writeln!(out, "<h3>Checks not judged</h3><table class=\"small verdicts front\">{head}");
+        rows(out, &s.verdict.unjudged);
+        out.push_str("</table>\n");
+    }
+    out.push_str(
+        "<p class=\"note\">Every check with its formula, inputs, limit, clause and source: section Checks.</p></section>\n",
+    );
 }
 
 fn basis(out: &mut String, s: &LiftSummary) {
@@ -51,6 +128,27 @@ fn basis(out: &mut String, s: &LiftSummary) {
         "<p>Tensions at the sheave from the masses, the roping and the hanging ropes (docs/lifts.md); the capstan \
          law with the groove factor f in place of μ; each case's distribution over the wrap by creep theory \
          (level 1) with f as the friction coefficient.</p>"
+    );
+    let protection = if s.stalled_protection == "electric-safety-device" {
+        "the sheet declares that an electric safety device stops the machine when the car or the counterweight is \
+         stalled (EN 81-20 5.5.3 c)): the two stalled cases are reported, not judged"
+    } else {
+        "the ropes must slip when the car or the counterweight is stalled (EN 81-20 5.5.3 c)): both stalled cases are judged"
+    };
+    let n_equiv = match (s.n_equiv_t_source, s.n_equiv_t) {
+        ("sheet", Some(n)) => {
+            format!("N_equiv(t) = {n} from the sheet (lift.n_equiv_t), overriding EN 81-50's Table 2")
+        }
+        (_, Some(n)) => format!("N_equiv(t) = {n:.4} from EN 81-50's Table 2, linear between its rows"),
+        _ => "N_equiv(t): neither given nor in Table 2 for this groove, so Sf is not judged".to_string(),
+    };
+    let _ = writeln!(
+        out,
+        "<p>Assumptions this report rests on: {} wrap; {protection}; {}. The groove factors, Table 2, Figure 10's range \
+         and the stalled positions were read in a public transcription of TS EN 81-50:2021 (a secondary source; \
+         docs/lifts.md, Sources), to be confirmed against the standard in force.</p>",
+        s.wrap,
+        esc(&n_equiv)
     );
 }
 

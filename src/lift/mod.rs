@@ -5,19 +5,24 @@
 //! sheave; the ropes must hold by friction while the car is loaded (125 % of the rated load at
 //! the lowest landing) and during an emergency stop, and must slip when the counterweight rests
 //! on its buffer and the machine keeps turning up (the car must not be hauled into the
-//! overhead). EN 81-50 decides each case by the capstan law with a *groove factor* f in place of
-//! μ (`T1/T2 ≤ e^{fα}`, or `≥` for the stalled car), and the ropes by a safety factor Sf that
-//! grows with the equivalent number of pulleys. Beside the verdicts, each case's wrap is solved
+//! overhead), or the car on its buffer and the machine turning down — unless an electric safety
+//! device stops the machine (EN 81-20 5.5.3 c)). EN 81-50 decides each case by the capstan law
+//! with a *groove factor* f in place of μ (`T1/T2 ≤ e^{fα}`, or `≥` for the stalled car), and
+//! the ropes by a safety factor Sf that grows with the equivalent number of pulleys (Table 2's
+//! N_equiv(t) for the groove, the pulleys' bends). Beside the verdicts, each case's wrap is solved
 //! by the level-1 creep model of [`crate::model::level1`] with f as the friction coefficient:
 //! stick and creep arcs, reserve arc, demarcation point, and by root finding the critical
 //! friction coefficient and the car load at which traction is lost.
 //!
-//! * [`groove`]: the groove factor f of each groove kind, with its valid range;
+//! * [`groove`]: the groove factor f of each groove kind and case, with its valid range and the
+//!   standard's;
 //! * [`cases`]: the rope tensions at the sheave of each traction case from the masses;
-//! * [`rope`]: the equivalent number of pulleys and Sf;
-//! * [`checks`]: every verdict as a [`crate::check::Check`] record with the rule set `en81-50`;
+//! * [`rope`]: the equivalent number of pulleys (Table 2's N_equiv(t), double wrap) and Sf;
+//! * [`checks`]: every verdict as a [`crate::check::Check`] record with the rule set `en81-50`
+//!   ([`rope_checks`]: the ropes' and D/d);
 //! * [`wrap`]: each case's level-1 distribution, critical μ and load at traction loss;
-//! * [`output`]: the run's summary (JSON, CSV) and terminal table;
+//! * [`output`]: the run's summary (JSON, CSV) and terminal table; [`verdict`]: what the
+//!   verdict rests on (the governing check, a sentence per failure and warning);
 //! * [`workbook`]: checks.xlsx, whose formulas recompute every case; [`html`]: report.html;
 //! * [`command`]: what `run` and `check` do with a lift sheet.
 
@@ -29,6 +34,8 @@ pub mod groove;
 pub mod html;
 pub mod output;
 pub mod rope;
+pub mod rope_checks;
+pub mod verdict;
 pub mod workbook;
 pub mod wrap;
 
@@ -66,6 +73,44 @@ pub enum Bend {
     Simple,
     /// A reverse bend (the rope bends one way, then the other).
     Reverse,
+}
+
+/// How the ropes wrap the traction sheave.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum WrapKind {
+    /// Once over the traction sheave.
+    Single,
+    /// Twice, over the traction sheave and a secondary sheave (double wrap).
+    Double,
+}
+
+impl WrapKind {
+    /// The sheet's word.
+    pub fn word(self) -> &'static str {
+        match self {
+            WrapKind::Single => "single",
+            WrapKind::Double => "double",
+        }
+    }
+}
+
+/// What keeps the machine from hauling a stalled car or counterweight (EN 81-20 5.5.3 c)).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum StalledProtection {
+    /// The ropes slip on the sheave: the two stalled cases are judged.
+    RopesSlip,
+    /// An electric safety device stops the machine: the stalled cases are reported, not judged.
+    ElectricSafetyDevice,
+}
+
+impl StalledProtection {
+    /// The sheet's word.
+    pub fn word(self) -> &'static str {
+        match self {
+            StalledProtection::RopesSlip => "ropes-slip",
+            StalledProtection::ElectricSafetyDevice => "electric-safety-device",
+        }
+    }
 }
 
 /// A deflection or diverting pulley.
@@ -127,8 +172,14 @@ pub struct Lift {
     pub wrap_angle_rad: f64,
     /// The sheave's groove.
     pub groove: groove::Groove,
-    /// N_equiv(t), the traction sheave's equivalent number of pulleys for its groove.
-    pub n_equiv_t: f64,
+    /// N_equiv(t) of one pass over the sheave as the sheet gives it (overriding Table 2), if given.
+    pub n_equiv_t: Option<f64>,
+    /// Single or double wrap.
+    pub wrap: WrapKind,
+    /// Pitch diameter of a double wrap's secondary sheave (m).
+    pub secondary_sheave_diameter_m: Option<f64>,
+    /// What keeps the machine from hauling a stalled car or counterweight.
+    pub stalled_protection: StalledProtection,
     /// Deflection and diverting pulleys.
     pub pulleys: Vec<Pulley>,
     /// Deceleration of the emergency braking case (m/s²).

@@ -5,9 +5,12 @@
 
 use super::cases::Case;
 use super::checks::{self, Limits, Traction};
+use super::rope::{self, SheaveSource};
 use super::wrap::{CaseWrap, Margins, case_wrap, margins};
-use super::{Lift, RULE_SET};
-use crate::check::{Check, Verdict};
+use super::{Lift, RULE_SET, verdict};
+use crate::check::Check;
+use crate::report::checklist::headline;
+use crate::report::verdict::Overview;
 use serde::Serialize;
 use std::fmt::Write as _;
 
@@ -166,8 +169,25 @@ pub struct LiftSummary {
     pub kind: &'static str,
     /// Whether every binding check passes (exit status 0).
     pub all_checks_pass: bool,
-    /// One line: how many checks pass, fail, warn.
+    /// One line: the verdicts counted, as a hoist's headline.
     pub headline: String,
+    /// How many checks are warnings.
+    pub warnings: usize,
+    /// How many checks are not judged (not evaluated, with the reason in the check's note).
+    pub unjudged: usize,
+    /// What the verdict rests on: the governing check, each failure and warning with its
+    /// sentence, the checks not judged with their reason (as a hoist's `verdict`).
+    pub verdict: Overview,
+    /// How the ropes wrap the sheave: `"single"` or `"double"`.
+    pub wrap: &'static str,
+    /// What stops the machine hauling a stalled car or counterweight: `"ropes-slip"` (the
+    /// stalled cases judged) or `"electric-safety-device"` (declared; reported, not judged).
+    pub stalled_protection: &'static str,
+    /// N_equiv(t) of the traction sheave, all passes (null where neither given nor in Table 2).
+    pub n_equiv_t: Option<f64>,
+    /// Where N_equiv(t) comes from: `"table"` (EN 81-50 Table 2), `"sheet"` (lift.n_equiv_t,
+    /// overriding the table) or `"none"`.
+    pub n_equiv_t_source: &'static str,
     /// Run time (ms).
     pub runtime_ms: f64,
     /// The rule set.
@@ -181,11 +201,12 @@ pub struct LiftSummary {
 impl LiftSummary {
     /// The summary of `run`.
     pub fn of(lift: &Lift, run: &LiftRun) -> Self {
-        let failing = run.checks.iter().filter(|c| c.verdict == Verdict::Fail).count();
-        let headline = if failing == 0 {
-            format!("all {} checks pass", run.checks.len())
-        } else {
-            format!("{failing} of {} checks fail", run.checks.len())
+        let tally = verdict::tally(&run.checks);
+        let eq = rope::equivalent(lift).ok();
+        let n_equiv_t_source = match eq.as_ref().map(|e| &e.sheave_source) {
+            Some(SheaveSource::Sheet) => "sheet",
+            Some(SheaveSource::Table { .. }) => "table",
+            None => "none",
         };
         Self {
             sheet: lift.sheet.clone(),
@@ -193,7 +214,14 @@ impl LiftSummary {
             version: env!("CARGO_PKG_VERSION"),
             kind: "lift",
             all_checks_pass: run.all_checks_pass(),
-            headline,
+            headline: headline(run.all_checks_pass(), &tally),
+            warnings: tally.warnings,
+            unjudged: tally.unjudged,
+            verdict: verdict::overview(&run.checks),
+            wrap: lift.wrap.word(),
+            stalled_protection: lift.stalled_protection.word(),
+            n_equiv_t: eq.map(|e| e.sheave),
+            n_equiv_t_source,
             runtime_ms: run.runtime_ms,
             code: crate::codes::find(RULE_SET).map(|s| CodeRef { id: RULE_SET, code: s.code, edition: s.edition }),
             scenes: run.cases.iter().map(|c| case_summary(lift, c)).collect(),
@@ -244,8 +272,15 @@ pub fn table(lift: &Lift, run: &LiftRun) -> String {
             let _ = writeln!(out, "  {:<22} traction lost at {load:.1} kg in the car", "");
         }
     }
-    let verdict = if run.all_checks_pass() { "all checks pass" } else { "a check FAILS" };
-    let _ = writeln!(out, "\n{verdict}");
+    let summary = LiftSummary::of(lift, run);
+    let _ = writeln!(out, "\nVerdict:");
+    if let Some(g) = summary.verdict.governing_line() {
+        let _ = writeln!(out, "  {g}");
+    }
+    for e in summary.verdict.attention.iter().chain(&summary.verdict.unjudged) {
+        let _ = writeln!(out, "  {} {}: {}", e.verdict.label(), e.check, e.explanation);
+    }
+    let _ = writeln!(out, "\n{}", summary.headline);
     out
 }
 

@@ -7,6 +7,7 @@
 use super::Lift;
 use super::cases::{Case, Loading, tensions};
 use super::checks::Traction;
+use super::groove::Duty;
 use crate::design::{Direction, Side};
 use crate::model::level0::EndState;
 use crate::model::level1::steady_rolling;
@@ -49,7 +50,7 @@ pub struct Margins {
 pub fn margins(lift: &Lift, t: &Traction) -> Margins {
     Margins {
         reserve_arc_rad: t.ratio.map(|r| lift.wrap_angle_rad - r.ln() / t.f),
-        critical_mu: t.ratio.and_then(|r| critical_mu(lift, r)),
+        critical_mu: t.ratio.and_then(|r| critical_mu(lift, r, t.case.duty())),
         traction_loss_load_kg: traction_loss_load(lift, t),
     }
 }
@@ -86,9 +87,10 @@ pub fn case_wrap(lift: &Lift, t: &Traction, nodes: usize) -> Result<CaseWrap, St
     Ok(CaseWrap { summary, distribution, gross_slip: rolling.gross_slip, active_arc_rad: rolling.active_arc_rad })
 }
 
-/// The μ at which `e^{f(μ)α}` equals `ratio`, by Brent's method on `[0, MU_SEARCH_MAX]`.
-pub fn critical_mu(lift: &Lift, ratio: f64) -> Option<f64> {
-    let h = |mu: f64| lift.groove.factor(mu) * lift.wrap_angle_rad - ratio.ln();
+/// The μ at which `e^{f(μ)α}` equals `ratio` with the groove formula of `duty`, by Brent's
+/// method on `[0, MU_SEARCH_MAX]`.
+pub fn critical_mu(lift: &Lift, ratio: f64, duty: Duty) -> Option<f64> {
+    let h = |mu: f64| lift.groove.factor(mu, duty) * lift.wrap_angle_rad - ratio.ln();
     brent(h, 0.0, MU_SEARCH_MAX, 1e-14, &mut RootStats::default()).ok()
 }
 

@@ -7,7 +7,7 @@ use super::diag::Collector;
 use super::rules::{At, NON_NEGATIVE, POSITIVE, Rule, checked, in_range, optional, required};
 use crate::design::{STANDARD_GRAVITY_M_S2, Side};
 use crate::lift::groove::{Groove, GrooveError};
-use crate::lift::{Bend, CompensationKind, Lift, LiftRope, Pulley};
+use crate::lift::{Bend, CompensationKind, Lift, LiftRope, Pulley, StalledProtection, WrapKind};
 use serde::Deserialize;
 use toml::Spanned;
 use toml::de::DeTable;
@@ -24,6 +24,10 @@ pub const DEFAULT_EMERGENCY_DECEL_M_S2: f64 = 0.5;
 pub const RATED_SPEED_MAX_M_S: f64 = 20.0;
 /// Largest wrap angle of a lift's sheave (deg): double wrap at most a full turn.
 pub const LIFT_WRAP_MAX_DEG: f64 = 360.0;
+/// How the ropes may wrap the sheave, as the sheet writes it (the first is the default).
+pub const WRAPS: &[&str] = &["single", "double"];
+/// What may keep the machine from hauling a stalled car (the first is the default).
+pub const PROTECTIONS: &[&str] = &["ropes-slip", "electric-safety-device"];
 /// Most deflection and diverting pulleys.
 pub const MAX_PULLEYS: usize = 16;
 
@@ -52,6 +56,9 @@ pub struct RawLift {
     pub groove_undercut_angle_deg: Option<Spanned<f64>>,
     pub groove_angle_deg: Option<Spanned<f64>>,
     pub n_equiv_t: Option<Spanned<f64>>,
+    pub wrap: Option<Spanned<String>>,
+    pub secondary_sheave_diameter_mm: Option<Spanned<f64>>,
+    pub stalled_protection: Option<Spanned<String>>,
     pub emergency_decel_m_s2: Option<Spanned<f64>>,
     pub car_side: Option<Spanned<i64>>,
     pub pulley: Option<Spanned<Vec<Spanned<RawLiftPulley>>>>,
@@ -200,7 +207,17 @@ fn lift(c: &mut Collector, raw: &Spanned<RawLift>, g_m_s2: f64) -> Option<Lift> 
     };
     let wrap_angle_deg = required(c, at, "wrap_angle_deg", &r.wrap_angle_deg, wrap_rule);
     let groove = groove(c, at, r);
-    let n_equiv_t = required(c, at, "n_equiv_t", &r.n_equiv_t, POSITIVE);
+    // Absent: Table 2 gives it (`Some(None)`); `None`: a bad value.
+    let n_equiv_t = match &r.n_equiv_t {
+        Some(v) => checked(c, at, "n_equiv_t", v, POSITIVE).map(Some),
+        None => Some(None),
+    };
+    let double = double_wrap(c, at, r);
+    let protection = match word(c, at, "stalled_protection", &r.stalled_protection, PROTECTIONS, Some(PROTECTIONS[0])) {
+        Some("electric-safety-device") => Some(StalledProtection::ElectricSafetyDevice),
+        Some(_) => Some(StalledProtection::RopesSlip),
+        None => None,
+    };
     let decel_rule = Rule { ok: |a| a > 0.0 && a < 9.81, allowed: "a deceleration 0 < a < g m/s²" };
     let decel =
         optional(c, at, "emergency_decel_m_s2", &r.emergency_decel_m_s2, decel_rule, DEFAULT_EMERGENCY_DECEL_M_S2);
@@ -239,10 +256,28 @@ fn lift(c: &mut Collector, raw: &Spanned<RawLift>, g_m_s2: f64) -> Option<Lift> 
         wrap_angle_rad: wrap_angle_deg?.to_radians(),
         groove: groove?,
         n_equiv_t: n_equiv_t?,
+        wrap: if double?.is_some() { WrapKind::Double } else { WrapKind::Single },
+        secondary_sheave_diameter_m: double?,
+        stalled_protection: protection?,
         pulleys,
         emergency_decel_m_s2: decel,
         car_side: car_side?,
     })
+}
+
+/// A double wrap's secondary sheave diameter (m): `Some(Some(d))` with `wrap = "double"` (which
+/// requires it), `Some(None)` with a single wrap (which refuses it), `None` on an error.
+fn double_wrap(c: &mut Collector, at: At, r: &RawLift) -> Option<Option<f64>> {
+    let kind = word(c, at, "wrap", &r.wrap, WRAPS, Some(WRAPS[0]))?;
+    match (kind, &r.secondary_sheave_diameter_mm) {
+        ("double", d) => required(c, at, "secondary_sheave_diameter_mm", d, POSITIVE).map(|d| Some(d * MILLIMETRES)),
+        (_, Some(d)) => {
+            let msg = "only with wrap = \"double\" (the secondary sheave of a double wrap); remove it or set wrap";
+            c.push(Some(d.span()), None, &at.key("secondary_sheave_diameter_mm"), msg);
+            None
+        }
+        (_, None) => Some(None),
+    }
 }
 
 /// The counterweight's mass: given, or `P + q·Q` from the balance ratio q (exactly one of them).
@@ -305,14 +340,13 @@ fn compensation(c: &mut Collector, at: At, r: &RawLift) -> Option<(CompensationK
     }
 }
 
-/// The groove: its kind, the angles its formula needs (and no other), in the formula's range.
+/// The groove: its kind, the angles its formulas need (and no other), in the formulas' range
+/// and in the standard's (the rule set's β ≤ 105°, V γ ≥ 35°), each refused at its value.
 fn groove(c: &mut Collector, at: At, r: &RawLift) -> Option<Groove> {
     let kind = word(c, at, "groove", &r.groove, crate::lift::groove::KINDS, None)?;
     let (needs_beta, needs_gamma) = match kind {
-        "semicircular" => (false, true),
-        "undercut" => (true, true),
-        "v-hardened" => (false, true),
-        _ => (true, false),
+        "semicircular" | "v-hardened" => (false, true),
+        _ => (true, true),
     };
     let angle = |c: &mut Collector, key: &str, v: &Option<Spanned<f64>>, needed: bool| match (v, needed) {
         (Some(v), false) => {
@@ -329,9 +363,9 @@ fn groove(c: &mut Collector, at: At, r: &RawLift) -> Option<Groove> {
         "semicircular" => Groove::Semicircular { gamma_rad },
         "undercut" => Groove::Undercut { beta_rad, gamma_rad },
         "v-hardened" => Groove::VHardened { gamma_rad },
-        _ => Groove::VUnhardened { beta_rad },
+        _ => Groove::VUnhardened { beta_rad, gamma_rad },
     };
-    Groove::new(g)
+    let g = Groove::new(g)
         .map_err(|e| {
             let (key, value) = match e {
                 GrooveError::Beta(_) | GrooveError::Sum(_) => {
@@ -342,7 +376,40 @@ fn groove(c: &mut Collector, at: At, r: &RawLift) -> Option<Groove> {
             let span = value.as_ref().map(Spanned::span).or(Some(at.table_span.clone()));
             c.push(span, None, &at.key(key), format!("outside the {kind} groove formula's range: {e}"));
         })
-        .ok()
+        .ok()?;
+    groove_in_code_range(c, at, r, kind, g)
+}
+
+/// The standard's ranges of the groove angles (rule set en81-50), each refused at its value.
+fn groove_in_code_range(c: &mut Collector, at: At, r: &RawLift, kind: &str, g: Groove) -> Option<Groove> {
+    let (beta_max, gamma_min) = crate::lift::groove::code_ranges(kind);
+    let mut ok = true;
+    // The values as written (degrees), so that a bound itself is not refused by rounding.
+    if let (Some(l), Some(v)) = (beta_max, &r.groove_undercut_angle_deg)
+        && *v.get_ref() > l.deg
+    {
+        let msg = format!(
+            "β = {}° is beyond the standard's range for this {kind} groove: expected β ≤ {}° ({})",
+            v.get_ref(),
+            l.deg,
+            l.rule
+        );
+        c.push(Some(v.span()), None, &at.key("groove_undercut_angle_deg"), msg);
+        ok = false;
+    }
+    if let (Some(l), Some(v)) = (gamma_min, &r.groove_angle_deg)
+        && *v.get_ref() < l.deg
+    {
+        let msg = format!(
+            "γ = {}° is below the standard's range for this {kind} groove: expected γ ≥ {}° ({})",
+            v.get_ref(),
+            l.deg,
+            l.rule
+        );
+        c.push(Some(v.span()), None, &at.key("groove_angle_deg"), msg);
+        ok = false;
+    }
+    ok.then_some(g)
 }
 
 fn pulleys(c: &mut Collector, r: &RawLift) -> Option<Vec<Pulley>> {

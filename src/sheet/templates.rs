@@ -1,5 +1,5 @@
 //! The commented template sheets `wrapcalc new KIND` writes: each a complete sheet that runs as
-//! written, embedded in the binary so that it needs no files beside it.
+//! written (the hoists' and a lift's), embedded in the binary so that it needs no files beside it.
 
 use std::io::Write;
 use std::path::Path;
@@ -9,7 +9,7 @@ use std::path::Path;
 pub struct Template {
     /// The name given to `wrapcalc new`.
     pub kind: &'static str,
-    /// One line saying what hoist it describes.
+    /// One line saying what hoist or lift it describes.
     pub summary: &'static str,
     /// The sheet's text.
     pub text: &'static str,
@@ -26,6 +26,11 @@ pub const TEMPLATES: &[Template] = &[
         kind: "ground-skips",
         summary: "ground-mounted multi-rope hoist with two skips (wrap angle given directly)",
         text: include_str!("../../templates/ground-skips.toml"),
+    },
+    Template {
+        kind: "lift",
+        summary: "electric traction lift (car, counterweight, grooved sheave) judged by EN 81-50",
+        text: include_str!("../../templates/lift.toml"),
     },
 ];
 

@@ -4,7 +4,8 @@ use super::Type::{Integer, Number, Tables, Text};
 use super::{Default as D, Key, Table};
 use crate::lift::groove::KINDS;
 use crate::sheet::lift::{
-    DEFAULT_EMERGENCY_DECEL_M_S2, LIFT_ROPE_COUNT_MAX, LIFT_WRAP_MAX_DEG, MAX_PULLEYS, RATED_SPEED_MAX_M_S, ROPINGS,
+    DEFAULT_EMERGENCY_DECEL_M_S2, LIFT_ROPE_COUNT_MAX, LIFT_WRAP_MAX_DEG, MAX_PULLEYS, PROTECTIONS,
+    RATED_SPEED_MAX_M_S, ROPINGS, WRAPS,
 };
 
 /// `[lift]` and `[[lift.pulley]]`.
@@ -95,27 +96,43 @@ fn sheave_and_cases() -> Vec<Key> {
         Key::new("groove", Text, "", "the groove kind").required().words(KINDS),
         Key::new("groove_undercut_angle_deg", Number, "deg", "undercut angle β")
             .when("required for undercut and v-unhardened grooves")
-            .note("0 ≤ β < 180, and β + γ < 180 for undercut; only for undercut and v-unhardened"),
+            .note("0 ≤ β < 180, β + γ < 180 for undercut, and β ≤ 105 (EN 81-50 5.11); only for undercut and v-unhardened"),
         Key::new("groove_angle_deg", Number, "deg", "groove angle γ (seat angle of a U groove, angle of a V groove)")
-            .when("required for semicircular, undercut and v-hardened grooves")
-            .note("0 ≤ γ < 180 (0 < γ for v-hardened); only for semicircular, undercut and v-hardened"),
+            .required()
+            .note("0 ≤ γ < 180 for U grooves; 35 ≤ γ < 180 for V grooves (EN 81-50 5.11)"),
         Key::new(
             "n_equiv_t",
             Number,
             "",
-            "N_equiv(t): the sheave's equivalent number of pulleys for its groove, from EN 81-50's table",
+            "N_equiv(t) of one pass over the sheave, overriding EN 81-50's Table 2 (the report says so)",
         )
-        .required()
+        .when("required where Table 2 has no value for the groove (undercut β < 75°, V γ > 50°)")
         .positive(),
+        Key::new("wrap", Text, "", "single wrap, or double wrap over a secondary sheave")
+            .default(D::Word(WRAPS[0]))
+            .words(WRAPS),
+        Key::new("secondary_sheave_diameter_mm", Number, "mm", "pitch diameter of a double wrap's secondary sheave")
+            .when("required with wrap = \"double\"")
+            .positive()
+            .note("only with wrap = \"double\""),
         Key::new(
             "emergency_decel_m_s2",
             Number,
             "m/s²",
-            "deceleration of the emergency braking case (0.8 with reduced buffer stroke)",
+            "deceleration of the emergency braking case (EN 81-50 5.11: at least 0.5 m/s²)",
         )
         .default(D::Number(DEFAULT_EMERGENCY_DECEL_M_S2))
         .positive()
         .note("below g, and below g/r with r:1 roping"),
+        Key::new(
+            "stalled_protection",
+            Text,
+            "",
+            "what stops the machine hauling a stalled car or counterweight (EN 81-20 5.5.3 c)): the ropes slip (both \
+             stalled cases judged) or an electric safety device (both reported, not judged)",
+        )
+        .default(D::Word(PROTECTIONS[0]))
+        .words(PROTECTIONS),
         Key::new("car_side", Integer, "", "the side of the wrap the car hangs on (the counterweight on the other)")
             .default(D::Number(1.0))
             .min(1.0, true)
