@@ -413,3 +413,26 @@ fn basis_names_each_clause_and_codes_lists_coverage() {
     let line = coverage.lines().find(|l| l.trim_start().starts_with("at-bpvs")).expect("at-bpvs");
     assert!(line.contains("D/d of the friction pulley") && line.contains("friction coefficient of the lining, wet"));
 }
+
+/// Bad inputs of the new keys: each error names the file, line:column and the sheet's key and
+/// says what would be valid (`wrapcalc check` exits 1).
+#[test]
+fn bad_code_inputs_are_refused_with_the_key() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    for (req, key, valid) in [
+        ("rope_construction = \"braided\"\n", "requirements.rope_construction", "\"locked-coil\""),
+        ("lining_mu_wet = 3.0\n", "requirements.lining_mu_wet", "0 < μ ≤ 2"),
+        ("dynamic_allowance_min = 1.5\n", "requirements.dynamic_allowance_min", "0 < z ≤ 1"),
+        ("certified_unbalanced_load_n = -1.0\n", "requirements.certified_unbalanced_load_n", "> 0"),
+    ] {
+        let path = dir.path().join("bad.toml");
+        std::fs::write(&path, loads_sheet(12_000.0, 10_000.0, 0.04, req)).expect("writes");
+        let out = common::run_wrapcalc(["check".as_ref(), path.as_os_str()]);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{err}");
+        // The [requirements] line is line 13 of the sheet; its value starts after `key = `.
+        let column = req.find('=').expect("a key") + 3;
+        assert!(err.contains(&format!("bad.toml:13:{column}")), "{err}");
+        assert!(err.contains(key) && err.contains(valid), "{err}");
+    }
+}
