@@ -436,3 +436,15 @@ fn bad_code_inputs_are_refused_with_the_key() {
         assert!(err.contains(key) && err.contains(valid), "{err}");
     }
 }
+
+/// A formula limit shows the values it was evaluated at: H taken from `hanging_length_m` (a
+/// default from `[hoist]` otherwise) appears in the check's limit source.
+#[test]
+fn formula_limit_names_the_values_it_used() {
+    let r = run(&loads_sheet(12_000.0, 10_000.0, 0.04, "code = \"fr-51-508\"\nhanging_length_m = 812.0\n"));
+    let source = check(&r, ROPE_SF_CHECK).limit_source.clone().expect("a source");
+    assert!(source.contains("evaluated at H = 812 m"), "{source}");
+    let r = run(&loads_sheet(12_000.0, 10_000.0, 0.02, "code = \"at-bpvs\"\n"));
+    let source = check(&r, PULLEY_D_CHECK).limit_source.clone().expect("a source");
+    assert!(source.contains("evaluated at d = 0.02 m"), "{source}");
+}

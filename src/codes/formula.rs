@@ -104,6 +104,25 @@ impl Quantities {
     }
 }
 
+impl Quantities {
+    /// `name = value unit` of each variable in `names` the design gives, for a limit's source
+    /// (so that the value a formula used is shown with the result).
+    pub fn describe(&self, names: &[&str]) -> Vec<String> {
+        names
+            .iter()
+            .filter_map(|name| {
+                let unit = VARIABLES.iter().find(|v| v.name == *name).map_or("", |v| v.unit);
+                match self.value(name)? {
+                    Value::String(s) => Some(format!("{name} = \"{s}\"")),
+                    Value::Float(x) if unit.is_empty() => Some(format!("{name} = {x}")),
+                    Value::Float(x) => Some(format!("{name} = {x} {unit}")),
+                    _ => None,
+                }
+            })
+            .collect()
+    }
+}
+
 /// A parsed formula with the text it came from.
 #[derive(Debug, Clone)]
 pub struct Formula {

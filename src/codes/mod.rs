@@ -173,7 +173,17 @@ impl RuleLimit {
         match self.formula.eval(q) {
             FormulaOutcome::Value(v) => Ok(Limit {
                 value: v,
-                source: format!("{}, {} ({}); read from {}", set.code, self.clause, self.edition, self.source),
+                source: format!(
+                    "{}, {} ({}); read from {}{}",
+                    set.code,
+                    self.clause,
+                    self.edition,
+                    self.source,
+                    match q.describe(&self.formula.variables()) {
+                        used if used.is_empty() => String::new(),
+                        used => format!("; evaluated at {}", used.join(", ")),
+                    }
+                ),
                 rule: Rule { code: set.id.clone(), clause: self.clause.clone() },
             }),
             FormulaOutcome::Missing(vars) => Err(format!(
