@@ -82,20 +82,36 @@ pub fn design_checks(design: &Design, statics: &[StaticState], peak: Option<Peak
             .inputs(vec![q("μ", design.pulley.mu, "")])
             .against(Relation::AtMost, req.mu_design_max.as_ref(), false),
     );
+    let allowed = req.dynamic_allowance_min.is_some();
     checks.push(rating(
         design,
         statics,
-        (TENSION_RATING_CHECK, "n·max(T1, T2), static"),
+        (
+            TENSION_RATING_CHECK,
+            if allowed {
+                "n·max(T1, T2)·(1 + z), static plus the dynamic allowance z"
+            } else {
+                "n·max(T1, T2), static"
+            },
+        ),
         &|s| s.t1_n.max(s.t2_n),
         req.static_tension_max_n.as_ref(),
     ));
     checks.push(rating(
         design,
         statics,
-        (DIFFERENCE_RATING_CHECK, "n·|T1 − T2|, static"),
+        (
+            DIFFERENCE_RATING_CHECK,
+            if allowed {
+                "n·|T1 − T2|·(1 + z), static plus the dynamic allowance z"
+            } else {
+                "n·|T1 − T2|, static"
+            },
+        ),
         &|s| (s.t1_n - s.t2_n).abs(),
         req.static_tension_difference_max_n.as_ref(),
     ));
+    checks.extend(super::codes::code_checks(design));
     checks
 }
 
@@ -179,11 +195,21 @@ fn rating(
 ) -> Check {
     let n = f64::from(design.rope.count);
     let c = Check::new(name, formula, None, "N");
+    let allowance = design.requirements.dynamic_allowance_min.as_ref();
+    let z = allowance.map_or(0.0, |a| a.value);
     match statics.iter().max_by(|a, b| key(a).total_cmp(&key(b))) {
         None => c.not_evaluated(NO_STATES),
-        Some(s) => Check { value: Some(n * key(s)), ..c }
-            .inputs(vec![q("n", n, ""), q("T1", s.t1_n, "N"), q("T2", s.t2_n, "N")])
-            .governed_by(s.case.clone())
-            .against(Relation::AtMost, limit, true),
+        Some(s) => {
+            let mut inputs = vec![q("n", n, ""), q("T1", s.t1_n, "N"), q("T2", s.t2_n, "N")];
+            let mut c = Check { value: Some(n * key(s) * (1.0 + z)), ..c };
+            if let Some(a) = allowance {
+                inputs.push(q("z", z, ""));
+                c = c.intermediates(vec![q("static, all ropes", n * key(s), "N")]).with_note(format!(
+                    "dynamic allowance z = {z} on the static load: {} ({}: {})",
+                    a.source, a.rule.code, a.rule.clause
+                ));
+            }
+            c.inputs(inputs).governed_by(s.case.clone()).against(Relation::AtMost, limit, true)
+        }
     }
 }

@@ -9,6 +9,7 @@
 //!   against the slip-limited deceleration) beside the stop model,
 //!   [`crate::model::braking_checks`].
 
+pub mod codes;
 pub mod design;
 
 use crate::design::Limit;
@@ -192,6 +193,12 @@ impl Check {
             self.inputs.push(q(if i == 0 { "m_g1 = J_g/R_g²" } else { "m_g2 = J_g/R_g²" }, *g, "kg"));
         }
         self.inputs.push(q("a", accel_m_s2, "m/s²"));
+        self
+    }
+
+    /// Sets the value (before [`Check::against`] judges it).
+    pub fn with_value(mut self, value: f64) -> Self {
+        self.value = Some(value);
         self
     }
 

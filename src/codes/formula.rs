@@ -35,6 +35,23 @@ pub const VARIABLES: &[Variable] = &[
         meaning: "the hoist's layout: \"tower-with-guide-sheave\", \"tower\" or \"ground-mounted\" (`requirements.layout`)",
     },
     Variable {
+        name: "rope_construction",
+        unit: "text",
+        meaning: "the hoisting ropes' construction: \"stranded\" or \"locked-coil\" (`requirements.rope_construction`)",
+    },
+    Variable { name: "d", unit: "m", meaning: "nominal diameter of a hoisting rope (`rope.diameter_m`)" },
+    Variable {
+        name: "F_set",
+        unit: "N",
+        meaning: "minimum breaking force of the hoisting rope set, n·F_min (`rope.count` × `rope.min_breaking_force_n`)",
+    },
+    Variable {
+        name: "U_cert",
+        unit: "N",
+        meaning: "the maximum unbalanced load stated in the hoist's certificate, all ropes \
+                  (`requirements.certified_unbalanced_load_n`)",
+    },
+    Variable {
         name: "v_rope",
         unit: "m/s",
         meaning: "a lift's rope speed at the traction sheave at rated speed, roping × `lift.rated_speed_m_s` (lift sheets)",
@@ -55,6 +72,14 @@ pub struct Quantities {
     pub carries: Option<String>,
     /// The layout, as its sheet word.
     pub layout: Option<String>,
+    /// The hoisting ropes' construction, as its sheet word.
+    pub rope_construction: Option<String>,
+    /// Nominal rope diameter d (m).
+    pub rope_diameter_m: Option<f64>,
+    /// Minimum breaking force of the rope set n·F_min (N).
+    pub rope_set_breaking_force_n: Option<f64>,
+    /// The certificate's maximum unbalanced load (N).
+    pub certified_unbalanced_load_n: Option<f64>,
     /// A lift's rope speed at the sheave (m/s).
     pub rope_speed_m_s: Option<f64>,
     /// A lift's number of suspension ropes.
@@ -68,10 +93,33 @@ impl Quantities {
             "H" => self.hanging_length_m.map(Value::Float),
             "carries" => self.carries.clone().map(Value::String),
             "layout" => self.layout.clone().map(Value::String),
+            "rope_construction" => self.rope_construction.clone().map(Value::String),
+            "d" => self.rope_diameter_m.map(Value::Float),
+            "F_set" => self.rope_set_breaking_force_n.map(Value::Float),
+            "U_cert" => self.certified_unbalanced_load_n.map(Value::Float),
             "v_rope" => self.rope_speed_m_s.map(Value::Float),
             "n_ropes" => self.rope_count.map(Value::Float),
             _ => None,
         }
+    }
+}
+
+impl Quantities {
+    /// `name = value unit` of each variable in `names` the design gives, for a limit's source
+    /// (so that the value a formula used is shown with the result).
+    pub fn describe(&self, names: &[&str]) -> Vec<String> {
+        names
+            .iter()
+            .filter_map(|name| {
+                let unit = VARIABLES.iter().find(|v| v.name == *name).map_or("", |v| v.unit);
+                match self.value(name)? {
+                    Value::String(s) => Some(format!("{name} = \"{s}\"")),
+                    Value::Float(x) if unit.is_empty() => Some(format!("{name} = {x}")),
+                    Value::Float(x) => Some(format!("{name} = {x} {unit}")),
+                    _ => None,
+                }
+            })
+            .collect()
     }
 }
 

@@ -17,7 +17,47 @@ pub fn list() -> String {
         );
         let _ = writeln!(out, "    limits:  {} given, {} left out (not confirmed)", s.limits.len(), s.missing.len());
     }
+    let _ = writeln!(out, "\nCoverage: the checks each rule set judges (the others are the sheet's to judge):");
+    for s in bundled() {
+        let judged = judged_checks(&s);
+        let list = if judged.is_empty() { "none".to_string() } else { judged.join("; ") };
+        let _ = writeln!(out, "  {:<13} {list}", s.id);
+    }
     out
+}
+
+/// Which of wrapcalc's checks each limit key judges (the checks' names as the report prints them).
+pub const JUDGES: &[(&str, &str)] = &[
+    ("static_safety_factor_min", "static safety factor"),
+    ("dynamic_safety_factor_min", "dynamic safety factor"),
+    ("rope_safety_factor_min", "rope safety factor"),
+    ("pulley_d_ratio_min", "D/d of the friction pulley"),
+    ("guide_d_ratio_min", "D/d of the guide sheave"),
+    ("lining_pressure_max_pa", "specific pressure on the lining"),
+    ("lining_peak_pressure_max_pa", "peak pressure on the lining"),
+    ("mu_design_max", "friction coefficient against the design cap"),
+    ("static_tension_max_n", "largest static tension (machine rating)"),
+    ("static_tension_difference_max_n", "largest static tension difference (machine rating)"),
+    ("emergency_decel_lift_min_m_s2", "emergency deceleration lifting, minimum"),
+    ("emergency_decel_lift_max_m_s2", "emergency deceleration lifting, maximum"),
+    ("emergency_decel_lower_min_m_s2", "emergency deceleration lowering, minimum"),
+    ("emergency_decel_lower_max_m_s2", "emergency deceleration lowering, maximum"),
+    ("lining_mu_min", "friction coefficient of the lining"),
+    ("lining_mu_wet_min", "friction coefficient of the lining, wet"),
+    ("tail_rope_safety_factor_min", "tail rope safety factor"),
+    ("pulley_design_load_min_n", "friction wheel design load case"),
+    ("dynamic_allowance_min", "the machine ratings' dynamic allowance"),
+    ("lift_loading_factor", "lift traction cases (load factor)"),
+    ("lift_traction_mu_loading", "lift traction, car loading"),
+    ("lift_traction_mu_braking", "lift traction, emergency braking"),
+    ("lift_traction_mu_stalled", "lift traction, car stalled"),
+    ("lift_rope_safety_factor_min", "lift rope safety factor"),
+    ("lift_d_ratio_min", "lift D/d"),
+];
+
+/// The checks `set` judges, in the order of its limits.
+pub fn judged_checks(set: &RuleSet) -> Vec<&'static str> {
+    set.limits.iter().filter_map(|l| JUDGES.iter().find(|(k, _)| *k == l.key).map(|(_, c)| *c)).collect()
 }
 
 /// One rule set in full.
@@ -42,6 +82,8 @@ pub fn show(set: &RuleSet) -> String {
             let _ = writeln!(out, "      note:    {n}");
         }
     }
+    let judged = judged_checks(set);
+    let _ = writeln!(out, "\nJudges: {}", if judged.is_empty() { "no check".to_string() } else { judged.join("; ") });
     if set.limits.iter().any(|l| !l.formula.variables().is_empty()) {
         let _ = writeln!(out, "\nVariables:");
         for v in VARIABLES {

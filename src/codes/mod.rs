@@ -22,6 +22,15 @@ const BUNDLED: &[(&str, &str)] = &[
     ("us-ca-t8", include_str!("../../codes/us-ca-t8.toml")),
     ("us-va-coal", include_str!("../../codes/us-va-coal.toml")),
     ("en81-50", include_str!("../../codes/en81-50.toml")),
+    ("ca-nb-96-105", include_str!("../../codes/ca-nb-96-105.toml")),
+    ("at-bpvs", include_str!("../../codes/at-bpvs.toml")),
+    ("de-tas", include_str!("../../codes/de-tas.toml")),
+    ("fr-51-508", include_str!("../../codes/fr-51-508.toml")),
+    ("fr-59-285", include_str!("../../codes/fr-59-285.toml")),
+    ("us-al-480", include_str!("../../codes/us-al-480.toml")),
+    ("us-wv-36-1", include_str!("../../codes/us-wv-36-1.toml")),
+    ("us-cfr-30", include_str!("../../codes/us-cfr-30.toml")),
+    ("us-az-r11", include_str!("../../codes/us-az-r11.toml")),
 ];
 
 /// The `[requirements]` keys a rule set may give a limit for.
@@ -40,6 +49,11 @@ pub const LIMIT_KEYS: &[&str] = &[
     "emergency_decel_lift_max_m_s2",
     "emergency_decel_lower_min_m_s2",
     "emergency_decel_lower_max_m_s2",
+    "lining_mu_min",
+    "lining_mu_wet_min",
+    "tail_rope_safety_factor_min",
+    "pulley_design_load_min_n",
+    "dynamic_allowance_min",
 ];
 
 /// The keys a rule set may give for a lift sheet (`[lift]`): the traction cases' load factor and
@@ -162,7 +176,17 @@ impl RuleLimit {
         match self.formula.eval(q) {
             FormulaOutcome::Value(v) => Ok(Limit {
                 value: v,
-                source: format!("{}, {} ({}); read from {}", set.code, self.clause, self.edition, self.source),
+                source: format!(
+                    "{}, {} ({}); read from {}{}",
+                    set.code,
+                    self.clause,
+                    self.edition,
+                    self.source,
+                    match q.describe(&self.formula.variables()) {
+                        used if used.is_empty() => String::new(),
+                        used => format!("; evaluated at {}", used.join(", ")),
+                    }
+                ),
                 rule: Rule { code: set.id.clone(), clause: self.clause.clone() },
             }),
             FormulaOutcome::Missing(vars) => Err(format!(

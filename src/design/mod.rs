@@ -203,6 +203,8 @@ pub struct Hoist {
     pub tail1_length_m: f64,
     /// Tail rope hanging below the side-2 conveyance at the start (m).
     pub tail2_length_m: f64,
+    /// Minimum breaking force of one tail rope (N), for the tail ropes' safety factor.
+    pub tail_min_breaking_force_n: Option<f64>,
     /// The normal motion profile, lifting side 1 (stages in order).
     pub stages: Vec<MotionStage>,
 }

@@ -109,6 +109,32 @@ pub struct Requirements {
     pub emergency_decel_lower_min_m_s2: Option<Limit>,
     /// Largest emergency deceleration lowering side 1 (m/s²).
     pub emergency_decel_lower_max_m_s2: Option<Limit>,
+    /// Least friction coefficient of the lining, dry (the design μ is checked against it).
+    pub lining_mu_min: Option<Limit>,
+    /// Least friction coefficient of the lining with water or rope dressing.
+    pub lining_mu_wet_min: Option<Limit>,
+    /// n_t·F_t over the largest static load of the tail (balance) rope set.
+    pub tail_rope_safety_factor_min: Option<Limit>,
+    /// Least design load of the friction wheel with its shaft and bearings (N, all ropes).
+    pub pulley_design_load_min_n: Option<Limit>,
+    /// Least allowance for the dynamic loads on the static loads in the machine ratings (a fraction).
+    pub dynamic_allowance_min: Option<Limit>,
+    /// The design's inputs to these checks and the rule sets' formulas.
+    pub code_inputs: CodeInputs,
+}
+
+/// What the sheet states for the rule sets' formulas and the checks they need, beside the limits
+/// (each `None` when the sheet does not give it).
+#[derive(Debug, Clone, Default, PartialEq, serde::Serialize)]
+pub struct CodeInputs {
+    /// The hoisting ropes' construction, as its sheet word ("stranded", "locked-coil").
+    pub rope_construction: Option<String>,
+    /// The maximum unbalanced load in the hoist's certificate, all ropes (N).
+    pub certified_unbalanced_load_n: Option<f64>,
+    /// The lining's friction coefficient with water or rope dressing, from its test report.
+    pub lining_mu_wet: Option<f64>,
+    /// The load the friction wheel with its shaft and bearings is designed for at yield, all ropes (N).
+    pub pulley_design_load_n: Option<f64>,
 }
 
 /// Source of the two anti-slip minimums when the sheet does not give them.
@@ -138,6 +164,12 @@ impl Default for Requirements {
             emergency_decel_lift_max_m_s2: None,
             emergency_decel_lower_min_m_s2: None,
             emergency_decel_lower_max_m_s2: None,
+            lining_mu_min: None,
+            lining_mu_wet_min: None,
+            tail_rope_safety_factor_min: None,
+            pulley_design_load_min_n: None,
+            dynamic_allowance_min: None,
+            code_inputs: CodeInputs::default(),
         }
     }
 }

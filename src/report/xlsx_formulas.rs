@@ -4,6 +4,10 @@
 //! formula, in the order of operations wrapcalc evaluates them.
 
 use super::expr::{Expr, Func, call, input, max, min, num};
+use crate::check::codes::{
+    LINING_MU_CHECK, LINING_MU_WET_CHECK, TAIL_SF_CHECK, WET_DYNAMIC_CHECK, WET_SLIP_CHECK, WET_STATIC_CHECK,
+    WHEEL_DESIGN_CHECK,
+};
 use crate::check::design::{
     DIFFERENCE_RATING_CHECK, GUIDE_D_CHECK, MU_CAP_CHECK, PEAK_PRESSURE_CHECK, PRESSURE_CHECK, PULLEY_D_CHECK,
     ROPE_SF_CHECK, TENSION_RATING_CHECK,
@@ -35,9 +39,11 @@ pub fn value_expr(c: &Check) -> Option<Expr> {
     let (t1, t2, cf) = (input("T1"), input("T2"), input("m'v²"));
     let (hi, lo) = (max(t1.clone(), t2.clone()), min(t1.clone(), t2.clone()));
     let n = input("n");
+    // The machine ratings' dynamic allowance z, where a rule set gives one.
+    let allowance = || if value_of(c, "z").is_some() { num(1.0) + input("z") } else { num(1.0) };
     Some(match c.name {
-        GROSS_SLIP_CHECK => (hi - cf.clone()) / (lo - cf),
-        STATIC_CHECK | DYNAMIC_CHECK | ROPE_DYNAMICS_CHECK => {
+        GROSS_SLIP_CHECK | WET_SLIP_CHECK => (hi - cf.clone()) / (lo - cf),
+        STATIC_CHECK | DYNAMIC_CHECK | ROPE_DYNAMICS_CHECK | WET_STATIC_CHECK | WET_DYNAMIC_CHECK => {
             (lo.clone() - cf) * (input("e^{μα}") - num(1.0)) / (hi - lo)
         }
         ROPE_SF_CHECK => n.clone() * input("F_min (one rope)") / (n * input("T_s,max (per rope)")),
@@ -46,8 +52,15 @@ pub fn value_expr(c: &Check) -> Option<Expr> {
         PEAK_PRESSURE_CHECK => input("n_max") / (input("R") * input("d")),
         MU_CAP_CHECK => input("μ"),
         PROFILE_END_CHECK => call(Func::Abs, vec![input(PROFILE_END_SPEED)]),
-        TENSION_RATING_CHECK => n * hi,
-        DIFFERENCE_RATING_CHECK => n * call(Func::Abs, vec![t1 - t2]),
+        TENSION_RATING_CHECK => n * hi * allowance(),
+        DIFFERENCE_RATING_CHECK => n * call(Func::Abs, vec![t1 - t2]) * allowance(),
+        LINING_MU_CHECK => input("μ"),
+        LINING_MU_WET_CHECK => input("μ_wet"),
+        TAIL_SF_CHECK => {
+            let longest = max(input("tail1 at the start") + input("travel s"), input("tail2 at the start"));
+            input("n_t") * input("F_t (one rope)") / (input("n_t") * input("m'_t") * input("g") * longest)
+        }
+        WHEEL_DESIGN_CHECK => input("P_design"),
         DECEL_LIFT_MIN_CHECK
         | DECEL_LIFT_MAX_CHECK
         | DECEL_LOWER_MIN_CHECK
@@ -91,7 +104,9 @@ fn stop_decel(c: &Check) -> Option<Expr> {
 pub fn limit_expr(c: &Check) -> Option<Expr> {
     c.limit?;
     match c.name {
-        GROSS_SLIP_CHECK => Some(call(Func::Exp, vec![input("μ") * call(Func::Radians, vec![input("α")])])),
+        GROSS_SLIP_CHECK | WET_SLIP_CHECK => {
+            Some(call(Func::Exp, vec![input("μ") * call(Func::Radians, vec![input("α")])]))
+        }
         SLIP_LIMIT_CHECK if c.verdict != Verdict::NotEvaluated => {
             let v = value_of(c, "v at the trip").or_else(|| value_of(c, "v"))?;
             let sides = [("m1", GUIDE1_INPUT), ("m2", GUIDE2_INPUT)];

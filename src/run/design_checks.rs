@@ -2,6 +2,7 @@
 //! governing case of each check) and the checks beside anti-slip over every static state.
 
 use super::{RunError, SceneResult};
+use crate::check::codes::{WET_DYNAMIC_CHECK, WET_SLIP_CHECK, WET_STATIC_CHECK};
 use crate::check::design::{PROFILE_END_CHECK, PROFILE_END_SPEED, PeakContact, StaticState, design_checks};
 use crate::check::{Check, Relation, q};
 use crate::design::{Design, Direction, Limit, SceneKind};
@@ -61,7 +62,44 @@ pub fn evaluate(design: &Design, scenes: &[SceneResult], rope_dynamics: bool) ->
     if let Some(m) = &matrix {
         checks.extend(m.checks.iter().cloned());
     }
+    checks.extend(wet_checks(design)?);
     Ok(DesignResult { matrix, checks })
+}
+
+/// The anti-slip checks of the load-case matrix again at the lining's μ with water or rope
+/// dressing (`requirements.lining_mu_wet`), as a load case of its own: every case of the matrix
+/// with μ_wet in place of μ, rigid ropes. Nothing without a wet μ; not evaluated without a matrix.
+fn wet_checks(design: &Design) -> Result<Vec<Check>, RunError> {
+    let Some(mu_wet) = design.requirements.code_inputs.lining_mu_wet else { return Ok(Vec::new()) };
+    let names = [
+        (crate::model::level0::STATIC_CHECK, WET_STATIC_CHECK),
+        (crate::model::level0::DYNAMIC_CHECK, WET_DYNAMIC_CHECK),
+        (crate::model::level0::GROSS_SLIP_CHECK, WET_SLIP_CHECK),
+    ];
+    if design.load_cases.is_none() {
+        let note = "the wet load case runs the [load_cases] matrix at μ_wet: the sheet has no [load_cases]";
+        return Ok(names
+            .iter()
+            .map(|(_, wet)| Check::new(wet, "the check at μ_wet", None, "").not_evaluated(note))
+            .collect());
+    }
+    let mut wet = design.clone();
+    wet.pulley.mu = mu_wet;
+    let matrix = load_cases::evaluate(&wet, false)
+        .transpose()
+        .map_err(|source| RunError::Level4 { scene: "[load_cases] at μ_wet".into(), source })?;
+    let Some(m) = matrix else { return Ok(Vec::new()) };
+    let mut out = Vec::new();
+    for (dry, wet_name) in names {
+        if let Some(c) = m.checks.iter().find(|c| c.name == dry) {
+            let mut c = c.clone();
+            c.name = wet_name;
+            c.inputs.insert(0, q("μ_wet", mu_wet, ""));
+            c.governing_case = c.governing_case.map(|g| format!("μ_wet = {mu_wet}: {g}"));
+            out.push(c);
+        }
+    }
+    Ok(out)
 }
 
 /// A scene's static states: its state at rest; a duty cycle's also at both ends of its travel.

@@ -5,7 +5,7 @@
 use super::diag::Collector;
 use super::raw::RawRequirements;
 use crate::codes::{self, CodeBasis, Override, RuleSet, formula::Quantities};
-use crate::design::{Hoist, Limit, Requirements};
+use crate::design::{Hoist, Limit, Requirements, Rope};
 use toml::Spanned;
 
 /// What a conveyance may carry, from the least to the most demanding.
@@ -14,8 +14,19 @@ pub const CARRIES: [&str; 3] = ["material", "personnel-and-material", "personnel
 pub const LAYOUTS: [&str; 3] = ["tower-with-guide-sheave", "tower", "ground-mounted"];
 
 /// Applies the rule set the sheet names (if any) to `out`; `false` after a reported error.
-pub(super) fn apply(c: &mut Collector, r: &RawRequirements, hoist: Option<&Hoist>, out: &mut Requirements) -> bool {
-    let q = quantities(c, r, hoist);
+pub(super) fn apply(
+    c: &mut Collector,
+    r: &RawRequirements,
+    (hoist, rope): (Option<&Hoist>, Option<&Rope>),
+    out: &mut Requirements,
+) -> bool {
+    let q = quantities(c, r, hoist).map(|q| Quantities {
+        rope_construction: out.code_inputs.rope_construction.clone(),
+        certified_unbalanced_load_n: out.code_inputs.certified_unbalanced_load_n,
+        rope_diameter_m: rope.and_then(|r| r.diameter_m),
+        rope_set_breaking_force_n: rope.and_then(|r| r.min_breaking_force_n.map(|f| f64::from(r.count) * f)),
+        ..q
+    });
     let Some(code) = &r.code else { return q.is_some() };
     let Some(set) = codes::find(code.get_ref()) else {
         let msg = format!("unknown rule set \"{}\"; known: {}", code.get_ref(), codes::ids().join(", "));
@@ -130,6 +141,11 @@ fn slot_mut<'a>(out: &'a mut Requirements, key: &str) -> Option<&'a mut Option<L
         "emergency_decel_lift_max_m_s2" => &mut out.emergency_decel_lift_max_m_s2,
         "emergency_decel_lower_min_m_s2" => &mut out.emergency_decel_lower_min_m_s2,
         "emergency_decel_lower_max_m_s2" => &mut out.emergency_decel_lower_max_m_s2,
+        "lining_mu_min" => &mut out.lining_mu_min,
+        "lining_mu_wet_min" => &mut out.lining_mu_wet_min,
+        "tail_rope_safety_factor_min" => &mut out.tail_rope_safety_factor_min,
+        "pulley_design_load_min_n" => &mut out.pulley_design_load_min_n,
+        "dynamic_allowance_min" => &mut out.dynamic_allowance_min,
         _ => return None,
     })
 }

@@ -48,6 +48,10 @@ pub(super) fn hoist(c: &mut Collector, h: &Spanned<RawHoist>) -> Option<Hoist> {
     let side2_length_m = required(c, at, "side2_length_m", &h.side2_length_m, POSITIVE);
     let tail1_length_m = optional(c, at, "tail1_length_m", &h.tail1_length_m, NON_NEGATIVE, 0.0);
     let tail2_length_m = optional(c, at, "tail2_length_m", &h.tail2_length_m, NON_NEGATIVE, 0.0);
+    let tail_min_breaking_force_n = match &h.tail_min_breaking_force_n {
+        Some(v) => checked(c, at, "tail_min_breaking_force_n", v, POSITIVE).map(Some),
+        None => Some(None),
+    };
     let stages = match &h.stage {
         None => {
             c.push_at(
@@ -78,6 +82,7 @@ pub(super) fn hoist(c: &mut Collector, h: &Spanned<RawHoist>) -> Option<Hoist> {
         side2_length_m: side2_length_m?,
         tail1_length_m: tail1_length_m?,
         tail2_length_m: tail2_length_m?,
+        tail_min_breaking_force_n: tail_min_breaking_force_n?,
         stages: stages?,
     };
     super::travel::check(c, spanned, &hoist);

@@ -69,6 +69,16 @@ pub struct RawRequirements {
     pub layout: Option<Spanned<String>>,
     /// Hanging length of a head rope for the rule set's formulas (m).
     pub hanging_length_m: Option<Spanned<f64>>,
+    pub lining_mu_min: Option<Spanned<toml::Value>>,
+    pub lining_mu_wet_min: Option<Spanned<toml::Value>>,
+    pub tail_rope_safety_factor_min: Option<Spanned<toml::Value>>,
+    pub pulley_design_load_min_n: Option<Spanned<toml::Value>>,
+    pub dynamic_allowance_min: Option<Spanned<toml::Value>>,
+    /// "stranded" or "locked-coil".
+    pub rope_construction: Option<Spanned<String>>,
+    pub certified_unbalanced_load_n: Option<Spanned<f64>>,
+    pub lining_mu_wet: Option<Spanned<f64>>,
+    pub pulley_design_load_n: Option<Spanned<f64>>,
 }
 
 /// The `[brake]` table: the safety brake that stops the pulley in an emergency.
@@ -139,6 +149,7 @@ pub struct RawHoist {
     pub side2_length_m: Option<Spanned<f64>>,
     pub tail1_length_m: Option<Spanned<f64>>,
     pub tail2_length_m: Option<Spanned<f64>>,
+    pub tail_min_breaking_force_n: Option<Spanned<f64>>,
     pub stage: Option<Spanned<Vec<Spanned<RawStage>>>>,
 }
 

@@ -4,8 +4,8 @@
 
 use super::diag::Collector;
 use super::raw::RawRequirements;
-use crate::design::requirements::Rule;
-use crate::design::{DEFAULT_SAFETY_FACTOR_SOURCE, Hoist, Limit, Requirements, SafetyFactorBasis};
+use crate::design::requirements::{CodeInputs, Rule};
+use crate::design::{DEFAULT_SAFETY_FACTOR_SOURCE, Hoist, Limit, Requirements, Rope, SafetyFactorBasis};
 use toml::Spanned;
 
 /// Source of a limit given as a bare number.
@@ -16,11 +16,12 @@ pub(super) fn requirements(
     c: &mut Collector,
     r: &Option<Spanned<RawRequirements>>,
     hoist: Option<&Hoist>,
+    rope: Option<&Rope>,
 ) -> Option<Requirements> {
     let Some(r) = r else { return Some(Requirements::default()) };
     let r = r.get_ref();
     let (mut out, limits_ok) = limits(c, r);
-    let code_ok = super::codes::apply(c, r, hoist, &mut out);
+    let code_ok = super::codes::apply(c, r, (hoist, rope), &mut out);
     let basis = basis(c, r);
     if let Some(Some(b)) = basis {
         out.dynamic_safety_factor_basis = b;
@@ -79,9 +80,49 @@ fn limits(c: &mut Collector, r: &RawRequirements) -> (Requirements, bool) {
             DECEL,
         ),
         dynamic_safety_factor_basis: SafetyFactorBasis::Code,
+        lining_mu_min: limit("lining_mu_min", &r.lining_mu_min, POSITIVE),
+        lining_mu_wet_min: limit("lining_mu_wet_min", &r.lining_mu_wet_min, POSITIVE),
+        tail_rope_safety_factor_min: limit("tail_rope_safety_factor_min", &r.tail_rope_safety_factor_min, POSITIVE),
+        pulley_design_load_min_n: limit("pulley_design_load_min_n", &r.pulley_design_load_min_n, POSITIVE),
+        dynamic_allowance_min: limit("dynamic_allowance_min", &r.dynamic_allowance_min, ALLOWANCE),
+        code_inputs: CodeInputs::default(),
     };
-    (out, ok)
+    let inputs = inputs(c, r);
+    ok &= inputs.is_some();
+    (Requirements { code_inputs: inputs.unwrap_or_default(), ..out }, ok)
 }
+
+/// The design's inputs to the rule sets' formulas and their checks; `None` after an error.
+fn inputs(c: &mut Collector, r: &RawRequirements) -> Option<CodeInputs> {
+    let mut ok = true;
+    let mut number = |key: &str, v: &Option<Spanned<f64>>, allowed: Allowed| -> Option<f64> {
+        let v = v.as_ref()?;
+        if v.get_ref().is_finite() && (allowed.ok)(*v.get_ref()) {
+            return Some(*v.get_ref());
+        }
+        ok = false;
+        c.push(Some(v.span()), None, &format!("requirements.{key}"), format!("expected {}", allowed.what));
+        None
+    };
+    let certified_unbalanced_load_n = number("certified_unbalanced_load_n", &r.certified_unbalanced_load_n, POSITIVE);
+    let lining_mu_wet = number("lining_mu_wet", &r.lining_mu_wet, MU);
+    let pulley_design_load_n = number("pulley_design_load_n", &r.pulley_design_load_n, POSITIVE);
+    let rope_construction = match &r.rope_construction {
+        Some(w) if ROPE_CONSTRUCTIONS.contains(&w.get_ref().as_str()) => Some(w.get_ref().clone()),
+        Some(w) => {
+            ok = false;
+            let quoted: Vec<String> = ROPE_CONSTRUCTIONS.iter().map(|a| format!("\"{a}\"")).collect();
+            let msg = format!("expected one of {}", quoted.join(", "));
+            c.push(Some(w.span()), None, "requirements.rope_construction", msg);
+            None
+        }
+        None => None,
+    };
+    ok.then_some(CodeInputs { rope_construction, certified_unbalanced_load_n, lining_mu_wet, pulley_design_load_n })
+}
+
+/// The hoisting ropes' constructions a rule set may distinguish.
+pub const ROPE_CONSTRUCTIONS: [&str; 2] = ["stranded", "locked-coil"];
 
 /// `dynamic_safety_factor_basis`: `Some(None)` when not given, `None` when not a known basis.
 fn basis(c: &mut Collector, r: &RawRequirements) -> Option<Option<SafetyFactorBasis>> {
@@ -138,6 +179,9 @@ pub(super) struct Allowed {
 }
 
 const POSITIVE: Allowed = Allowed { ok: |x| x > 0.0, what: "a finite number > 0" };
+const ALLOWANCE: Allowed = Allowed { ok: |x| x > 0.0 && x <= 1.0, what: "a fraction 0 < z ≤ 1" };
+const MU: Allowed =
+    Allowed { ok: |x| x > 0.0 && x <= super::rules::MU_MAX, what: "a friction coefficient 0 < μ ≤ 2" };
 const DECEL: Allowed = Allowed { ok: |x| x > 0.0 && x <= 30.0, what: "a deceleration 0 < d ≤ 30 m/s²" };
 
 /// A number, or a table `{ value = number, source = "text" }`.

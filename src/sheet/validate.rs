@@ -55,7 +55,8 @@ pub fn design(c: &mut Collector, s: Sections) -> Option<Design> {
         None if s.present.contains(&"hoist") => None,
         None => Some(None),
     };
-    let requirements = super::requirements::requirements(c, &s.requirements, hoist.as_ref().and_then(Option::as_ref));
+    let requirements =
+        super::requirements::requirements(c, &s.requirements, hoist.as_ref().and_then(Option::as_ref), rope.as_ref());
     let scenes = match &s.scenes {
         Some(slots) if !slots.is_empty() => {
             let ctx = SceneContext {

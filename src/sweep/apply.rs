@@ -68,6 +68,15 @@ impl Template {
         }
         let hoist_used = template.kinds.contains(&"duty-cycle") || varies.iter().any(|v| v.key.starts_with("hoist."));
         if !hoist_used {
+            // A rule set's H defaults to the longer hanging length of the [hoist]: kept as
+            // `requirements.hanging_length_m` when the hoist leaves the sweep's sheet.
+            let longer = template.doc.get("hoist").and_then(Value::as_table).and_then(|h| {
+                let side = |k: &str| h.get(k).and_then(|v| v.as_float().or_else(|| v.as_integer().map(|i| i as f64)));
+                Some(side("side1_length_m")?.max(side("side2_length_m")?))
+            });
+            if let (Some(h), Some(Value::Table(req))) = (longer, template.doc.get_mut("requirements")) {
+                req.entry("hanging_length_m").or_insert(Value::Float(h));
+            }
             template.doc.remove("hoist");
         }
         // A sweep runs scenes: the load-case matrix is not part of it.

@@ -76,6 +76,17 @@ pub fn basis(out: &mut String, ctx: &Context) -> io::Result<()> {
             "<span class=\"note\">no requirement given: reported, not judged</span>".into(),
         ],
     }));
+    // The limits of the rule sets' own checks: listed where the sheet or its rule set gives them.
+    let code_limits: [(&str, &str, &Option<Limit>, &str); 5] = [
+        ("friction coefficient of the lining (design μ)", "≥", &r.lining_mu_min, ""),
+        ("friction coefficient of the lining, wet", "≥", &r.lining_mu_wet_min, ""),
+        ("tail rope safety factor", "≥", &r.tail_rope_safety_factor_min, ""),
+        ("friction wheel design load, all ropes", "≥", &r.pulley_design_load_min_n, "N"),
+        ("dynamic allowance on the static loads (machine ratings)", "≥", &r.dynamic_allowance_min, ""),
+    ];
+    rows.extend(code_limits.iter().filter_map(|(n, rel, l, u)| {
+        l.as_ref().map(|l| vec![esc(n), format!("{rel} {} {u}", l.value), rule_text(&l.rule), esc(&l.source)])
+    }));
     table(out, "", &["requirement", "limit", "rule (code: clause)", "source"], rows);
     let _ = writeln!(
         out,

@@ -170,7 +170,7 @@ fn requirements() -> Table {
         Key::new(name, Limit, unit, format!("{meaning} (none by default: the check is reported unjudged)")).positive()
     };
     let decel = |name, meaning: &str| limit(name, "m/s²", meaning).max(30.0, true).note("min ≤ max");
-    table(
+    let mut out = table(
         "requirements",
         false,
         "The limits of the checks. Each is a number or { value = …, source = \"…\" }; a bare number's source reads \
@@ -214,8 +214,49 @@ fn requirements() -> Table {
             decel("emergency_decel_lift_max_m_s2", "emergency deceleration lifting side 1, maximum"),
             decel("emergency_decel_lower_min_m_s2", "emergency deceleration lowering side 1, minimum"),
             decel("emergency_decel_lower_max_m_s2", "emergency deceleration lowering side 1, maximum"),
+            limit("lining_mu_min", "", "friction coefficient of the lining, minimum: the design μ (pulley.mu) is checked"),
+            limit("lining_mu_wet_min", "", "friction coefficient of the lining with water or rope dressing, minimum")
+                .note("checked on lining_mu_wet"),
+            limit("tail_rope_safety_factor_min", "", "tail (balance) rope safety factor minimum"),
+            limit("pulley_design_load_min_n", "N", "design load of the friction wheel with shaft and bearings, minimum")
+                .note("checked on pulley_design_load_n"),
+            limit("dynamic_allowance_min", "", "allowance for the dynamic loads on the static loads of the machine ratings")
+                .max(1.0, true),
+            // The design inputs of the rule sets' formulas and checks follow ([`code_inputs`]).
         ],
-    )
+    );
+    out.keys.extend(code_inputs());
+    out
+}
+
+/// The `[requirements]` keys that are design inputs of the rule sets' formulas and checks.
+fn code_inputs() -> Vec<Key> {
+    vec![
+        Key::new("rope_construction", Text, "", "the hoisting ropes' construction, where a rule set distinguishes it")
+            .words(&crate::sheet::requirements::ROPE_CONSTRUCTIONS),
+        Key::new(
+            "certified_unbalanced_load_n",
+            Number,
+            "N",
+            "the maximum unbalanced load in the hoist's certificate, all ropes, for a rule set's formulas",
+        )
+        .positive(),
+        Key::new(
+            "lining_mu_wet",
+            Number,
+            "",
+            "the lining's friction coefficient with water or rope dressing (its test report): the wet checks",
+        )
+        .positive()
+        .max(MU_MAX, true),
+        Key::new(
+            "pulley_design_load_n",
+            Number,
+            "N",
+            "the load the friction wheel with shaft and bearings is designed for at yield, all ropes",
+        )
+        .positive(),
+    ]
 }
 
 fn document() -> Table {
@@ -329,6 +370,13 @@ fn hoist() -> Table {
             Key::new("tail2_length_m", Number, "m", "tail rope hanging below the side-2 conveyance at the start")
                 .default(D::Number(0.0))
                 .non_negative(),
+            Key::new(
+                "tail_min_breaking_force_n",
+                Number,
+                "N",
+                "minimum breaking force of one tail rope: the tail ropes' safety factor",
+            )
+            .positive(),
             Key::new("stage", Tables, "", "the motion profile, lifting side 1, in order ([[hoist.stage]])")
                 .required()
                 .items(1, MAX_STAGES),
