@@ -48,7 +48,7 @@ pub(super) fn hoist(c: &mut Collector, h: &Spanned<RawHoist>) -> Option<Hoist> {
     let side2_length_m = required(c, at, "side2_length_m", &h.side2_length_m, POSITIVE);
     let tail1_length_m = optional(c, at, "tail1_length_m", &h.tail1_length_m, NON_NEGATIVE, 0.0);
     let tail2_length_m = optional(c, at, "tail2_length_m", &h.tail2_length_m, NON_NEGATIVE, 0.0);
-    let stages = match &h.stage {
+    let stages: Option<Vec<MotionStage>> = match &h.stage {
         None => {
             c.push_at(
                 Some(span.clone()),
@@ -68,6 +68,25 @@ pub(super) fn hoist(c: &mut Collector, h: &Spanned<RawHoist>) -> Option<Hoist> {
             stages.into_iter().collect()
         }
     };
+    // The lengths against the travel whenever they and the stages are valid, whatever the
+    // masses: every error of the section in one run.
+    if let (Some(tail_count), Some(s1), Some(s2), Some(t1), Some(t2), Some(stages)) =
+        (tail_count, side1_length_m, side2_length_m, tail1_length_m, tail2_length_m, &stages)
+    {
+        let lengths = Hoist {
+            conveyance1_kg: conveyance1_kg.unwrap_or(1.0),
+            conveyance2_kg: conveyance2_kg.unwrap_or(1.0),
+            rope_damping_ratio: rope_damping_ratio.unwrap_or(0.0),
+            tail_count,
+            tail_mass_per_m_kg: tail_mass_per_m_kg.unwrap_or(0.0),
+            side1_length_m: s1,
+            side2_length_m: s2,
+            tail1_length_m: t1,
+            tail2_length_m: t2,
+            stages: stages.clone(),
+        };
+        super::travel::check(c, spanned, &lengths);
+    }
     let hoist = Hoist {
         conveyance1_kg: conveyance1_kg?,
         conveyance2_kg: conveyance2_kg?,
@@ -80,7 +99,6 @@ pub(super) fn hoist(c: &mut Collector, h: &Spanned<RawHoist>) -> Option<Hoist> {
         tail2_length_m: tail2_length_m?,
         stages: stages?,
     };
-    super::travel::check(c, spanned, &hoist);
     Some(hoist)
 }
 
