@@ -169,3 +169,78 @@ fn xlsx_factors_at_most_a_million(path: &Path) {
     }
     assert!(balanced > 0, "checks.xlsx names the balanced factors");
 }
+
+/// Every number of `a` and `b` at the same place agrees to `rel` (relative to the larger), the
+/// run's timings and the sheet's path left out; returns how many numbers were compared.
+fn same_numbers(a: &serde_json::Value, b: &serde_json::Value, path: &str, rel: f64) -> usize {
+    use serde_json::Value::{Array, Number, Object};
+    match (a, b) {
+        (Object(x), Object(y)) => x
+            .iter()
+            .filter(|(k, _)| !k.contains("runtime") && !k.contains("seconds") && *k != "cost")
+            .map(|(k, v)| same_numbers(v, &y[k], &format!("{path}.{k}"), rel))
+            .sum(),
+        (Array(x), Array(y)) => {
+            assert_eq!(x.len(), y.len(), "{path}: lengths");
+            x.iter().zip(y).enumerate().map(|(i, (v, w))| same_numbers(v, w, &format!("{path}[{i}]"), rel)).sum()
+        }
+        (Number(x), Number(y)) => {
+            let (x, y) = (x.as_f64().unwrap(), y.as_f64().unwrap());
+            assert!((x - y).abs() <= rel * x.abs().max(y.abs()), "{path}: {x} vs {y}");
+            1
+        }
+        _ => 0,
+    }
+}
+
+/// The hoist in feet and pounds ("14.5 ft", "6 lb/ft", "1.75 in", "280000 lbf", "40000 lb",
+/// "3120 ft", …, the scene's "136320 lb") gives summary.json numbers equal to its SI twin's
+/// (each value converted here by the exact factors) to 1e-9 relative — the conversion multiplies
+/// in another order than the test, a few ulps apart — and report.html's Inputs echo each value as
+/// given and in SI.
+#[test]
+fn a_sheet_in_feet_and_pounds_equals_its_si_twin() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let mut summaries = Vec::new();
+    for (name, units) in [("si", Units::Si), ("fp", Units::FootPound)] {
+        let sub = dir.path().join(name);
+        std::fs::create_dir(&sub).unwrap();
+        let (out, status, said) = run(&sub, &sheet(units, &[], FULL_SPEED_S, true, &full_at_rest(units)));
+        assert!(matches!(status, Some(0 | 2)), "{said}");
+        summaries.push(
+            serde_json::from_str::<serde_json::Value>(&std::fs::read_to_string(out.join("summary.json")).unwrap())
+                .unwrap(),
+        );
+        if units == Units::FootPound {
+            let html = std::fs::read_to_string(out.join("report.html")).unwrap();
+            assert!(html.contains("3120 ft = 950.976"), "the Inputs echo the length as given and in SI");
+        }
+    }
+    let compared = same_numbers(&summaries[0], &summaries[1], "", 1e-9);
+    assert!(compared > 500, "{compared} numbers compared");
+}
+
+/// A unit of another dimension is an error at the key's line:column naming the key's unit; exit
+/// 1, nothing written.
+#[test]
+fn a_unit_of_the_wrong_dimension_is_an_error_at_the_key() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let text = sheet(
+        Units::FootPound,
+        &[("hoist.side1_length_m", "\"3120 lb\"")],
+        FULL_SPEED_S,
+        true,
+        &full_at_rest(Units::Si),
+    );
+    let path = dir.path().join("hoist.toml");
+    std::fs::write(&path, &text).unwrap();
+    let o = run_wrapcalc(["check", path.to_str().unwrap()]);
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(1), "{stderr}");
+    let (i, line) = text.lines().enumerate().find(|(_, l)| l.starts_with("side1_length_m = ")).unwrap();
+    let at =
+        format!("{}:{}:{}: hoist.side1_length_m = \"3120 lb\": ", path.display(), i + 1, line.find('"').unwrap() + 1);
+    assert!(stderr.contains(&at), "{at:?} in:\n{stderr}");
+    assert!(stderr.contains("lb is a mass, but this key is a length (m)"), "{stderr}");
+    assert_eq!(stderr.lines().filter(|l| l.contains("side1_length_m")).count(), 1, "one message:\n{stderr}");
+}

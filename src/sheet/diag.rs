@@ -69,11 +69,14 @@ pub(crate) struct Collector<'a> {
     pub file: &'a str,
     pub text: &'a str,
     pub diagnostics: Vec<Diagnostic>,
+    /// Byte offsets of values already reported (a text with a unit that could not be read):
+    /// later messages at them would repeat the error in other words.
+    pub silenced: Vec<usize>,
 }
 
 impl<'a> Collector<'a> {
     pub fn new(file: &'a str, text: &'a str) -> Self {
-        Self { file, text, diagnostics: Vec::new() }
+        Self { file, text, diagnostics: Vec::new(), silenced: Vec::new() }
     }
 
     /// 1-based line and column (in characters) of a byte offset.
@@ -99,7 +102,19 @@ impl<'a> Collector<'a> {
         Some(out)
     }
 
+    /// Drops later messages at the value starting at `offset` (already reported).
+    pub fn silence(&mut self, offset: usize) {
+        self.silenced.push(offset);
+    }
+
+    fn is_silenced(&self, span: &Option<Range<usize>>) -> bool {
+        span.as_ref().is_some_and(|s| self.silenced.contains(&s.start))
+    }
+
     pub fn push(&mut self, span: Option<Range<usize>>, scene: Option<&str>, key: &str, message: impl Into<String>) {
+        if self.is_silenced(&span) {
+            return;
+        }
         let (line, column) = span.as_ref().map_or((0, 0), |s| self.line_col(s.start));
         let value = span.as_ref().and_then(|s| self.snippet(s));
         self.diagnostics.push(Diagnostic {
@@ -115,6 +130,9 @@ impl<'a> Collector<'a> {
 
     /// A problem with no value to show (e.g. a missing key: the span is the enclosing table).
     pub fn push_at(&mut self, span: Option<Range<usize>>, scene: Option<&str>, key: &str, message: impl Into<String>) {
+        if self.is_silenced(&span) {
+            return;
+        }
         let (line, column) = span.as_ref().map_or((0, 0), |s| self.line_col(s.start));
         self.diagnostics.push(Diagnostic {
             file: self.file.to_string(),
