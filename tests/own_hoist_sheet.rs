@@ -165,3 +165,20 @@ fn the_slip_accelerations_at_rest_equal_their_closed_form() {
     close(&rest.lowering_accel_to_slip_m_s2, down);
     close(&rest.lifting_decel_to_slip_m_s2, down);
 }
+
+/// An unknown key gets the nearest key of its table when it is a slip: `diamter_m` in
+/// `[pulley]` (one letter left out), `load_case` at the top (one left out); a key far from every
+/// key gets no guess.
+#[test]
+fn an_unknown_key_gets_a_suggestion() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let base = sheet(Units::Si, &[], FULL_SPEED_S, true, &full_at_rest(Units::Si));
+    let slips = base.replacen("diameter_m = ", "diamter_m = ", 1).replace("[load_cases]", "[load_case]");
+    let (status, stderr, _) = wrapcalc(dir.path(), &slips, &["check"], &[]);
+    assert_eq!(status, Some(1), "{stderr}");
+    assert!(stderr.contains("did you mean `diameter_m`?"), "{stderr}");
+    assert!(stderr.contains("did you mean `load_cases`?"), "{stderr}");
+    let far = base.replacen("mu = ", "friction_of_the_lining = ", 1);
+    let (_, stderr, _) = wrapcalc(dir.path(), &far, &["check"], &[]);
+    assert!(stderr.contains("unknown field `friction_of_the_lining`") && !stderr.contains("did you mean"), "{stderr}");
+}

@@ -79,9 +79,15 @@ const MBF_K: Range = Range { low: 0.2, high: 1.3 };
 
 /// Every warning of `design`, in the order of the sheet's keys.
 pub fn warnings(design: &Design) -> Vec<InputWarning> {
+    let mut out = pulley_warnings(design);
+    out.extend(rope_warnings(design));
+    out
+}
+
+/// The pulley's diameter, wrap angle and μ.
+fn pulley_warnings(design: &Design) -> Vec<InputWarning> {
     let mut out = Vec::new();
-    let (p, r) = (&design.pulley, &design.rope);
-    let n = f64::from(r.count);
+    let p = &design.pulley;
     if PULLEY_D_M.outside(p.diameter_m) {
         let likely = (p.diameter_m >= 100.0)
             .then(|| format!("likely millimetres typed as metres: D = {} m", short(p.diameter_m / 1e3)));
@@ -116,6 +122,14 @@ pub fn warnings(design: &Design) -> Vec<InputWarning> {
             likely,
         });
     }
+    out
+}
+
+/// D/d and the rope's mass per metre, EA and breaking force against its diameter.
+fn rope_warnings(design: &Design) -> Vec<InputWarning> {
+    let mut out = Vec::new();
+    let (p, r) = (&design.pulley, &design.rope);
+    let n = f64::from(r.count);
     let Some(d) = r.diameter_m else { return out };
     let ratio = p.diameter_m / d;
     if D_RATIO.outside(ratio) && !PULLEY_D_M.outside(p.diameter_m) {

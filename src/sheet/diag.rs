@@ -147,7 +147,15 @@ impl<'a> Collector<'a> {
 
     /// A serde/TOML error from deserializing one section of the sheet.
     pub fn push_toml(&mut self, err: &toml::de::Error, scene: Option<&str>, section: &str) {
-        let message = err.message().trim().to_string();
+        let mut message = err.message().trim().to_string();
+        if let Some(field) = unknown_field(&message) {
+            // serde lists the keys it expected in backquotes after "expected".
+            let expected = message.split_once("expected").map_or("", |(_, rest)| rest);
+            let keys: Vec<&str> = expected.split('`').skip(1).step_by(2).collect();
+            if let Some(best) = did_you_mean(&field, keys) {
+                message = format!("{message}; did you mean `{best}`?");
+            }
+        }
         let field = unknown_field(&message).or_else(|| err.span().and_then(|s| self.key_before(s.start)));
         let key = field.map_or_else(|| section.to_string(), |f| join_key(section, &f));
         self.push(err.span(), scene, &key, message);
@@ -171,6 +179,19 @@ impl<'a> Collector<'a> {
 /// `section.key`, or `key` at the top level.
 pub(crate) fn join_key(section: &str, key: &str) -> String {
     if section.is_empty() { key.to_string() } else { format!("{section}.{key}") }
+}
+
+/// The candidate closest to `word` when it is close enough to be a typing slip: at most 2
+/// edits (insertions, deletions, substitutions, transpositions of adjacent letters), or a third
+/// of the word's length for a longer word; `None` when nothing is that close.
+pub(crate) fn did_you_mean<'a>(word: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
+    let most = 2.max(word.chars().count() / 3);
+    candidates
+        .into_iter()
+        .map(|c| (strsim::damerau_levenshtein(word, c), c))
+        .filter(|&(d, _)| d <= most)
+        .min_by_key(|&(d, _)| d)
+        .map(|(_, c)| c)
 }
 
 /// The field name in serde's "unknown field `x`, expected ..." message.

@@ -189,12 +189,12 @@ pub fn parse(file: &str, text: &str) -> Result<Design, SheetError> {
                 "lift",
                 "a lift sheet ([lift]) is not a hoist design; read it as a sheet of either kind (sheet::parse_sheet)",
             ),
-            other => c.push(
-                Some(key_span),
-                None,
-                other,
-                format!("unknown key; a sheet's top-level keys are {}", TOP_LEVEL_KEYS.join(", ")),
-            ),
+            other => {
+                let hint = diag::did_you_mean(other, TOP_LEVEL_KEYS.iter().copied())
+                    .map_or_else(String::new, |k| format!("; did you mean `{k}`?"));
+                let keys = TOP_LEVEL_KEYS.join(", ");
+                c.push(Some(key_span), None, other, format!("unknown key; a sheet's top-level keys are {keys}{hint}"))
+            }
         }
     }
     let design = validate::design(&mut c, sections);
