@@ -77,6 +77,7 @@ fn execute(cli: Cli) -> anyhow::Result<bool> {
                     return Ok(wrapcalc::lift::command::execute(&lift, None, lift_print(args.format, false))?);
                 }
             };
+            print_input_warnings(&design);
             let scenes: Vec<&Scene> = design.scenes.iter().collect();
             let options = Options { request: Request::ChecksOnly, ..Options::default() };
             let result =
@@ -264,6 +265,7 @@ fn run_command(args: RunArgs) -> anyhow::Result<bool> {
             return Ok(wrapcalc::lift::command::execute(&lift, Some((&out_dir, options)), print)?);
         }
     };
+    print_input_warnings(&design);
     let scenes = design.select_scenes(&args.scenes).map_err(|e| anyhow::anyhow!("{}: {e}", design.sheet))?;
     let forced_level = args.model.level.forced();
     let options = Options {
@@ -316,6 +318,14 @@ fn refuse_foreign(out_dir: &Path) -> Result<(), report::ReportError> {
 fn default_out_dir(sheet: &Path) -> PathBuf {
     let stem = sheet.file_stem().map_or_else(|| "report".into(), |s| s.to_string_lossy().into_owned());
     Path::new("reports").join(stem)
+}
+
+/// The inputs to confirm (far outside their ranges of practice), on stderr before the run; they
+/// change no result and no exit status.
+fn print_input_warnings(design: &Design) {
+    for w in wrapcalc::design::plausible::warnings(design) {
+        eprintln!("{}: warning: {w}", design.sheet);
+    }
 }
 
 fn print_result(design: &Design, result: &RunResult, format: Format, quiet: bool) {

@@ -110,6 +110,7 @@ fn design(name: &str, samples: Vec<HistorySample>) -> Design {
             outputs: Outputs::all_for(&kind).without(Output::Margins).without(Output::Fit),
             kind,
             tracks: None,
+            informational: false,
         }],
     }
 }

@@ -171,6 +171,7 @@ fn bench_design(name: &str, kind: SceneKind) -> Design {
             outputs: Outputs::all_for(&kind).without(Output::Margins).without(Output::Fit),
             kind,
             tracks: None,
+            informational: false,
         }],
     }
 }

@@ -147,6 +147,9 @@ pub struct Check {
     pub governing_case: Option<String>,
     /// Why a check is not evaluated or what its verdict rests on, when that needs saying.
     pub note: Option<String>,
+    /// A safety factor whose tensions are balanced (their difference below what the inputs
+    /// resolve, `model::level0::balanced`): `value` is `None`, printed "∞ (balanced)".
+    pub balanced: bool,
 }
 
 impl Check {
@@ -169,6 +172,7 @@ impl Check {
             verdict: Verdict::NoRequirement,
             governing_case: None,
             note: None,
+            balanced: false,
         }
     }
 

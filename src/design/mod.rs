@@ -2,6 +2,7 @@
 //! All quantities are SI; angles are stored in radians (`_rad`) and reported in degrees.
 
 pub mod geometry;
+pub mod plausible;
 pub mod requirements;
 
 pub use crate::design::requirements::{DEFAULT_SAFETY_FACTOR_SOURCE, Limit, Requirements, SafetyFactorBasis};

@@ -47,6 +47,10 @@ pub struct Scene {
     pub outputs: Outputs,
     /// Rope elements to follow through the wrap (time scenes; sheet keys `track_*`).
     pub tracks: Option<Tracks>,
+    /// A what-if scene (sheet key `informational`): computed and reported under
+    /// "informational cases", outside the verdict, the governing cases, the design checks and
+    /// the exit status.
+    pub informational: bool,
 }
 
 /// Where a followed rope element sits on the rope (its centre).

@@ -85,11 +85,15 @@ pub struct CaseResult {
     pub m2_kg: f64,
     /// Tension ratio `(T_hi − m'v²) / (T_lo − m'v²)`.
     pub tension_ratio: f64,
-    /// Anti-slip safety factor at rest (`None` with equal end tensions).
+    /// Anti-slip safety factor at rest (`None` when the masses are [`balanced`](Self::balanced)).
     pub static_safety_factor: Option<f64>,
-    /// The code value, on rigid ropes.
+    /// The masses at rest are balanced: their tension difference is below what the inputs
+    /// resolve ([`crate::model::level0::balanced`]), so `static_safety_factor` is `null`
+    /// ("∞ (balanced)"), as is every factor of the case whose tensions balance likewise.
+    pub balanced: bool,
+    /// The code value, on rigid ropes (`None`: the tensions balance).
     pub dynamic_safety_factor: Option<f64>,
-    /// With the suspended ropes' dynamics (level-4 cases).
+    /// With the suspended ropes' dynamics (level-4 cases; `None` at level 4: the tensions balance).
     pub rope_dynamics_safety_factor: Option<f64>,
     /// The emergency stop's report (level-4 stop cases).
     pub stop: Option<StopReport>,

@@ -223,6 +223,7 @@ pub fn from_states(
         m2_kg: 0.0,
         tension_ratio: state.tension_ratio(),
         static_safety_factor: static_sf,
+        balanced: level0::balanced(&static_state, limit),
         dynamic_safety_factor: dynamic_sf,
         rope_dynamics_safety_factor: None,
         stop: None,

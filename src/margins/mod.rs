@@ -24,7 +24,9 @@
 pub mod fit;
 
 mod emergency;
+mod rest;
 pub use emergency::emergency;
+pub use rest::{RestSlip, rest_slip};
 
 use crate::design::{Design, Direction};
 use crate::model::level0::{EndState, euler_limit};
@@ -56,7 +58,8 @@ pub enum MarginVerdict {
     CriticalMuAboveRange,
     /// `not applicable: the criterion is not finite on the searched range`.
     NotFinite,
-    /// `not applicable: the state is at rest` (braking margins only).
+    /// `not applicable: the state is at rest` (braking margins only: a state at rest has its
+    /// slip accelerations instead, [`Margins::at_rest_slip`]).
     AtRest,
     /// The root finder's failure.
     Failed(RootError),
@@ -119,6 +122,9 @@ pub struct Margins {
     /// The largest emergency deceleration before the dynamic safety factor falls to its
     /// minimum, with the ropes' dynamics (m/s²).
     pub emergency_braking_to_min_safety_factor_m_s2: Option<Margin>,
+    /// A state at rest (v = 0, a = 0): the heavy side's acceleration and deceleration, lifting
+    /// and lowering, that grossly slip the ropes, in closed form ([`rest_slip`]); `None` in motion.
+    pub at_rest_slip: Option<RestSlip>,
     /// Calls and iterations of argmin's Brent method.
     pub root_finding: RootStats,
 }
@@ -244,6 +250,7 @@ pub fn of_masses(
         braking_to_min_safety_factor_m_s2,
         emergency_braking_to_slip_m_s2: None,
         emergency_braking_to_min_safety_factor_m_s2: None,
+        at_rest_slip: at_rest.then(|| rest_slip(masses, guide_kg, limit, g)),
         root_finding: stats,
     }
 }

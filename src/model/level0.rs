@@ -101,18 +101,37 @@ pub fn euler_limit(mu: f64, wrap_angle_rad: f64) -> f64 {
     (mu * wrap_angle_rad).exp()
 }
 
-/// Anti-slip safety factor `σ = (T_lo − m'v²)(e^{μα} − 1)/(T_hi − T_lo)`;
-/// `None` when the tensions are equal (no tension difference: unbounded margin).
+/// A tension difference below this fraction of the tensions is below what a sheet's inputs
+/// resolve (see [`balanced`]).
+pub const BALANCED_REL: f64 = 1e-6;
+
+/// Whether the state's end tensions are balanced: their difference is below what the inputs
+/// resolve, so that no anti-slip safety factor can be told from infinity.
 ///
-/// Equal means equal to within [`EQUAL_TENSIONS_REL`] of the larger tension: the two tensions are
-/// sums of weights and inertial forces of order 10⁵ N, each rounded to about 1e-16 of itself, so
-/// a difference below 1e-9 of the tension (0.1 mN on 100 kN) is rounding, not a load; dividing by
-/// it would print a factor of 10¹⁵ that no hoist can have.
-pub fn safety_factor(state: &EndState, euler_limit: f64) -> Option<f64> {
+/// The tensions are `g·(m + m'·L)/n` summed over conveyances, payloads and ropes, every input
+/// written with a finite number of digits: a length of 914.4 m written to the millimetre
+/// resolves 1.1e-6 of itself, a 20 000 kg conveyance to the kilogram 5e-5, a rope's mass per
+/// metre is rarely written to more than 5 significant figures (its makers' tolerance is a few
+/// per cent), and a length converted from feet and rounded to 0.1 mm leaves differences of
+/// 1e-7 of the hanging rope. A difference below [`BALANCED_REL`] of the larger of the tensions
+/// and of the friction reserve `(T_lo − m'v²)(e^{μα} − 1)` is therefore round-off of the
+/// inputs, not a load (the 1.8 g left by a travel of 914.4004 m against 914.4 m is 2e-8 of a
+/// 100 t side); and by the second term the factor it would give is never above 1/BALANCED_REL
+/// = 10⁶. The floating-point round-off of the sums (about 1e-16 of each term) is far below.
+pub fn balanced(state: &EndState, euler_limit: f64) -> bool {
     let diff = state.t_hi_n() - state.t_lo_n();
-    if diff <= EQUAL_TENSIONS_REL * state.t_hi_n().abs() {
+    let reserve = (state.t_lo_n() - state.centrifugal_n) * (euler_limit - 1.0);
+    diff <= BALANCED_REL * state.t_hi_n().abs().max(reserve.abs())
+}
+
+/// Anti-slip safety factor `σ = (T_lo − m'v²)(e^{μα} − 1)/(T_hi − T_lo)`;
+/// `None` when the tensions are [`balanced`] (no tension difference the inputs resolve:
+/// unbounded margin, "∞ (balanced)" in the reports).
+pub fn safety_factor(state: &EndState, euler_limit: f64) -> Option<f64> {
+    if balanced(state, euler_limit) {
         return None;
     }
+    let diff = state.t_hi_n() - state.t_lo_n();
     let sf = (state.t_lo_n() - state.centrifugal_n) * (euler_limit - 1.0) / diff;
     sf.is_finite().then_some(sf)
 }
@@ -359,7 +378,8 @@ pub fn safety_check(
     value: Option<f64>,
     minimum: &Limit,
 ) -> Check {
-    Check::new(name, formula, value, "")
+    let balanced = value.is_none() && balanced(state, euler_limit);
+    let mut check = Check::new(name, formula, value, "")
         .inputs(vec![
             q("T1", state.t1_n, "N"),
             q("T2", state.t2_n, "N"),
@@ -370,5 +390,7 @@ pub fn safety_check(
             q("T_lo − m'v²", state.t_lo_n() - state.centrifugal_n, "N"),
             q("T_hi − T_lo", state.t_hi_n() - state.t_lo_n(), "N"),
         ])
-        .against(Relation::AtLeast, Some(minimum), true)
+        .against(Relation::AtLeast, Some(minimum), true);
+    check.balanced = balanced;
+    check
 }

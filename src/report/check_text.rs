@@ -65,12 +65,13 @@ pub(crate) fn render_check(out: &mut String, check: &Check, style: Style) {
     }
 }
 
-/// A check's value with its unit: ∞ for an unbounded safety factor, — when not evaluated.
+/// A check's value with its unit: "∞ (balanced)" for a safety factor of balanced tensions (the
+/// only value a judged check leaves out), — when not evaluated.
 pub(crate) fn value_text(value: Option<f64>, verdict: Verdict, unit: &str) -> String {
     match (value, verdict) {
         (_, Verdict::NotEvaluated) => "—".to_string(),
         (Some(v), _) => format!("{}{}", number(v), unit_suffix(unit)),
-        (None, _) => "∞".into(),
+        (None, _) => super::matrix::BALANCED.into(),
     }
 }
 

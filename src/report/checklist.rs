@@ -17,12 +17,25 @@ pub struct CheckRow<'a> {
     pub check: &'a Check,
 }
 
-/// The checks of `run`, scene by scene, then the design's.
+/// The checks of `run`, scene by scene, then the design's; an informational scene's checks
+/// stand outside ([`informational_rows`]).
 pub fn rows(run: &RunResult) -> Vec<CheckRow<'_>> {
-    let scenes =
-        run.scenes.iter().flat_map(|s| s.classical.checks.iter().map(|check| CheckRow { group: &s.name, check }));
+    let scenes = run
+        .scenes
+        .iter()
+        .filter(|s| !s.informational)
+        .flat_map(|s| s.classical.checks.iter().map(|check| CheckRow { group: &s.name, check }));
     let design = run.design.iter().flat_map(|d| d.checks.iter().map(|check| CheckRow { group: DESIGN_GROUP, check }));
     scenes.chain(design).collect()
+}
+
+/// The checks of the informational (what-if) scenes, outside the verdict.
+pub fn informational_rows(run: &RunResult) -> Vec<CheckRow<'_>> {
+    run.scenes
+        .iter()
+        .filter(|s| s.informational)
+        .flat_map(|s| s.classical.checks.iter().map(|check| CheckRow { group: &s.name, check }))
+        .collect()
 }
 
 /// The margin of a check to its limit, relative to the limit: positive when it passes

@@ -12,6 +12,29 @@ fn opt(v: Option<f64>, digits: usize) -> String {
     v.map_or_else(|| "—".into(), |v| format!("{v:.digits$}"))
 }
 
+/// The text of a safety factor that applies to the case: `None` is a balanced one.
+pub(crate) fn factor(v: Option<f64>) -> String {
+    v.map_or_else(|| BALANCED.into(), |v| format!("{v:.3}"))
+}
+
+/// How a safety factor of balanced tensions (no difference the inputs resolve) is printed.
+pub const BALANCED: &str = "∞ (balanced)";
+
+/// Whether the case runs the suspended ropes (its dynamic factor is then the rope-dynamics one).
+fn level4(c: &CaseResult) -> bool {
+    c.level == crate::plan::Level::Dynamic4
+}
+
+/// The case's factor with the suspended ropes' dynamics: only level-4 cases have one.
+pub(crate) fn rope_factor(c: &CaseResult) -> String {
+    if level4(c) { factor(c.rope_dynamics_safety_factor) } else { "—".into() }
+}
+
+/// The case's dynamic factor on rigid ropes: a level-4 case has its rope-dynamics one instead.
+pub(crate) fn dynamic_factor(c: &CaseResult) -> String {
+    if level4(c) { "—".into() } else { factor(c.dynamic_safety_factor) }
+}
+
 /// The position column: "50 %", "t = 12.34 s", "stop 50 %".
 pub(crate) fn position(c: &CaseResult) -> String {
     match c.position {
@@ -52,7 +75,7 @@ pub fn render_matrix(out: &mut String, m: &MatrixResult, style: Style) {
         };
         let _ = writeln!(
             out,
-            "{:>8.0}  {:<5}  {:<12}  {:<22}  {:>6.1}  {:>3}  {:>8.2}  {:>8.2}  {:>6.4}  {:>7}  {:>7}  {:>7}  {:>6}  {:>6}  {}{}",
+            "{:>8.0}  {:<5}  {:<12}  {:<22}  {:>6.1}  {:>3}  {:>8.2}  {:>8.2}  {:>6.4}  {:>12}  {:>12}  {:>12}  {:>6}  {:>6}  {}{}",
             c.payload_kg,
             c.direction,
             c.phase.keyword(),
@@ -62,9 +85,9 @@ pub fn render_matrix(out: &mut String, m: &MatrixResult, style: Style) {
             c.t1_n / 1e3,
             c.t2_n / 1e3,
             c.tension_ratio,
-            opt(c.static_safety_factor, 3),
-            opt(c.dynamic_safety_factor, 3),
-            opt(c.rope_dynamics_safety_factor, 3),
+            factor(c.static_safety_factor),
+            dynamic_factor(c),
+            rope_factor(c),
             opt(c.stop.map(|s| s.decel_m_s2), 3),
             opt(c.stop.map(|s| s.slip_limited_decel_m_s2), 3),
             style.verdict_pass(c.checks_pass),
@@ -94,11 +117,23 @@ pub enum Field {
     Bool(bool),
     /// Not applicable to this case: an empty cell.
     Missing,
+    /// A safety factor of balanced tensions: empty in matrix.csv (its `balanced` column says
+    /// why), "∞ (balanced)" in the workbook.
+    Balanced,
 }
 
 impl Field {
     fn opt(v: Option<f64>) -> Field {
         v.map_or(Field::Missing, Field::Number)
+    }
+
+    /// A safety factor that applies to the case (`applies`): `None` is a balanced one.
+    fn factor(v: Option<f64>, applies: bool) -> Field {
+        match (v, applies) {
+            (Some(v), _) => Field::Number(v),
+            (None, true) => Field::Balanced,
+            (None, false) => Field::Missing,
+        }
     }
 
     /// The field as matrix.csv writes it.
@@ -108,7 +143,7 @@ impl Field {
             Field::Number(v) => v.to_string(),
             Field::Int(v) => v.to_string(),
             Field::Bool(v) => v.to_string(),
-            Field::Missing => String::new(),
+            Field::Missing | Field::Balanced => String::new(),
         }
     }
 }
@@ -148,13 +183,17 @@ pub const CASE_COLUMNS: &[CaseColumn] = &[
     CaseColumn { header: "m1_kg", field: |c| Field::Number(c.m1_kg) },
     CaseColumn { header: "m2_kg", field: |c| Field::Number(c.m2_kg) },
     CaseColumn { header: "tension_ratio", field: |c| Field::Number(c.tension_ratio) },
-    CaseColumn { header: "static_safety_factor", field: |c| Field::opt(c.static_safety_factor) },
-    CaseColumn { header: "dynamic_safety_factor", field: |c| Field::opt(c.dynamic_safety_factor) },
-    CaseColumn { header: "rope_dynamics_safety_factor", field: |c| Field::opt(c.rope_dynamics_safety_factor) },
+    CaseColumn { header: "static_safety_factor", field: |c| Field::factor(c.static_safety_factor, true) },
+    CaseColumn { header: "dynamic_safety_factor", field: |c| Field::factor(c.dynamic_safety_factor, !level4(c)) },
+    CaseColumn {
+        header: "rope_dynamics_safety_factor",
+        field: |c| Field::factor(c.rope_dynamics_safety_factor, level4(c)),
+    },
     CaseColumn { header: "emergency_decel_m_s2", field: |c| Field::opt(c.stop.map(|s| s.decel_m_s2)) },
     CaseColumn { header: "slip_limited_decel_m_s2", field: |c| Field::opt(c.stop.map(|s| s.slip_limited_decel_m_s2)) },
     CaseColumn { header: "slip_onset_t_s", field: |c| Field::opt(c.slip_onset.map(|o| o.t_s)) },
     CaseColumn { header: "checks_pass", field: |c| Field::Bool(c.checks_pass) },
+    CaseColumn { header: "balanced", field: |c| Field::Bool(c.balanced) },
 ];
 
 /// matrix.csv: one row per case, the columns of [`CASE_COLUMNS`].

@@ -187,6 +187,9 @@ pub struct SceneJson {
     pub summary: SceneSummary,
     /// The scene's design checks.
     pub checks: Vec<Check>,
+    /// Extension: a what-if scene (sheet key `informational`): its checks stand outside
+    /// `all_checks_pass`, the verdict and the governing cases.
+    pub informational: bool,
     /// Calls and iterations of argmin's Brent method on the distribution (level 1 and up).
     pub root_finding: Option<RootStats>,
     /// Increments, node events and clarabel verdicts of the discrete level.
@@ -299,6 +302,10 @@ pub struct Summary {
     pub design_checks: Option<Vec<Check>>,
     /// Extension (a sheet with `[load_cases]`): the load-case matrix, every case.
     pub load_cases: Option<MatrixResult>,
+    /// Extension: inputs far outside their ranges of practice, each with the key, the value,
+    /// the usual range and the likely slip (empty when every input is usual). They change no
+    /// result and no verdict.
+    pub input_warnings: Vec<crate::design::plausible::InputWarning>,
 }
 
 impl Summary {
@@ -322,6 +329,7 @@ impl Summary {
                 .map(|s| SceneJson {
                     summary: SceneSummary::of(s),
                     checks: s.classical.checks.clone(),
+                    informational: s.informational,
                     demarcations_deg: s
                         .wrap
                         .as_ref()
@@ -347,6 +355,7 @@ impl Summary {
                 .collect(),
             design_checks: run.design.as_ref().map(|d| d.checks.clone()),
             load_cases: run.design.as_ref().and_then(|d| d.matrix.clone()),
+            input_warnings: crate::design::plausible::warnings(design),
         }
     }
 

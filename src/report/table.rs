@@ -31,7 +31,7 @@ fn opt(v: Option<f64>, digits: usize) -> String {
 }
 
 fn factor(v: Option<f64>) -> String {
-    v.map_or_else(|| "∞".into(), |v| format!("{v:.3}"))
+    v.map_or_else(|| super::matrix::BALANCED.into(), |v| format!("{v:.3}"))
 }
 
 /// Renders the table report.
@@ -51,7 +51,7 @@ pub fn render(title: &str, sheet: &str, run: &RunResult, style: Style) -> String
         out,
         "σ_d: the code's dynamic safety factor (rigid ropes, T = m(g ± a)/n); σ_ropes: with the suspended ropes' dynamics (level 4)."
     );
-    let _ = writeln!(out, "Checks (per rope; σ = ∞ when T1 = T2):");
+    let _ = writeln!(out, "Checks (per rope; σ = ∞ (balanced) when T1 = T2 to what the inputs resolve):");
     for s in &run.scenes {
         scene_checks(&mut out, s, style);
     }
@@ -128,15 +128,22 @@ fn summary_table(out: &mut String, run: &RunResult, style: Style) {
                     format!("  GROSS SLIP from t = {:.3} s (ratio {:.4}): the trip ends there", o.t_s, o.ratio),
                 (None, true) => "  GROSS SLIP".into(),
                 (None, false) => String::new(),
-            },
+            } + if s.informational { "  (informational: outside the verdict)" } else { "" },
         );
     }
 }
 
 /// One scene's checks, margins and creep-theory fit, under a heading naming its state and level.
 fn scene_checks(out: &mut String, s: &SceneResult, style: Style) {
-    let _ =
-        writeln!(out, "\n[{}] {} — level {}: {}", s.name, state_label(&s.classical.state), s.plan.level, s.plan.reason);
+    let what_if = if s.informational { " (informational case: outside the verdict and the exit status)" } else { "" };
+    let _ = writeln!(
+        out,
+        "\n[{}]{what_if} {} — level {}: {}",
+        s.name,
+        state_label(&s.classical.state),
+        s.plan.level,
+        s.plan.reason
+    );
     for check in &s.classical.checks {
         render_check(out, check, style);
     }
@@ -190,5 +197,15 @@ fn render_margins(out: &mut String, m: &Margins) {
     }
     if let Some(d) = &m.emergency_braking_to_min_safety_factor_m_s2 {
         line(out, "emergency stop d to σ_d minimum", "rope dynamics, worst instant: σ = σ_d,min", d, "m/s²", 4);
+    }
+    if let Some(r) = &m.at_rest_slip {
+        let _ =
+            writeln!(out, "    at rest, side {} the heavy side h (closed form, v = 0; E = e^{{μα}}):", r.heavy_side);
+        let up = "a = g(E m_l − m_h)/(m_h + g_h + E(m_l + g_l))";
+        let down = "a = g(E m_h − m_l)/(m_l + g_l + E(m_h + g_h))";
+        line(out, "lifting h: acceleration to gross slip", up, &r.lifting_accel_to_slip_m_s2, "m/s²", 4);
+        line(out, "lifting h: deceleration to gross slip", down, &r.lifting_decel_to_slip_m_s2, "m/s²", 4);
+        line(out, "lowering h: acceleration to gross slip", down, &r.lowering_accel_to_slip_m_s2, "m/s²", 4);
+        line(out, "lowering h: deceleration to gross slip", up, &r.lowering_decel_to_slip_m_s2, "m/s²", 4);
     }
 }

@@ -67,6 +67,11 @@ fn number(v: Option<f64>) -> Cell {
     v.map_or(Cell::Empty, Cell::Number)
 }
 
+/// wrapcalc's value of a check: "∞ (balanced)" for a factor of balanced tensions.
+fn value_cell(c: &crate::check::Check) -> Cell {
+    if c.balanced { text(super::matrix::BALANCED) } else { number(c.value) }
+}
+
 fn opt_text(s: &Option<String>) -> Cell {
     s.as_ref().map_or(Cell::Empty, |s| text(s.clone()))
 }
@@ -90,7 +95,7 @@ fn check_columns<'a>() -> Vec<Column<Line<'a>>> {
             width: 16.0,
             cell: |l| l.value.clone().map_or(Cell::Empty, Cell::Formula),
         },
-        Column { header: "value (wrapcalc)", width: 16.0, cell: |l| number(l.row.check.value) },
+        Column { header: "value (wrapcalc)", width: 16.0, cell: |l| value_cell(l.row.check) },
         Column {
             header: "limit (recomputed)",
             width: 16.0,
@@ -150,7 +155,7 @@ fn spreadsheet_formula(l: &Line<'_>) -> Cell {
     match (&l.value, c.verdict, c.value) {
         (Some(f), _, _) => text(format!("={}", f.symbols)),
         (None, Verdict::NotEvaluated, _) => text("not evaluated"),
-        (None, _, None) => text("no value (unbounded)"),
+        (None, _, None) => text("no value: the tensions balance (no difference the inputs resolve)"),
         (None, _, Some(_)) => text("no closed form over its inputs; see the report"),
     }
 }
@@ -307,6 +312,7 @@ fn write_cases(sheet: &mut Worksheet, heading: &str, run: &RunResult) -> Result<
                 Field::Int(v) => Cell::Number(v as f64),
                 Field::Bool(b) => Cell::Bool(b),
                 Field::Missing => Cell::Empty,
+                Field::Balanced => text(super::matrix::BALANCED),
             };
             write_cell(sheet, HEADER_ROW + 1 + i as u32, col as u16, cell)?;
         }

@@ -42,11 +42,12 @@ pub fn evaluate(design: &Design, scenes: &[SceneResult], rope_dynamics: bool) ->
             }
         }
     }
-    for s in scenes {
+    // A what-if (informational) scene stands outside the design's checks and their governing cases.
+    let scenes = || scenes.iter().filter(|s| !s.informational);
+    for s in scenes() {
         statics.extend(scene_statics(design, s));
     }
-    let peak = scenes
-        .iter()
+    let peak = scenes()
         .flat_map(|s| {
             let dists = s.snapshots.iter().chain(s.wrap.as_ref().map(|w| &w.distribution));
             dists.flat_map(move |d| {

@@ -248,6 +248,8 @@ pub struct SceneResult {
     pub tracks: Option<track::TrackOutput>,
     /// Duty cycles on a sheet with `[ropes]`: each rope's share of the load.
     pub ropes: Option<Box<crate::ropes::scene::SceneRopes>>,
+    /// A what-if scene ([`Scene::informational`]): its checks stand outside the verdict.
+    pub informational: bool,
 }
 
 impl SceneResult {
@@ -273,9 +275,11 @@ pub struct RunResult {
 }
 
 impl RunResult {
-    /// Whether no check of a scene or of the design as a whole fails.
+    /// Whether no check of a scene or of the design as a whole fails (informational scenes
+    /// stand outside).
     pub fn all_checks_pass(&self) -> bool {
-        self.scenes.iter().all(SceneResult::checks_pass) && self.design.as_ref().is_none_or(DesignResult::checks_pass)
+        self.scenes.iter().filter(|s| !s.informational).all(SceneResult::checks_pass)
+            && self.design.as_ref().is_none_or(DesignResult::checks_pass)
     }
 }
 
@@ -461,6 +465,7 @@ fn empty(scene: &Scene, plan: Plan, classical: Classical) -> SceneResult {
         hanging_kg: None,
         tracks: None,
         ropes: None,
+        informational: scene.informational,
     }
 }
 

@@ -69,11 +69,14 @@ pub(crate) struct Collector<'a> {
     pub file: &'a str,
     pub text: &'a str,
     pub diagnostics: Vec<Diagnostic>,
+    /// Byte offsets of values already reported (a text with a unit that could not be read):
+    /// later messages at them would repeat the error in other words.
+    pub silenced: Vec<usize>,
 }
 
 impl<'a> Collector<'a> {
     pub fn new(file: &'a str, text: &'a str) -> Self {
-        Self { file, text, diagnostics: Vec::new() }
+        Self { file, text, diagnostics: Vec::new(), silenced: Vec::new() }
     }
 
     /// 1-based line and column (in characters) of a byte offset.
@@ -99,7 +102,19 @@ impl<'a> Collector<'a> {
         Some(out)
     }
 
+    /// Drops later messages at the value starting at `offset` (already reported).
+    pub fn silence(&mut self, offset: usize) {
+        self.silenced.push(offset);
+    }
+
+    fn is_silenced(&self, span: &Option<Range<usize>>) -> bool {
+        span.as_ref().is_some_and(|s| self.silenced.contains(&s.start))
+    }
+
     pub fn push(&mut self, span: Option<Range<usize>>, scene: Option<&str>, key: &str, message: impl Into<String>) {
+        if self.is_silenced(&span) {
+            return;
+        }
         let (line, column) = span.as_ref().map_or((0, 0), |s| self.line_col(s.start));
         let value = span.as_ref().and_then(|s| self.snippet(s));
         self.diagnostics.push(Diagnostic {
@@ -115,6 +130,9 @@ impl<'a> Collector<'a> {
 
     /// A problem with no value to show (e.g. a missing key: the span is the enclosing table).
     pub fn push_at(&mut self, span: Option<Range<usize>>, scene: Option<&str>, key: &str, message: impl Into<String>) {
+        if self.is_silenced(&span) {
+            return;
+        }
         let (line, column) = span.as_ref().map_or((0, 0), |s| self.line_col(s.start));
         self.diagnostics.push(Diagnostic {
             file: self.file.to_string(),
@@ -129,7 +147,15 @@ impl<'a> Collector<'a> {
 
     /// A serde/TOML error from deserializing one section of the sheet.
     pub fn push_toml(&mut self, err: &toml::de::Error, scene: Option<&str>, section: &str) {
-        let message = err.message().trim().to_string();
+        let mut message = err.message().trim().to_string();
+        if let Some(field) = unknown_field(&message) {
+            // serde lists the keys it expected in backquotes after "expected".
+            let expected = message.split_once("expected").map_or("", |(_, rest)| rest);
+            let keys: Vec<&str> = expected.split('`').skip(1).step_by(2).collect();
+            if let Some(best) = did_you_mean(&field, keys) {
+                message = format!("{message}; did you mean `{best}`?");
+            }
+        }
         let field = unknown_field(&message).or_else(|| err.span().and_then(|s| self.key_before(s.start)));
         let key = field.map_or_else(|| section.to_string(), |f| join_key(section, &f));
         self.push(err.span(), scene, &key, message);
@@ -153,6 +179,19 @@ impl<'a> Collector<'a> {
 /// `section.key`, or `key` at the top level.
 pub(crate) fn join_key(section: &str, key: &str) -> String {
     if section.is_empty() { key.to_string() } else { format!("{section}.{key}") }
+}
+
+/// The candidate closest to `word` when it is close enough to be a typing slip: at most 2
+/// edits (insertions, deletions, substitutions, transpositions of adjacent letters), or a third
+/// of the word's length for a longer word; `None` when nothing is that close.
+pub(crate) fn did_you_mean<'a>(word: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
+    let most = 2.max(word.chars().count() / 3);
+    candidates
+        .into_iter()
+        .map(|c| (strsim::damerau_levenshtein(word, c), c))
+        .filter(|&(d, _)| d <= most)
+        .min_by_key(|&(d, _)| d)
+        .map(|(_, c)| c)
 }
 
 /// The field name in serde's "unknown field `x`, expected ..." message.

@@ -52,7 +52,7 @@ pub(super) fn hoist(c: &mut Collector, h: &Spanned<RawHoist>) -> Option<Hoist> {
         Some(v) => checked(c, at, "tail_min_breaking_force_n", v, POSITIVE).map(Some),
         None => Some(None),
     };
-    let stages = match &h.stage {
+    let stages: Option<Vec<MotionStage>> = match &h.stage {
         None => {
             c.push_at(
                 Some(span.clone()),
@@ -72,6 +72,26 @@ pub(super) fn hoist(c: &mut Collector, h: &Spanned<RawHoist>) -> Option<Hoist> {
             stages.into_iter().collect()
         }
     };
+    // The lengths against the travel whenever they and the stages are valid, whatever the
+    // masses: every error of the section in one run.
+    if let (Some(tail_count), Some(s1), Some(s2), Some(t1), Some(t2), Some(stages)) =
+        (tail_count, side1_length_m, side2_length_m, tail1_length_m, tail2_length_m, &stages)
+    {
+        let lengths = Hoist {
+            conveyance1_kg: conveyance1_kg.unwrap_or(1.0),
+            conveyance2_kg: conveyance2_kg.unwrap_or(1.0),
+            rope_damping_ratio: rope_damping_ratio.unwrap_or(0.0),
+            tail_count,
+            tail_mass_per_m_kg: tail_mass_per_m_kg.unwrap_or(0.0),
+            side1_length_m: s1,
+            side2_length_m: s2,
+            tail1_length_m: t1,
+            tail2_length_m: t2,
+            tail_min_breaking_force_n: None,
+            stages: stages.clone(),
+        };
+        super::travel::check(c, spanned, &lengths);
+    }
     let hoist = Hoist {
         conveyance1_kg: conveyance1_kg?,
         conveyance2_kg: conveyance2_kg?,
@@ -85,7 +105,6 @@ pub(super) fn hoist(c: &mut Collector, h: &Spanned<RawHoist>) -> Option<Hoist> {
         tail_min_breaking_force_n: tail_min_breaking_force_n?,
         stages: stages?,
     };
-    super::travel::check(c, spanned, &hoist);
     Some(hoist)
 }
 

@@ -28,6 +28,7 @@ mod schema;
 pub mod templates;
 mod track;
 mod travel;
+pub mod units;
 mod validate;
 
 pub use diag::{Diagnostic, SheetError};
@@ -77,11 +78,16 @@ pub fn load_sheet(path: &Path) -> Result<Sheet, SheetError> {
 
 /// Parses and validates sheet text of either kind; `file` is used in messages only.
 pub fn parse_sheet(file: &str, text: &str) -> Result<Sheet, SheetError> {
-    let root = match DeTable::parse(text) {
-        Ok(root) if lift::is_lift(root.get_ref()) => root,
+    match DeTable::parse(text) {
+        Ok(root) if lift::is_lift(root.get_ref()) => {}
         _ => return parse(file, text).map(|d| Sheet::Hoist(Box::new(d))),
     };
-    let mut c = Collector::new(file, text);
+    // Numbers written with a unit, in the keys' SI units; errors stay at the sheet's line:column.
+    let mut pre = Collector::new(file, text);
+    let converted = units::convert_sheet(&mut pre, text);
+    let Ok(root) = DeTable::parse(&converted) else { return Err(pre.into_error()) };
+    let mut c = Collector::new(file, &converted);
+    (c.diagnostics, c.silenced) = (pre.diagnostics, pre.silenced);
     match lift::lift_sheet(&mut c, root) {
         Some(l) if c.diagnostics.is_empty() => Ok(Sheet::Lift(Box::new(l))),
         _ => Err(c.into_error()),
@@ -118,7 +124,12 @@ fn file_error(file: &str, message: &str) -> SheetError {
 
 /// Parses and validates sheet text; `file` is used in messages only.
 pub fn parse(file: &str, text: &str) -> Result<Design, SheetError> {
+    // Numbers written with a unit, in the keys' SI units; errors stay at the sheet's line:column.
+    let mut pre = Collector::new(file, text);
+    let converted = units::convert_sheet(&mut pre, text);
+    let text = converted.as_str();
     let mut c = Collector::new(file, text);
+    (c.diagnostics, c.silenced) = (pre.diagnostics, pre.silenced);
     if text.trim().is_empty() {
         c.push_at(None, None, "", "the sheet is empty; it needs at least [pulley], [rope] and one [[scene]]");
         return Err(c.into_error());
@@ -178,12 +189,12 @@ pub fn parse(file: &str, text: &str) -> Result<Design, SheetError> {
                 "lift",
                 "a lift sheet ([lift]) is not a hoist design; read it as a sheet of either kind (sheet::parse_sheet)",
             ),
-            other => c.push(
-                Some(key_span),
-                None,
-                other,
-                format!("unknown key; a sheet's top-level keys are {}", TOP_LEVEL_KEYS.join(", ")),
-            ),
+            other => {
+                let hint = diag::did_you_mean(other, TOP_LEVEL_KEYS.iter().copied())
+                    .map_or_else(String::new, |k| format!("; did you mean `{k}`?"));
+                let keys = TOP_LEVEL_KEYS.join(", ");
+                c.push(Some(key_span), None, other, format!("unknown key; a sheet's top-level keys are {keys}{hint}"))
+            }
         }
     }
     let design = validate::design(&mut c, sections);

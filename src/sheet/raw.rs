@@ -110,6 +110,8 @@ pub struct RawLoadCases {
 #[serde(deny_unknown_fields)]
 pub struct RawScene {
     pub name: Option<Spanned<String>>,
+    /// A what-if scene, outside the verdict.
+    pub informational: Option<Spanned<bool>>,
     pub kind: Option<Spanned<String>>,
     pub m1_kg: Option<Spanned<f64>>,
     pub m2_kg: Option<Spanned<f64>>,

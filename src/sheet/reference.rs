@@ -21,7 +21,10 @@ sheet (the same definition the parser is tested against). A guided tour with exa
 Units are in the key names; tensions (`t1_n`, `t2_n`) are per rope, masses for all ropes
 together. Every number must be finite. Unknown keys, wrong types, values out of range, missing
 keys and keys of another kind of scene are errors, all reported at once. In a constraint, `x`
-stands for the value (for an array, each of its items).
+stands for the value (for an array, each of its items). A single number of a key with a unit
+may also be written as a text with a unit, converted to the key's unit by exact factors
+(`\"3000 ft\"`, `\"24 lb/ft\"`, `\"280000 lbf\"`, `\"20000 lb\"`, `\"1.75 in\"`, `\"3.14 rad\"`; the
+units are listed in sheet-guide.md, \"Numbers with a unit\").
 
 ## Editor support: the JSON Schema
 

@@ -51,7 +51,8 @@ fn scene(c: &mut Collector, slot: &SceneSlot, seen: &mut HashSet<String>, ctx: &
     let kind = scene_kind(c, at, slot, raw, ctx);
     let outputs = kind.as_ref().and_then(|k| super::outputs::outputs(c, at, &raw.outputs, k));
     let tracks = kind.as_ref().and_then(|k| super::track::tracks(c, at, raw, k));
-    Some(Scene { name: name?, kind: kind?, outputs: outputs?, tracks: tracks? })
+    let informational = raw.informational.as_ref().is_some_and(|i| *i.get_ref());
+    Some(Scene { name: name?, kind: kind?, outputs: outputs?, tracks: tracks?, informational })
 }
 
 /// The scene's name: present, usable as a folder name and not taken by an earlier scene.

@@ -100,8 +100,17 @@ fn key_schema(key: &Key, ty: Type) -> Value {
         }
         s
     };
+    // A number of a key with a unit may also be written as a text with a unit ("3000 ft").
+    // The range keywords apply to numbers only, the pattern to texts only.
+    let with_unit = |mut n: Value| {
+        if super::units::convert(&format!("1 {}", key.unit), key.unit).is_ok() {
+            n["type"] = json!(["number", "string"]);
+            n["pattern"] = json!(UNIT_PATTERN);
+        }
+        n
+    };
     let mut s = match ty {
-        Type::Number => number(),
+        Type::Number => with_unit(number()),
         Type::Integer => range_schema(json!({ "type": "integer" }), &key.range),
         Type::Bool => json!({ "type": "boolean" }),
         Type::Text => words(),
@@ -119,6 +128,9 @@ fn key_schema(key: &Key, ty: Type) -> Value {
     }
     s
 }
+
+/// A number followed by a unit (`sheet::units`), e.g. `3000 ft`, `24 lb/ft`.
+const UNIT_PATTERN: &str = r"^\s*[-+]?[0-9][0-9_]*(\.[0-9_]*)?([eE][-+]?[0-9]+)?\s*[^\s0-9].*$";
 
 fn range_schema(mut s: Value, r: &Range) -> Value {
     if let Some(b) = r.min {

@@ -15,6 +15,20 @@ fn m(x: f64) -> String {
     format!("{}", (x * 1e3).round() / 1e3)
 }
 
+/// A limit `x` (m) in a message about the value `given`: to the millimetre, or with as many
+/// more decimals as it takes to tell it from `given` (914.4004 against 914.4, not 914.4 against
+/// 914.4), so that the message shows the violation it reports.
+fn m_vs(x: f64, given: f64) -> String {
+    for digits in 3..=12 {
+        let (a, b) = (format!("{x:.digits$}"), format!("{given:.digits$}"));
+        if a != b {
+            let a = a.trim_end_matches('0');
+            return a.strip_suffix('.').unwrap_or(a).to_string();
+        }
+    }
+    format!("{x}")
+}
+
 /// The extremes of the pulley travel over every trip of the profile, `(lowest, highest)` with
 /// side 1 upward positive from the start of a lift, and the lift's travel; `None` when the
 /// profile cannot be built (the run reports why).
@@ -59,7 +73,7 @@ pub(super) fn check(c: &mut Collector, raw: &Spanned<RawHoist>, hoist: &Hoist) {
         let msg = format!(
             "{start}, and {profile}: conveyance 1 would rise into the pulley. Expected side1_length_m > {} m (the \
              travel and the rope left above conveyance 1 at the top), or stages that make less travel{}",
-            m(hi),
+            m_vs(hi, hoist.side1_length_m),
             swapped(hoist.side1_length_m, hoist.side2_length_m)
         );
         push(c, raw, &r.side1_length_m, "hoist.side1_length_m", msg);
@@ -67,7 +81,7 @@ pub(super) fn check(c: &mut Collector, raw: &Spanned<RawHoist>, hoist: &Hoist) {
     if hoist.side2_length_m + lo <= 0.0 {
         let msg = format!(
             "{start}, and {profile}: conveyance 2 would rise into the pulley. Expected side2_length_m > {} m",
-            m(-lo)
+            m_vs(-lo, hoist.side2_length_m)
         );
         push(c, raw, &r.side2_length_m, "hoist.side2_length_m", msg);
     }
@@ -79,8 +93,8 @@ pub(super) fn check(c: &mut Collector, raw: &Spanned<RawHoist>, hoist: &Hoist) {
             "the tail rope below conveyance 2 at the start of a lift (conveyance 1 at the bottom, conveyance 2 at the \
              top) pays out as conveyance 2 comes down, and {profile}: it would run out. Expected tail2_length_m ≥ {} \
              m, or stages that make at most {} m of travel",
-            m(hi),
-            m(hoist.tail2_length_m)
+            m_vs(hi, hoist.tail2_length_m),
+            m_vs(hoist.tail2_length_m, hi)
         );
         push(c, raw, &r.tail2_length_m, "hoist.tail2_length_m", msg);
     }
@@ -88,7 +102,7 @@ pub(super) fn check(c: &mut Collector, raw: &Spanned<RawHoist>, hoist: &Hoist) {
         let msg = format!(
             "the tail rope below conveyance 1 at the start of a lift (conveyance 1 at the bottom) runs out if the \
              profile first lowers conveyance 1, and {profile}. Expected tail1_length_m ≥ {} m",
-            m(-lo)
+            m_vs(-lo, hoist.tail1_length_m)
         );
         push(c, raw, &r.tail1_length_m, "hoist.tail1_length_m", msg);
     }

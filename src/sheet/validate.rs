@@ -68,8 +68,15 @@ pub fn design(c: &mut Collector, s: Sections) -> Option<Design> {
             };
             super::scene::scenes(c, slots, &ctx)
         }
+        // A matrix-only sheet: the load-case matrix computes every design check.
+        _ if s.present.contains(&"load_cases") && s.present.contains(&"hoist") => Some(Vec::new()),
         _ => {
-            c.push_at(Some(s.doc_span.clone()), None, "scene", "no [[scene]]: a sheet needs at least one scene");
+            c.push_at(
+                Some(s.doc_span.clone()),
+                None,
+                "scene",
+                "no [[scene]]: a sheet needs at least one scene, or a [hoist] with [load_cases] (the load-case matrix)",
+            );
             None
         }
     };

@@ -5,6 +5,7 @@
 #![allow(dead_code, unused_imports, unused_macros)]
 
 pub mod bin;
+pub mod own_hoist;
 pub mod sheets;
 
 pub use bin::{WRAPCALC, run_wrapcalc, wrapcalc};

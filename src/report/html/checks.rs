@@ -76,8 +76,8 @@ pub fn load_cases(out: &mut String, ctx: &Context) -> io::Result<()> {
             format!("{:.2}", c.t1_n / 1e3),
             format!("{:.2}", c.t2_n / 1e3),
             format!("{:.4}", c.tension_ratio),
-            opt(c.static_safety_factor, 3),
-            opt(c.dynamic_safety_factor, 3),
+            crate::report::matrix::factor(c.static_safety_factor),
+            crate::report::matrix::dynamic_factor(c),
             opt(c.stop.map(|s| s.decel_m_s2), 3),
             verdict_html(if c.checks_pass { Verdict::Pass } else { Verdict::Fail }),
         ]
@@ -114,7 +114,7 @@ pub fn verdicts(out: &mut String, ctx: &Context) -> io::Result<()> {
             format!("{:.4}", c.euler_limit),
             match (&c.static_state, c.static_safety_factor) {
                 (None, _) => "—".into(),
-                (Some(_), None) => "∞".into(),
+                (Some(_), None) => crate::report::matrix::BALANCED.into(),
                 (Some(_), Some(v)) => format!("{v:.3}"),
             },
             opt(c.dynamic_safety_factor, 3),

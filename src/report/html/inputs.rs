@@ -98,10 +98,19 @@ fn is_table_list(v: &toml::Value) -> bool {
     v.as_array().is_some_and(|a| !a.is_empty() && a.iter().all(toml::Value::is_table))
 }
 
+/// A value as given and, for a number written with a unit (`"3000 ft"`), in SI beside it:
+/// `3000 ft = 914.4`, the key's unit in its own column.
+fn given(key: &str, v: &toml::Value) -> String {
+    match v.as_str().map(|s| crate::sheet::units::convert(s, unit_of(key))) {
+        Some(Ok(si)) => format!("{} = {si}", shown(v)),
+        _ => shown(v),
+    }
+}
+
 fn key_row(section: &str, key: &str, v: &toml::Value) -> Vec<String> {
     vec![
         format!("<code>{}</code>", esc(key)),
-        format!("<span class=\"mono\">{}</span>", esc(&shown(v))),
+        format!("<span class=\"mono\">{}</span>", esc(&given(key, v))),
         unit_of(key).to_string(),
         meaning_html(section, key),
     ]
@@ -174,7 +183,7 @@ fn scenes(out: &mut String, doc: &toml::Value) {
             .filter(|(k, _)| !matches!(k.as_str(), "name" | "kind"))
             .map(|(k, v)| {
                 let unit = unit_of(k);
-                let v = shown(v);
+                let v = given(k, v);
                 if unit.is_empty() { format!("{k} = {v}") } else { format!("{k} = {v} {unit}") }
             })
             .collect();

@@ -1,6 +1,6 @@
 //! The registry's `[[scene]]` table: the keys of every kind, each with the kinds that use it.
 
-use super::Type::{Number, NumberOrNumbers, Numbers, Text, Texts};
+use super::Type::{Bool, Number, NumberOrNumbers, Numbers, Text, Texts};
 use super::{Default as D, Key, SceneKind, Table};
 use crate::design::Output;
 use crate::sheet::history::MAX_SAMPLES;
@@ -72,6 +72,15 @@ fn common() -> Vec<Key> {
         ))
         .words(&["lift", "lower"])
         .note("in a loads scene it agrees with the sign of a nonzero speed")
+        .kinds(ALL),
+        Key::new(
+            "informational",
+            Bool,
+            "",
+            "a what-if scene: computed and reported under \"informational cases\", outside the verdict, the \
+             governing cases, the design checks and the exit status",
+        )
+        .default(D::Bool(false))
         .kinds(ALL),
     ]
 }

@@ -40,7 +40,8 @@ fn top() -> Table {
     let mut t = table(
         "",
         false,
-        "The sheet's own keys and its sections. A hoist sheet needs [pulley], [rope] and at least one [[scene]]; \
+        "The sheet's own keys and its sections. A hoist sheet needs [pulley], [rope] and at least one [[scene]] (or a [hoist] with \
+         [load_cases]: the load-case matrix alone); \
          a lift sheet has [lift] and, beside it, only title and g_m_s2.",
         vec![
             Key::new("title", Text, "", "the design's title, echoed in the outputs"),
@@ -56,13 +57,18 @@ fn top() -> Table {
             section("lining", Sub, "the elastic lining of level 3 (switches level 3 on)"),
             section("hoist", Sub, "the hoist that duty-cycle scenes and the load-case matrix run"),
             section("load_cases", Sub, "the load-case matrix built from the [hoist]"),
-            section("scene", Tables, "the scenes: states and histories to analyse (at least one)").when(hoist),
+            section(
+                "scene",
+                Tables,
+                "the scenes: states and histories to analyse (at least one, unless [hoist] and [load_cases] are given)",
+            )
+            .when(hoist),
             section("compare", Tables, "figures overlaying one quantity of several time scenes"),
             section("ropes", Sub, "the hoisting ropes one by one: multi-rope load sharing"),
             section("lift", Sub, "a traction lift: makes the sheet a lift sheet (EN 81-50)"),
         ],
     );
-    t.one_of = vec![vec!["pulley", "rope", "scene"], vec!["lift"]];
+    t.one_of = vec![vec!["pulley", "rope", "scene"], vec!["pulley", "rope", "hoist", "load_cases"], vec!["lift"]];
     t
 }
 
