@@ -40,6 +40,7 @@ pub const LIMIT_KEYS: &[&str] = &[
     "emergency_decel_lift_max_m_s2",
     "emergency_decel_lower_min_m_s2",
     "emergency_decel_lower_max_m_s2",
+    "brake_holding_factor_min",
 ];
 
 /// The keys a rule set may give for a lift sheet (`[lift]`): the traction cases' load factor and

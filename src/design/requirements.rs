@@ -109,6 +109,9 @@ pub struct Requirements {
     pub emergency_decel_lower_min_m_s2: Option<Limit>,
     /// Largest emergency deceleration lowering side 1 (m/s²).
     pub emergency_decel_lower_max_m_s2: Option<Limit>,
+    /// Least static holding factor of the brake: brake torque over the largest static
+    /// out-of-balance torque.
+    pub brake_holding_factor_min: Option<Limit>,
 }
 
 /// Source of the two anti-slip minimums when the sheet does not give them.
@@ -138,6 +141,7 @@ impl Default for Requirements {
             emergency_decel_lift_max_m_s2: None,
             emergency_decel_lower_min_m_s2: None,
             emergency_decel_lower_max_m_s2: None,
+            brake_holding_factor_min: None,
         }
     }
 }

@@ -248,6 +248,9 @@ pub struct SceneResult {
     pub tracks: Option<track::TrackOutput>,
     /// Duty cycles on a sheet with `[ropes]`: each rope's share of the load.
     pub ropes: Option<Box<crate::ropes::scene::SceneRopes>>,
+    /// Duty cycles: the drive's torque and power over the trip, with the ropes' dynamics and on
+    /// rigid ropes ([`crate::drive`]).
+    pub drive: Option<Box<crate::drive::SceneDrive>>,
 }
 
 impl SceneResult {
@@ -461,6 +464,7 @@ fn empty(scene: &Scene, plan: Plan, classical: Classical) -> SceneResult {
         hanging_kg: None,
         tracks: None,
         ropes: None,
+        drive: None,
     }
 }
 

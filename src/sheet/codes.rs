@@ -130,6 +130,7 @@ fn slot_mut<'a>(out: &'a mut Requirements, key: &str) -> Option<&'a mut Option<L
         "emergency_decel_lift_max_m_s2" => &mut out.emergency_decel_lift_max_m_s2,
         "emergency_decel_lower_min_m_s2" => &mut out.emergency_decel_lower_min_m_s2,
         "emergency_decel_lower_max_m_s2" => &mut out.emergency_decel_lower_max_m_s2,
+        "brake_holding_factor_min" => &mut out.brake_holding_factor_min,
         _ => return None,
     })
 }
