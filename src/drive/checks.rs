@@ -74,10 +74,8 @@ pub fn motor_checks(design: &Design, drive: &SceneDrive) -> Vec<Check> {
 /// with the shaft torque and the instant of the peak, against overload × rated torque.
 fn peak_check(design: &Design, drive: &SceneDrive, motoring: bool) -> Check {
     let d = design.machine.drive.unwrap_or_default();
-    let rows = &drive.reported().rows;
-    let in_class = |r: &&super::DriveRow| (r.torque_n_m * r.speed_m_s >= 0.0) == motoring;
-    let best =
-        rows.iter().filter(in_class).max_by(|a, b| a.motor_torque_n_m.abs().total_cmp(&b.motor_torque_n_m.abs()));
+    let s = &drive.reported().summary;
+    let best = if motoring { s.motoring_peak } else { s.braking_peak };
     let (m, t, value) = best.map_or((0.0, 0.0, 0.0), |r| (r.torque_n_m, r.t_s, r.motor_torque_n_m.abs()));
     let (name, formula) = if motoring {
         (PEAK_MOTORING_CHECK, "max |M_m| where M·v ≥ 0: |M|/η (|M| at rest), M = n(T1 − T2)R + m_p·a·R")

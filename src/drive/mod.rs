@@ -73,7 +73,8 @@ impl DriveInputs {
 pub struct SceneDrive {
     /// The values used.
     pub inputs: DriveInputs,
-    /// The trip with the ropes' dynamics; `None` when the scene ran at level 0.
+    /// The trip with the ropes' dynamics; `None` when the scene ran at level 0. The series keep a
+    /// row every output step (drive.csv's); their summaries are made of every sample.
     pub dynamic: Option<DriveSeries>,
     /// The trip on rigid ropes, at the same instants.
     pub rigid: DriveSeries,
@@ -111,7 +112,12 @@ pub fn scene_drive(
     let kin: Vec<(f64, crate::dynamics::Kinematics)> =
         samples.iter().zip(kinematics).map(|(s, k)| (s.t_s, *k)).collect();
     let rigid_samples = crate::model::stop::rigid_samples(design, params, &kin)?;
-    let rigid = drive_series(&inputs, n, &rigid_samples, kinematics, Basis::RigidRopes, payload_kg);
-    let dynamic = dynamic.then(|| drive_series(&inputs, n, samples, kinematics, Basis::RopeDynamics, payload_kg));
+    let mut rigid = drive_series(&inputs, n, &rigid_samples, kinematics, Basis::RigidRopes, payload_kg);
+    let mut dynamic = dynamic.then(|| drive_series(&inputs, n, samples, kinematics, Basis::RopeDynamics, payload_kg));
+    // Keep the rows drive.csv writes (the summaries are made): both series at the same instants.
+    let keep = series::thinned(&rigid.rows, cycle.output_step_s);
+    for s in std::iter::once(&mut rigid).chain(dynamic.as_mut()) {
+        s.rows = keep.iter().filter_map(|&i| s.rows.get(i).copied()).collect();
+    }
     Ok(SceneDrive { inputs, dynamic, rigid, payload_kg, output_step_s: cycle.output_step_s })
 }

@@ -60,6 +60,26 @@ pub struct DriveSummary {
     pub trip_s: f64,
     /// Rest counted in the RMS (s).
     pub rest_time_s: f64,
+    /// The row of the peak motoring torque (the shaft torque and the instant the check shows).
+    #[serde(skip)]
+    pub motoring_peak: Option<DriveRow>,
+    /// The row of the peak braking torque.
+    #[serde(skip)]
+    pub braking_peak: Option<DriveRow>,
+}
+
+/// The rows kept of `rows`: one every `step_s` (the first at or after each step, each exact) and
+/// the last; the summary is made of every row before.
+pub fn thinned(rows: &[DriveRow], step_s: f64) -> Vec<usize> {
+    let mut keep = Vec::new();
+    let mut next = f64::NEG_INFINITY;
+    for (i, r) in rows.iter().enumerate() {
+        if r.t_s >= next - 1e-9 || i + 1 == rows.len() {
+            keep.push(i);
+            next = r.t_s + step_s;
+        }
+    }
+    keep
 }
 
 /// The drive's rows of a trip and their summary.
@@ -133,7 +153,13 @@ fn summarize(rows: &[DriveRow], rest_time_s: f64, payload_kg: f64) -> DriveSumma
     let (motor_kws, power2) = integrals(rows, |r| r.motor_power_kw);
     let (shaft_kws, _) = integrals(rows, |r| r.power_kw);
     let energy_kwh = shaft_kws / 3600.0;
+    let peak_row = |m: bool| {
+        let class = rows.iter().filter(|r| motoring(r) == m);
+        class.max_by(|a, b| a.motor_torque_n_m.abs().total_cmp(&b.motor_torque_n_m.abs())).copied()
+    };
     DriveSummary {
+        motoring_peak: peak_row(true),
+        braking_peak: peak_row(false),
         peak_torque_n_m: max(&|r| r.motor_torque_n_m.abs()),
         peak_motoring_torque_n_m: max(&|r| if motoring(r) { r.motor_torque_n_m.abs() } else { 0.0 }),
         peak_braking_torque_n_m: max(&|r| if motoring(r) { 0.0 } else { r.motor_torque_n_m.abs() }),

@@ -25,27 +25,12 @@ pub const DRIVE_COLUMNS: [&str; 10] = [
     "rigid_motor_power_kw",
 ];
 
-/// The rows written: every `step_s` of the trip (the samples nearest to it, each exact), and
-/// the last; the summary's integrals use every sample.
-fn thinned(rows: &[DriveRow], step_s: f64) -> Vec<usize> {
-    let mut keep = Vec::new();
-    let mut next = f64::NEG_INFINITY;
-    for (i, r) in rows.iter().enumerate() {
-        if r.t_s >= next - 1e-9 || i + 1 == rows.len() {
-            keep.push(i);
-            next = r.t_s + step_s;
-        }
-    }
-    keep
-}
-
-/// drive.csv: one row every `step_s` of the trip; the dynamic columns empty at level 0.
-pub fn write_drive_csv<W: Write>(out: W, drive: &SceneDrive, step_s: f64) -> csv::Result<()> {
+/// drive.csv: the rows kept (one every output step of the trip, [`crate::drive::SceneDrive`]);
+/// the dynamic columns empty at level 0.
+pub fn write_drive_csv<W: Write>(out: W, drive: &SceneDrive) -> csv::Result<()> {
     let mut row = Rows::new(out);
     row.header(&DRIVE_COLUMNS)?;
-    let rigid = &drive.rigid.rows;
-    for i in thinned(rigid, step_s) {
-        let g = &rigid[i];
+    for (i, g) in drive.rigid.rows.iter().enumerate() {
         let d = drive.dynamic.as_ref().and_then(|s| s.rows.get(i));
         row.num(g.t_s).num(g.speed_m_s);
         row.opt(d.map(|d| d.torque_n_m)).opt(d.map(|d| d.power_kw));

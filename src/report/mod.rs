@@ -303,7 +303,7 @@ fn write_ropes(
 fn write_drive(scene_dir: &Path, name: &str, drive: &crate::drive::SceneDrive, plots: bool) -> Result<(), ReportError> {
     let path = scene_dir.join("drive.csv");
     let f = File::create(&path).map_err(io(&path))?;
-    drive_out::write_drive_csv(BufWriter::new(f), drive, drive.output_step_s)
+    drive_out::write_drive_csv(BufWriter::new(f), drive)
         .map_err(|source| ReportError::Csv { path: path.display().to_string(), source })?;
     if plots {
         let title = format!("{name} — torque and power at the pulley shaft");
