@@ -20,6 +20,7 @@ pub mod bench;
 pub mod check;
 pub mod codes;
 pub mod design;
+pub mod drive;
 pub mod dynamics;
 pub mod lift;
 pub mod load_cases;

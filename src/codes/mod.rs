@@ -54,6 +54,7 @@ pub const LIMIT_KEYS: &[&str] = &[
     "tail_rope_safety_factor_min",
     "pulley_design_load_min_n",
     "dynamic_allowance_min",
+    "brake_holding_factor_min",
 ];
 
 /// The keys a rule set may give for a lift sheet (`[lift]`): the traction cases' load factor and

@@ -1,9 +1,12 @@
 //! The validated design: what a sheet describes once every value has been checked.
 //! All quantities are SI; angles are stored in radians (`_rad`) and reported in degrees.
 
+pub mod drive;
 pub mod geometry;
 pub mod plausible;
 pub mod requirements;
+
+pub use drive::Drive;
 
 pub use crate::design::requirements::{DEFAULT_SAFETY_FACTOR_SOURCE, Limit, Requirements, SafetyFactorBasis};
 
@@ -276,12 +279,30 @@ pub struct Rope {
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Machine {
     /// Friction pulley with the motor rotor (and gear) reduced to the pulley axis (kg·m²; 0
-    /// when the sheet gives none). It matters once the drive lets go: in an emergency stop.
+    /// when the sheet gives none). The drive accelerates it with the rope (its torque), and in an
+    /// emergency stop the brake stops it.
     pub pulley_inertia_kg_m2: f64,
     /// The guide sheave, when the sheet has one.
     pub guide: Option<GuideSheave>,
     /// The safety brake (`[brake]`), when the sheet has one.
     pub brake: Option<Brake>,
+    /// The drive's rating, efficiency and rest (`[drive]`), when the sheet has the section.
+    pub drive: Option<Drive>,
+    /// Where `pulley_inertia_kg_m2` comes from: `[pulley]`, `[drive]`, or neither (0).
+    pub inertia_from: InertiaSource,
+}
+
+/// The section that gives the friction pulley's rotating inertia.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum InertiaSource {
+    /// Neither `[pulley]` nor `[drive]` gives it: 0.
+    #[default]
+    None,
+    /// `[pulley] inertia_kg_m2` or `equivalent_mass_kg`.
+    Pulley,
+    /// `[drive] inertia_kg_m2`.
+    Drive,
 }
 
 /// The guide (deflection) sheave as a body: its inertia adds `J_g/R_g²` of mass (no weight) to

@@ -109,6 +109,9 @@ pub struct Requirements {
     pub emergency_decel_lower_min_m_s2: Option<Limit>,
     /// Largest emergency deceleration lowering side 1 (m/s²).
     pub emergency_decel_lower_max_m_s2: Option<Limit>,
+    /// Least static holding factor of the brake: brake torque over the largest static
+    /// out-of-balance torque.
+    pub brake_holding_factor_min: Option<Limit>,
     /// Least friction coefficient of the lining, dry (the design μ is checked against it).
     pub lining_mu_min: Option<Limit>,
     /// Least friction coefficient of the lining with water or rope dressing.
@@ -170,6 +173,7 @@ impl Default for Requirements {
             pulley_design_load_min_n: None,
             dynamic_allowance_min: None,
             code_inputs: CodeInputs::default(),
+            brake_holding_factor_min: None,
         }
     }
 }

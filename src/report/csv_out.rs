@@ -106,14 +106,14 @@ pub fn write_tracks<W: Write>(out: W, tracks: &[crate::model::track::Track]) -> 
 /// field, as the `csv` crate writes them: fields separated by `,`, rows ended by `\n`, a text
 /// field quoted (its quotes doubled) only where it holds `,`, `"`, `\r` or `\n`, numbers as
 /// [`number::display`] writes them (never quoted: digits, `.`, `-`, `inf`, `NaN`).
-struct Rows<W: Write> {
+pub(super) struct Rows<W: Write> {
     out: std::io::BufWriter<W>,
     line: Vec<u8>,
     fields: usize,
 }
 
 impl<W: Write> Rows<W> {
-    fn new(out: W) -> Self {
+    pub(super) fn new(out: W) -> Self {
         Self { out: std::io::BufWriter::with_capacity(BUFFER_BYTES, out), line: Vec::with_capacity(256), fields: 0 }
     }
 
@@ -125,14 +125,14 @@ impl<W: Write> Rows<W> {
     }
 
     /// A number.
-    fn num(&mut self, x: f64) -> &mut Self {
+    pub(super) fn num(&mut self, x: f64) -> &mut Self {
         self.separate();
         number::write(x, &mut self.line);
         self
     }
 
     /// A number, or an empty field.
-    fn opt(&mut self, x: Option<f64>) -> &mut Self {
+    pub(super) fn opt(&mut self, x: Option<f64>) -> &mut Self {
         match x {
             Some(x) => self.num(x),
             None => self.text(""),
@@ -175,7 +175,7 @@ impl<W: Write> Rows<W> {
     }
 
     /// A row of text fields (a header).
-    fn header(&mut self, names: &[&str]) -> csv::Result<()> {
+    pub(super) fn header(&mut self, names: &[&str]) -> csv::Result<()> {
         for name in names {
             self.text(name);
         }
@@ -184,7 +184,7 @@ impl<W: Write> Rows<W> {
 
     /// Ends the row (a row of one empty field is written `""`, as the `csv` crate does, so
     /// that it reads back as a row).
-    fn end(&mut self) -> csv::Result<()> {
+    pub(super) fn end(&mut self) -> csv::Result<()> {
         if self.fields == 1 && self.line.is_empty() {
             self.line.extend_from_slice(b"\"\"");
         }
@@ -195,7 +195,7 @@ impl<W: Write> Rows<W> {
         Ok(())
     }
 
-    fn finish(mut self) -> csv::Result<()> {
+    pub(super) fn finish(mut self) -> csv::Result<()> {
         self.out.flush()?;
         Ok(())
     }

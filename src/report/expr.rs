@@ -46,6 +46,8 @@ pub enum Func {
     Radians,
     /// `SIGN(x)`: −1, 0 or 1.
     Sign,
+    /// `SQRT(x)`.
+    Sqrt,
 }
 
 impl Op {
@@ -84,6 +86,7 @@ impl Func {
             Func::Exp => "EXP",
             Func::Radians => "RADIANS",
             Func::Sign => "SIGN",
+            Func::Sqrt => "SQRT",
         }
     }
 
@@ -98,6 +101,7 @@ impl Func {
             Func::Sign if first > 0.0 => 1.0,
             Func::Sign if first < 0.0 => -1.0,
             Func::Sign => 0.0,
+            Func::Sqrt => first.sqrt(),
         })
     }
 }

@@ -11,6 +11,7 @@ pub mod check_text;
 pub mod checklist;
 pub mod compare;
 pub mod csv_out;
+pub mod drive_out;
 pub mod expr;
 pub mod figure_size;
 pub mod friction_colour;
@@ -195,6 +196,9 @@ fn write_scene(
     if let (Some(ropes), Some(history)) = (&scene.ropes, &scene.history) {
         write_ropes(&scene_dir, &scene.name, ropes, history, options.plots)?;
     }
+    if let Some(drive) = &scene.drive {
+        write_drive(&scene_dir, &scene.name, drive, options.plots)?;
+    }
     if options.plots {
         plot_scene(&scene_dir, summary, scene, wrap)?;
     }
@@ -291,6 +295,19 @@ fn write_ropes(
     if plots {
         let title = format!("{name} — each rope's end tensions ({} ropes) and the mean rope", ropes.set.count());
         ropes_out::plot_ropes(&scene_dir.join("ropes.png"), &title, ropes, &mean)?;
+    }
+    Ok(())
+}
+
+/// A duty cycle's drive.csv (a row every output step of its history) and (with plots) drive.png.
+fn write_drive(scene_dir: &Path, name: &str, drive: &crate::drive::SceneDrive, plots: bool) -> Result<(), ReportError> {
+    let path = scene_dir.join("drive.csv");
+    let f = File::create(&path).map_err(io(&path))?;
+    drive_out::write_drive_csv(BufWriter::new(f), drive)
+        .map_err(|source| ReportError::Csv { path: path.display().to_string(), source })?;
+    if plots {
+        let title = format!("{name} — torque and power at the pulley shaft");
+        drive_out::plot_drive(&scene_dir.join("drive.png"), &title, drive, drive.inputs.overload_torque_n_m)?;
     }
     Ok(())
 }

@@ -218,6 +218,9 @@ pub struct SceneJson {
     /// Multi-rope load sharing: the worst rope, each rope's totals, the cylinders' stroke.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub ropes: Option<super::ropes_out::RopesJson>,
+    /// Duty cycles: the drive's peak and RMS torque and power, energy per trip and per tonne.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub drive: Option<super::drive_out::DriveJson>,
 }
 
 /// One followed element in summary.json: when it was on the pulley, its largest forces, its
@@ -351,6 +354,7 @@ impl Summary {
                         .ropes
                         .as_ref()
                         .map(|r| super::ropes_out::RopesJson::of(r, design.rope.min_breaking_force_n)),
+                    drive: s.drive.as_deref().map(super::drive_out::DriveJson::of),
                 })
                 .collect(),
             design_checks: run.design.as_ref().map(|d| d.checks.clone()),

@@ -14,6 +14,11 @@ use crate::check::design::{
 };
 use crate::check::design::{PROFILE_END_CHECK, PROFILE_END_SPEED};
 use crate::check::{Check, Verdict};
+use crate::drive::checks::{
+    GUIDE_INPUT, HOLDING_CHECK, OVERLOAD_INPUT, PEAK_BRAKING_CHECK, PEAK_MOTORING_CHECK, PEAK_SHAFT_INPUT,
+    POWER_SQ_INPUT, PULLEY_BODY_INPUT, RATED_TORQUE_INPUT, RMS_POWER_CHECK, RMS_TORQUE_CHECK, TORQUE_SQ_INPUT,
+    WINDOW_MAX_CHECK, WINDOW_MIN_CHECK,
+};
 use crate::model::braking_checks::{
     DECEL_LIFT_MAX_CHECK, DECEL_LIFT_MIN_CHECK, DECEL_LOWER_MAX_CHECK, DECEL_LOWER_MIN_CHECK, GUIDE1_INPUT,
     GUIDE2_INPUT, IMPOSED_DECEL, PULLEY_INPUT, SLIP_LIMIT_CHECK, SPEED_AT_FULL_FORCE,
@@ -66,7 +71,26 @@ pub fn value_expr(c: &Check) -> Option<Expr> {
         | DECEL_LOWER_MIN_CHECK
         | DECEL_LOWER_MAX_CHECK
         | SLIP_LIMIT_CHECK => stop_decel(c)?,
+        HOLDING_CHECK => input("F_b") * input("R") / (n * call(Func::Abs, vec![t1 - t2]) * input("R")),
+        WINDOW_MIN_CHECK | WINDOW_MAX_CHECK => input("F_b") * input("R"),
+        PEAK_MOTORING_CHECK | PEAK_BRAKING_CHECK => peak_torque(c)?,
+        RMS_TORQUE_CHECK => call(Func::Sqrt, vec![input(TORQUE_SQ_INPUT) / (input("t_trip") + input("t_rest"))]),
+        RMS_POWER_CHECK => call(Func::Sqrt, vec![input(POWER_SQ_INPUT) / (input("t_trip") + input("t_rest"))]),
         _ => return None,
+    })
+}
+
+/// The motor's peak torque from the shaft torque at the peak: |M|/η motoring, |M|·η braking,
+/// |M| at standstill (the check's value says which: it is one of the three).
+fn peak_torque(c: &Check) -> Option<Expr> {
+    let (m, value) = (value_of(c, PEAK_SHAFT_INPUT)?.abs(), c.value?);
+    let abs = call(Func::Abs, vec![input(PEAK_SHAFT_INPUT)]);
+    Some(if m == value {
+        abs
+    } else if c.name == PEAK_MOTORING_CHECK {
+        abs / input("η")
+    } else {
+        abs * input("η")
     })
 }
 
@@ -116,6 +140,15 @@ pub fn limit_expr(c: &Check) -> Option<Expr> {
             let denominator = (input(rise) + input(g_rise)) + e * (input(fall) + input(g_fall));
             Some(max(num(0.0), numerator / denominator))
         }
+        // The brake torque the window's deceleration d needs in the governing case:
+        // (d·M − s·(m1 − m2)·g)·R, M summed from its parts.
+        WINDOW_MIN_CHECK | WINDOW_MAX_CHECK if c.verdict != Verdict::NotEvaluated => {
+            let (m1, m2) = (input("m1"), input("m2"));
+            let total = m1.clone() + m2.clone() + input(GUIDE_INPUT) + input(PULLEY_BODY_INPUT);
+            Some((input("d") * total - input("s") * (m1 - m2) * input("g")) * input("R"))
+        }
+        // The motor's short-time limit: overload factor × rated torque.
+        PEAK_MOTORING_CHECK | PEAK_BRAKING_CHECK => Some(input(OVERLOAD_INPUT) * input(RATED_TORQUE_INPUT)),
         _ => None,
     }
 }

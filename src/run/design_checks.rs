@@ -60,6 +60,8 @@ pub fn evaluate(design: &Design, scenes: &[SceneResult], rope_dynamics: bool) ->
         .max_by(|a, b| a.normal_n_per_rad.total_cmp(&b.normal_n_per_rad));
     let mut checks = design_checks(design, &statics, peak);
     checks.extend(profile_end_check(design));
+    checks.push(crate::drive::checks::holding_check(design, &statics));
+    checks.extend(crate::drive::checks::window_checks(design, &window_cases(design, matrix.as_ref())));
     if let Some(m) = &matrix {
         checks.extend(m.checks.iter().cloned());
     }
@@ -101,6 +103,25 @@ fn wet_checks(design: &Design) -> Result<Vec<Check>, RunError> {
         }
     }
     Ok(out)
+}
+
+/// The matrix's emergency cases at its positions on rigid ropes, for the brake's torque window.
+fn window_cases(design: &Design, matrix: Option<&MatrixResult>) -> Vec<crate::drive::checks::WindowCase> {
+    let Some(m) = matrix else { return Vec::new() };
+    m.cases
+        .iter()
+        .filter(|c| c.phase == crate::design::Phase::Emergency && matches!(c.position, Position::Travel { .. }))
+        .filter(|c| c.level == crate::plan::Level::Closed0)
+        .map(|c| crate::drive::checks::WindowCase {
+            case: c.label.clone(),
+            direction: if c.direction == load_cases::direction_word(Direction::Lift) {
+                Direction::Lift
+            } else {
+                Direction::Lower
+            },
+            masses: crate::model::braking::StopMasses::of(design, c.m1_kg, c.m2_kg),
+        })
+        .collect()
 }
 
 /// A scene's static states: its state at rest; a duty cycle's also at both ends of its travel.

@@ -250,6 +250,9 @@ pub struct SceneResult {
     pub ropes: Option<Box<crate::ropes::scene::SceneRopes>>,
     /// A what-if scene ([`Scene::informational`]): its checks stand outside the verdict.
     pub informational: bool,
+    /// Duty cycles: the drive's torque and power over the trip, with the ropes' dynamics and on
+    /// rigid ropes ([`crate::drive`]).
+    pub drive: Option<Box<crate::drive::SceneDrive>>,
 }
 
 impl SceneResult {
@@ -466,6 +469,7 @@ fn empty(scene: &Scene, plan: Plan, classical: Classical) -> SceneResult {
         tracks: None,
         ropes: None,
         informational: scene.informational,
+        drive: None,
     }
 }
 

@@ -136,9 +136,8 @@ pub(super) fn run_duty_cycle(
     result.slip_onset = trip.onset;
     result.hanging_kg = result.worst.and_then(|(t, _)| trip.hanging_kg(&params, t));
     result.stop = trip.stop_report(design, &params, cycle);
-    if let Some(stop) = &result.stop {
-        trip::push_stop_checks(design, &mut result.classical, stop, &trip, &scene.name);
-    }
+    trip::add_stop_and_drive(design, &params, (&trip, cycle), dynamics.is_some(), &scene.name, &mut result)
+        .map_err(err)?;
     if let Some(set) = &design.ropes {
         super::ropes::share(design, set, &mut result, (&trip.samples, &trip.kinematics), &params, cycle.output_step_s)?;
     }

@@ -145,3 +145,23 @@ pub(super) fn mark_onset(classical: &mut Classical, trip: &Trip) {
         }
     }
 }
+
+/// The emergency stop's checks (when the trip has a stop), then the drive's torque and power over
+/// the trip (with the ropes' dynamics when `dynamic`, on rigid ropes beside) and the motor's
+/// checks, added to `result`.
+pub(super) fn add_stop_and_drive(
+    design: &Design,
+    params: &HoistParams,
+    (trip, cycle): (&Trip, &DutyCycleScene),
+    dynamic: bool,
+    name: &str,
+    result: &mut super::SceneResult,
+) -> Result<(), crate::model::level4::Level4Error> {
+    if let Some(stop) = &result.stop {
+        push_stop_checks(design, &mut result.classical, stop, trip, name);
+    }
+    let drive = crate::drive::scene_drive(design, params, (&trip.samples, &trip.kinematics), dynamic, cycle)?;
+    result.classical.checks.extend(crate::drive::checks::motor_checks(design, &drive));
+    result.drive = Some(Box::new(drive));
+    Ok(())
+}

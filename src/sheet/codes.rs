@@ -146,6 +146,7 @@ fn slot_mut<'a>(out: &'a mut Requirements, key: &str) -> Option<&'a mut Option<L
         "tail_rope_safety_factor_min" => &mut out.tail_rope_safety_factor_min,
         "pulley_design_load_min_n" => &mut out.pulley_design_load_min_n,
         "dynamic_allowance_min" => &mut out.dynamic_allowance_min,
+        "brake_holding_factor_min" => &mut out.brake_holding_factor_min,
         _ => return None,
     })
 }

@@ -1,11 +1,12 @@
 //! What moves with the rope beside the hanging masses, and the brake: the friction pulley's
 //! inertia (`[pulley]`), the guide sheave as a body (`[pulley.guide]`), the `[brake]`, and the
-//! rope data of the checks beside anti-slip (`[rope]` diameter and breaking force).
+//! rope data of the checks beside anti-slip (`[rope]` diameter and breaking force), and the
+//! `[drive]` (its rating, efficiency and rest; the rotating inertia here or in `[pulley]`).
 
 use super::diag::Collector;
-use super::raw::{RawBrake, RawGuide, RawPulley, RawRope};
-use super::rules::{At, NON_NEGATIVE, POSITIVE, checked, required};
-use crate::design::{Brake, GuideSheave, Machine};
+use super::raw::{RawBrake, RawDrive, RawGuide, RawPulley, RawRope};
+use super::rules::{At, NON_NEGATIVE, POSITIVE, Rule, checked, required};
+use crate::design::{Brake, Drive, GuideSheave, InertiaSource, Machine};
 use toml::Spanned;
 
 /// `J` (kg·m²) from `inertia_kg_m2`, or from an equivalent mass at radius `radius_m` as
@@ -29,10 +30,10 @@ fn inertia(
     }
 }
 
-/// The friction pulley's inertia, the guide sheave and the brake.
+/// The friction pulley's inertia, the guide sheave, the brake and the drive.
 pub(super) fn machine(
     c: &mut Collector,
-    pulley: &Option<Spanned<RawPulley>>,
+    (pulley, drive): (&Option<Spanned<RawPulley>>, &Option<Spanned<RawDrive>>),
     brake: &Option<Spanned<RawBrake>>,
     pulley_diameter_m: Option<f64>,
 ) -> Option<Machine> {
@@ -56,7 +57,60 @@ pub(super) fn machine(
         Some(b) => brake_section(c, b, radius_m).map(Some),
         None => Some(None),
     };
-    Some(Machine { pulley_inertia_kg_m2: pulley_inertia?, guide: guide?, brake: brake? })
+    let pulley_given = pulley.as_ref().is_some_and(|p| {
+        let raw = p.get_ref();
+        raw.inertia_kg_m2.is_some() || raw.equivalent_mass_kg.is_some()
+    });
+    let (drive, drive_inertia) = match drive {
+        Some(d) => {
+            let (drive, j) = drive_section(c, d, pulley_given);
+            (drive.map(Some), j)
+        }
+        None => (Some(None), None),
+    };
+    let (pulley_inertia_kg_m2, inertia_from) = match drive_inertia {
+        Some(j) => (j, InertiaSource::Drive),
+        None if pulley_given => (pulley_inertia?, InertiaSource::Pulley),
+        None => (pulley_inertia?, InertiaSource::None),
+    };
+    Some(Machine { pulley_inertia_kg_m2, guide: guide?, brake: brake?, drive: drive?, inertia_from })
+}
+
+/// 0 < η ≤ 1.
+const EFFICIENCY: Rule = Rule { ok: |x| x > 0.0 && x <= 1.0, allowed: "a finite number 0 < η ≤ 1" };
+/// An overload factor ≥ 1.
+const AT_LEAST_ONE: Rule = Rule { ok: |x| x >= 1.0, allowed: "a finite number ≥ 1" };
+
+/// `[drive]`, and its `inertia_kg_m2` when given (`pulley_given`: `[pulley]` gives the inertia
+/// already, which may be given once only).
+fn drive_section(c: &mut Collector, d: &Spanned<RawDrive>, pulley_given: bool) -> (Option<Drive>, Option<f64>) {
+    let span = d.span();
+    let at = At { scene: None, section: "drive", table_span: &span };
+    let raw = d.get_ref();
+    let mut ok = true;
+    let mut opt = |key: &str, v: &Option<Spanned<f64>>, rule: Rule| match v {
+        Some(v) => {
+            let x = checked(c, at, key, v, rule);
+            ok &= x.is_some();
+            x
+        }
+        None => None,
+    };
+    let inertia = opt("inertia_kg_m2", &raw.inertia_kg_m2, NON_NEGATIVE);
+    let drive = Drive {
+        efficiency: opt("efficiency", &raw.efficiency, EFFICIENCY),
+        rated_power_kw: opt("rated_power_kw", &raw.rated_power_kw, POSITIVE),
+        rated_torque_n_m: opt("rated_torque_n_m", &raw.rated_torque_n_m, POSITIVE),
+        overload_factor: opt("overload_factor", &raw.overload_factor, AT_LEAST_ONE),
+        rest_time_s: opt("rest_time_s", &raw.rest_time_s, NON_NEGATIVE),
+    };
+    if let (Some(j), true) = (&raw.inertia_kg_m2, pulley_given) {
+        let msg = "the rotating inertia is given in [pulley] already (inertia_kg_m2 or equivalent_mass_kg); \
+                   give it once, in [pulley] or in [drive]";
+        c.push(Some(j.span()), None, "drive.inertia_kg_m2", msg);
+        ok = false;
+    }
+    (ok.then_some(drive), inertia)
 }
 
 /// The guide sheave of `[pulley.guide]`: its diameter, and as a body its side and inertia.

@@ -54,6 +54,7 @@ const TOP_LEVEL_KEYS: &[&str] = &[
     "scene",
     "lining",
     "brake",
+    "drive",
     "load_cases",
     "document",
     "compare",
@@ -170,6 +171,10 @@ pub fn parse(file: &str, text: &str) -> Result<Design, SheetError> {
             "brake" => {
                 sections.present.push("brake");
                 sections.brake = section(&mut c, value, "brake");
+            }
+            "drive" => {
+                sections.present.push("drive");
+                sections.drive = section(&mut c, value, "drive");
             }
             "compare" => {
                 sections.present.push("compare");

@@ -60,6 +60,7 @@ pub struct RawRequirements {
     pub emergency_decel_lift_max_m_s2: Option<Spanned<toml::Value>>,
     pub emergency_decel_lower_min_m_s2: Option<Spanned<toml::Value>>,
     pub emergency_decel_lower_max_m_s2: Option<Spanned<toml::Value>>,
+    pub brake_holding_factor_min: Option<Spanned<toml::Value>>,
     /// The bundled rule set the limits come from, by id.
     pub code: Option<Spanned<String>>,
     /// What each conveyance carries: "personnel", "personnel-and-material", "material".
@@ -89,6 +90,19 @@ pub struct RawBrake {
     pub torque_n_m: Option<Spanned<f64>>,
     pub idle_time_s: Option<Spanned<f64>>,
     pub build_up_s: Option<Spanned<f64>>,
+}
+
+/// The `[drive]` table: the rotating parts at the pulley shaft, the efficiency, the motor's rating
+/// and the rest between trips.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawDrive {
+    pub inertia_kg_m2: Option<Spanned<f64>>,
+    pub efficiency: Option<Spanned<f64>>,
+    pub rated_power_kw: Option<Spanned<f64>>,
+    pub rated_torque_n_m: Option<Spanned<f64>>,
+    pub overload_factor: Option<Spanned<f64>>,
+    pub rest_time_s: Option<Spanned<f64>>,
 }
 
 /// The `[load_cases]` table: the load-case matrix of the `[hoist]`.

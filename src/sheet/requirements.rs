@@ -79,6 +79,7 @@ fn limits(c: &mut Collector, r: &RawRequirements) -> (Requirements, bool) {
             &r.emergency_decel_lower_max_m_s2,
             DECEL,
         ),
+        brake_holding_factor_min: limit("brake_holding_factor_min", &r.brake_holding_factor_min, POSITIVE),
         dynamic_safety_factor_basis: SafetyFactorBasis::Code,
         lining_mu_min: limit("lining_mu_min", &r.lining_mu_min, POSITIVE),
         lining_mu_wet_min: limit("lining_mu_wet_min", &r.lining_mu_wet_min, POSITIVE),

@@ -26,6 +26,7 @@ pub struct Sections {
     pub scenes: Option<Vec<SceneSlot>>,
     pub lining: Option<Spanned<super::raw::RawLining>>,
     pub brake: Option<Spanned<RawBrake>>,
+    pub drive: Option<Spanned<super::raw::RawDrive>>,
     pub load_cases: Option<Spanned<RawLoadCases>>,
     pub document: Option<Spanned<super::document::RawDocument>>,
     pub compare: Option<Spanned<Vec<Spanned<super::raw::RawCompare>>>>,
@@ -41,8 +42,9 @@ pub fn design(c: &mut Collector, s: Sections) -> Option<Design> {
     };
     let pulley = required_section(c, (&s.pulley, s.present.contains(&"pulley")), &s.doc_span, PULLEY_MISSING, pulley);
     let rope = required_section(c, (&s.rope, s.present.contains(&"rope")), &s.doc_span, ROPE_MISSING, rope);
-    let machine = super::machine::machine(c, &s.pulley, &s.brake, pulley.as_ref().map(|p| p.diameter_m));
+    let machine = super::machine::machine(c, (&s.pulley, &s.drive), &s.brake, pulley.as_ref().map(|p| p.diameter_m));
     let machine = if s.present.contains(&"brake") && s.brake.is_none() { None } else { machine };
+    let machine = if s.present.contains(&"drive") && s.drive.is_none() { None } else { machine };
     let load_cases = super::load_cases::load_cases(
         c,
         &s.load_cases,

@@ -12,7 +12,7 @@ const REFERENCE: &str = include_str!("../../../docs/interface.md");
 /// The unit a sheet key names by its suffix: "" for a plain number or a text.
 pub fn unit_of(key: &str) -> &'static str {
     // Longest suffixes first: `_per_m_kg` before `_kg`, `_m_s2` before `_m_s` before `_s`.
-    const SUFFIXES: [(&str, &str); 15] = [
+    const SUFFIXES: [(&str, &str); 16] = [
         ("_per_m_kg", "kg/m"),
         ("_n_per_m2", "N/m²"),
         ("_m_s2", "m/s²"),
@@ -22,6 +22,7 @@ pub fn unit_of(key: &str) -> &'static str {
         ("_n_m", "N·m"),
         ("_per_m", "1/m"),
         ("_kg", "kg"),
+        ("_kw", "kW"),
         ("_pa", "Pa"),
         ("_deg", "°"),
         ("_n", "N"),

@@ -53,7 +53,7 @@ pub fn basis(out: &mut String, ctx: &Context) -> io::Result<()> {
         .iter()
         .map(|(n, rel, l)| vec![esc(n), format!("{rel} {}", l.value), rule_text(&l.rule), esc(&l.source)])
         .collect();
-    let optional: [(&str, &str, &Option<Limit>, &str); 12] = [
+    let optional: [(&str, &str, &Option<Limit>, &str); 13] = [
         ("rope safety factor", "≥", &r.rope_safety_factor_min, ""),
         ("D/d of the friction pulley", "≥", &r.pulley_d_ratio_min, ""),
         ("D/d of the guide sheave", "≥", &r.guide_d_ratio_min, ""),
@@ -66,6 +66,7 @@ pub fn basis(out: &mut String, ctx: &Context) -> io::Result<()> {
         ("emergency deceleration lifting", "≤", &r.emergency_decel_lift_max_m_s2, "m/s²"),
         ("emergency deceleration lowering", "≥", &r.emergency_decel_lower_min_m_s2, "m/s²"),
         ("emergency deceleration lowering", "≤", &r.emergency_decel_lower_max_m_s2, "m/s²"),
+        ("static holding factor of the brake", "≥", &r.brake_holding_factor_min, ""),
     ];
     rows.extend(optional.iter().map(|(n, rel, l, u)| match l {
         Some(l) => vec![esc(n), format!("{rel} {} {u}", l.value), rule_text(&l.rule), esc(&l.source)],

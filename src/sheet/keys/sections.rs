@@ -26,6 +26,7 @@ pub fn tables() -> Vec<Table> {
         requirements(),
         document(),
         brake(),
+        drive(),
         lining(),
         hoist(),
         stage(),
@@ -54,6 +55,7 @@ fn top() -> Table {
             section("requirements", Sub, "the limits of the checks, each with its source"),
             section("document", Sub, "the calculation report's title block"),
             section("brake", Sub, "the safety brake that stops the pulley in an emergency"),
+            section("drive", Sub, "the drive: rotating inertia, efficiency, the motor's rating, rest between trips"),
             section("lining", Sub, "the elastic lining of level 3 (switches level 3 on)"),
             section("hoist", Sub, "the hoist that duty-cycle scenes and the load-case matrix run"),
             section("load_cases", Sub, "the load-case matrix built from the [hoist]"),
@@ -229,6 +231,11 @@ fn requirements() -> Table {
             limit("dynamic_allowance_min", "", "allowance for the dynamic loads on the static loads of the machine ratings")
                 .max(1.0, true),
             // The design inputs of the rule sets' formulas and checks follow ([`code_inputs`]).
+            limit(
+                "brake_holding_factor_min",
+                "",
+                "static holding factor of the brake (its torque over the largest static out-of-balance torque), minimum",
+            ),
         ],
     );
     out.keys.extend(code_inputs());
@@ -300,6 +307,39 @@ fn brake() -> Table {
     );
     t.one_of = vec![vec!["force_n"], vec!["torque_n_m"]];
     t
+}
+
+fn drive() -> Table {
+    use crate::design::drive::{DEFAULT_EFFICIENCY, DEFAULT_REST_TIME_S};
+    table(
+        "drive",
+        false,
+        "The drive: what the duty cycles' shaft torque and power are computed with and checked against. \
+         Optional: without it torque and power are still computed, and the motor's checks have no requirement.",
+        vec![
+            Key::new(
+                "inertia_kg_m2",
+                Number,
+                "kg·m²",
+                "rotating parts at the pulley shaft: motor rotor, gear, friction pulley",
+            )
+            .default(D::Described("[pulley]'s inertia, else 0".into()))
+            .non_negative()
+            .note("not with [pulley] inertia_kg_m2 or equivalent_mass_kg; the guide sheave's is [pulley.guide]'s"),
+            Key::new("efficiency", Number, "", "mechanical efficiency η motor → rope: motoring P/η, regenerating P·η")
+                .default(D::Number(DEFAULT_EFFICIENCY))
+                .positive()
+                .max(1.0, true),
+            Key::new("rated_power_kw", Number, "kW", "the motor's rated (continuous) power").positive(),
+            Key::new("rated_torque_n_m", Number, "N·m", "the motor's rated torque referred to the pulley shaft")
+                .positive(),
+            Key::new("overload_factor", Number, "", "the motor's short-time overload on its rated torque")
+                .min(1.0, true),
+            Key::new("rest_time_s", Number, "s", "at rest between trips (loading, unloading): counts in the RMS")
+                .default(D::Number(DEFAULT_REST_TIME_S))
+                .non_negative(),
+        ],
+    )
 }
 
 fn lining() -> Table {

@@ -61,7 +61,7 @@ fn registry(path: &str) -> BTreeSet<&'static str> {
 
 #[test]
 fn every_table_has_the_parsers_keys_and_no_other() {
-    let parser: [(&str, BTreeSet<&str>); 18] = [
+    let parser: [(&str, BTreeSet<&str>); 19] = [
         ("", crate::sheet::TOP_LEVEL_KEYS.iter().copied().collect()),
         ("pulley", fields::<RawPulley>()),
         ("pulley.guide", fields::<RawGuide>()),
@@ -69,6 +69,7 @@ fn every_table_has_the_parsers_keys_and_no_other() {
         ("requirements", fields::<RawRequirements>()),
         ("document", fields::<crate::sheet::document::RawDocument>()),
         ("brake", fields::<RawBrake>()),
+        ("drive", fields::<crate::sheet::raw::RawDrive>()),
         ("lining", fields::<RawLining>()),
         ("hoist", fields::<RawHoist>()),
         ("hoist.stage", fields::<RawStage>()),
