@@ -77,16 +77,20 @@ fn standstill_step_of_t1_gives_a_positive_zone_at_the_side1_end() {
 #[test]
 fn t2_step_after_t1_step_gives_reverse_friction_at_the_exit_and_a_jdp_in_the_stick_gap() {
     // T1 → 1.15 T0 (positive zone [0, 32.031°]), then T2 → 1.10 T0: reverse zone
-    // [α − ln 1.1/μ, α] where T = 1.1 T0 e^{−μ(α − θ)}. JDP: the first zero of q after the
-    // positive arc = 32.031078°.
+    // [α − ln 1.1/μ, α] where T = 1.1 T0 e^{−μ(α − θ)}. Between them q = 0 exactly: the stick
+    // gap [ln 1.15/μ, α − ln 1.1/μ] = [32.031°, 165.575°], the JDP its middle, 98.803°.
     let (k1, k2) = (1.15, 1.10);
     let samples = [s(0.0, T0, T0, 0.0), s(1.0, k1 * T0, T0, 0.0), s(2.0, k1 * T0, k2 * T0, 0.0)];
     let (field, _) = final_field(params(Solver::Fast), &samples);
     let sum = summary(&field, 0.0);
     assert_deg(sum.positive_arc_rad, k1.ln() / MU, "positive arc");
     assert_deg(sum.reverse_arc_rad, k2.ln() / MU, "reverse arc");
-    assert_deg(sum.jdp_rad.expect("a sign change"), k1.ln() / MU, "JDP");
     let a = alpha();
+    let (gap_start, gap_end) = (k1.ln() / MU, a - k2.ln() / MU);
+    let gap = sum.jdp_gap_rad.expect("a stick gap at the JDP");
+    assert_deg(gap.0, gap_start, "the stick gap's start");
+    assert_deg(gap.1, gap_end, "the stick gap's end");
+    assert_deg(sum.jdp_rad.expect("a sign change"), 0.5 * (gap_start + gap_end), "JDP");
     assert_field(&field, |th| (k1 * T0 * (-MU * th).exp()).max(k2 * T0 * (-MU * (a - th)).exp()).max(T0), "steps");
 }
 

@@ -157,10 +157,10 @@ fn duty_cycle_history(payload_kg: f64, stop: Option<(f64, f64)>) -> (wrapcalc::d
 
 /// Every row of the history and of its mirror (a row at every sample, or every `step_s`):
 /// arcs swapped, the same peak utilization and gross-slip verdict, every demarcation mirrored
-/// (θ → α − θ, order reversed: the mirror's ends the stick gap the original's starts, to the
-/// arcs' placement of 1e-6°) and the JDP the same demarcation in both. The arcs and the peak
-/// utilization to 1e-6° and 1e-8, the bounds of [`mirror_at_every_sample`].
-fn rows_mirror(p: Params, samples: &[HistorySample], step_s: Option<f64>) -> Result<(), TestCaseError> {
+/// (θ → α − θ, order reversed, to `tol_deg`), the JDP the same demarcation in both, the
+/// middle of its stick gap, whose ends mirror to each other. The arcs and the peak utilization
+/// to 1e-6° and 1e-8, the bounds of [`mirror_at_every_sample`].
+fn rows_mirror(p: Params, samples: &[HistorySample], step_s: Option<f64>, tol_deg: f64) -> Result<(), TestCaseError> {
     let mirror = common::mirror(samples);
     let start = samples[0].t1_n.max(samples[0].t2_n);
     let alpha = p.wrap_angle_rad;
@@ -182,7 +182,30 @@ fn rows_mirror(p: Params, samples: &[HistorySample], step_s: Option<f64>) -> Res
         prop_assert!((u - v).abs() < 1e-8, "t = {}: peak utilization {} vs {}", t, u, v);
         prop_assert_eq!(x.demarcations_deg.len(), y.demarcations_deg.len(), "t = {}", t);
         for (da, db) in x.demarcations_deg.iter().zip(y.demarcations_deg.iter().rev()) {
-            prop_assert!(deg - db >= da - 1e-6, "t = {}: demarcation {} vs mirrored {}", t, da, deg - db);
+            prop_assert!((da - (deg - db)).abs() <= tol_deg, "t = {}: demarcation {} vs mirrored {}", t, da, deg - db);
+        }
+        // The stick gap at the JDP: its start mirrors to the mirror's end and back.
+        prop_assert_eq!(x.jdp_gap_deg.is_some(), y.jdp_gap_deg.is_some(), "t = {}", t);
+        if let (Some([s, e]), Some([sm, em])) = (x.jdp_gap_deg, y.jdp_gap_deg) {
+            let (s_back, e_back) = (deg - em, deg - sm);
+            prop_assert!(
+                (s - s_back).abs() <= tol_deg && (e - e_back).abs() <= tol_deg,
+                "t = {}: JDP gap [{}, {}] vs mirrored [{}, {}]",
+                t,
+                s,
+                e,
+                s_back,
+                e_back
+            );
+            let j = x.jdp_deg.expect("a JDP with its gap");
+            prop_assert!(
+                (j - 0.5 * (s + e)).abs() <= 1e-12 * deg,
+                "t = {}: JDP {} not the middle of [{}, {}]",
+                t,
+                j,
+                s,
+                e
+            );
         }
         let n = x.demarcations_deg.len();
         prop_assert_eq!(
@@ -196,6 +219,21 @@ fn rows_mirror(p: Params, samples: &[HistorySample], step_s: Option<f64>) -> Res
     }
     Ok(())
 }
+
+/// How closely a demarcation and its mirror's agree (deg). Both are the ends of the same
+/// pieces built from opposite ends, their angles agreeing to the round-off of the pulley's turn
+/// accumulated over the history (a few ulps of 2π per increment); a rule that depends on the
+/// frame (the end of a run at a row or a gap's start) shows as a node spacing or a gap, 0.1°
+/// and more.
+const MIRROR_DEG: f64 = 1e-9;
+
+/// The same where m'v² rises beside zones at the limit: the repair of stuck rope put beyond the
+/// limit lays its new pieces from the end it works from, and its boundaries agree with the
+/// mirror's only to the repair's residue (measured: 2.0e-9° at t = 1.522 s of one history, a
+/// demarcation at 155.461194535°; and in a duty cycle with an emergency stop, μ 0.254, 13.8 t,
+/// a stop at 50.47 s braking at 0.8 m/s², 2.4e-9° at t = 5.8 s, at 172.598512481°); kept at
+/// the arcs' placement, 1e-6°, until the repair mirrors to round-off.
+const REPAIRED_DEG: f64 = 1e-6;
 
 /// Which of its row's demarcations the JDP is.
 fn jdp_index(row: &HistoryRow) -> Option<usize> {
@@ -227,14 +265,14 @@ proptest! {
     #[test]
     fn alternating_friction_mirrors((p, samples) in alternating_history()) {
         mirror_at_every_sample(p, &samples)?;
-        rows_mirror(p, &samples, None)?;
+        rows_mirror(p, &samples, None, MIRROR_DEG)?;
     }
 
     /// Rises and falls of m'v² (repairs of stuck rope put beyond the limit) beside slip zones.
     #[test]
     fn changes_of_centrifugal_force_next_to_zones_at_the_limit_mirror((p, samples) in limit_history()) {
         mirror_at_every_sample(p, &samples)?;
-        rows_mirror(p, &samples, None)?;
+        rows_mirror(p, &samples, None, REPAIRED_DEG)?;
     }
 }
 
@@ -248,7 +286,7 @@ proptest! {
         let (_, samples) = duty_cycle_history(payload, None);
         let p = reference_wrap(mu);
         mirror_at_every_sample(p, &samples)?;
-        rows_mirror(p, &samples, Some(DUTY_ROW_STEP_S))?;
+        rows_mirror(p, &samples, Some(DUTY_ROW_STEP_S), MIRROR_DEG)?;
     }
 
     /// The same with an emergency stop at 2–58 s braking at 0.8–4 m/s²: the ropes ring after the
@@ -258,7 +296,7 @@ proptest! {
         let (_, samples) = duty_cycle_history(payload, Some((stop_s, decel)));
         let p = reference_wrap(mu);
         mirror_at_every_sample(p, &samples)?;
-        rows_mirror(p, &samples, Some(DUTY_ROW_STEP_S))?;
+        rows_mirror(p, &samples, Some(DUTY_ROW_STEP_S), REPAIRED_DEG)?;
     }
 }
 

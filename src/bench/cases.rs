@@ -473,6 +473,7 @@ mod tests {
             accel_m_s2: 0.0,
             jdp_deg: None,
             demarcations_deg: Vec::new(),
+            jdp_gap_deg: None,
             positive_arc_deg: pos,
             reverse_arc_deg: 0.0,
             max_utilization: 0.0,

@@ -78,7 +78,7 @@ pub enum CompareQuantity {
 
 /// The columns of history.csv in order (docs/interface.md), each with whether a `[[compare]]`
 /// figure can overlay it (every number but the time).
-pub const HISTORY_COLUMNS: [(&str, bool); 16] = [
+pub const HISTORY_COLUMNS: [(&str, bool); 18] = [
     ("t_s", false),
     ("t1_n", true),
     ("t2_n", true),
@@ -95,6 +95,8 @@ pub const HISTORY_COLUMNS: [(&str, bool); 16] = [
     ("mid1_n", true),
     ("mid2_n", true),
     ("demarcations_deg", false),
+    ("jdp_gap_start_deg", false),
+    ("jdp_gap_end_deg", false),
 ];
 
 /// The history.csv columns a `[[compare]]` figure can overlay, in history.csv's order.

@@ -56,7 +56,9 @@ pub fn write_distribution<W: Write>(out: W, blocks: &[&Distribution]) -> csv::Re
 
 /// history.csv: one row per reported time (docs/interface.md's columns), then the extension columns
 /// `anchor1_n,anchor2_n,mid1_n,mid2_n` (tension per rope at the conveyance anchors and halfway down
-/// each hanging rope; empty but for duty cycles with the ropes' dynamics).
+/// each hanging rope; empty but for duty cycles with the ropes' dynamics), `demarcations_deg`, and
+/// `jdp_gap_start_deg,jdp_gap_end_deg` (the ends of the stick gap whose middle the JDP is; empty
+/// without a JDP).
 pub fn write_history<W: Write>(
     out: W,
     rows: &[HistoryRow],
@@ -71,7 +73,8 @@ pub fn write_history<W: Write>(
         row.num(r.t_s).num(r.t1_n).num(r.t2_n).num(r.speed_m_s).num(r.accel_m_s2).opt(r.jdp_deg);
         row.num(r.positive_arc_deg).num(r.reverse_arc_deg).num(r.max_utilization).opt(r.safety_factor);
         row.flag(r.gross_slip).opt(anchors.map(|a| a[0])).opt(anchors.map(|a| a[1]));
-        row.opt(mids.map(|a| a[0])).opt(mids.map(|a| a[1])).demarcations(&r.demarcations_deg).end()?;
+        row.opt(mids.map(|a| a[0])).opt(mids.map(|a| a[1])).demarcations(&r.demarcations_deg);
+        row.opt(r.jdp_gap_deg.map(|g| g[0])).opt(r.jdp_gap_deg.map(|g| g[1])).end()?;
     }
     row.finish()
 }

@@ -209,6 +209,7 @@ mod tests {
             accel_m_s2: 0.0,
             jdp_deg: None,
             demarcations_deg: Vec::new(),
+            jdp_gap_deg: None,
             positive_arc_deg: 90.0,
             reverse_arc_deg: 90.0,
             max_utilization: 1.0,

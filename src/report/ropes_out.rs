@@ -10,10 +10,11 @@ use plotters::prelude::*;
 use std::io::Write;
 use std::path::Path;
 
-/// ropes.csv's header: the columns `t_s,rope,t1_n,t2_n`, then each rope's deviation
-/// from the mean rope at each end (%), its creep (active) arc (deg), its anti-slip safety factor
-/// (empty where its end tensions are equal), the rope slid grossly since the trip's start (m) and
-/// its cylinders' piston positions from mid-stroke (m; 0 with a rigid attachment).
+/// ropes.csv's header: the time, the rope and its tangent-point tensions `t_s,rope,t1_n,t2_n`,
+/// then each rope's deviation from the mean rope at each end (%), its creep (active) arc (deg),
+/// its anti-slip safety factor (empty where its end tensions are equal), the rope slid grossly
+/// since the trip's start (m) and its cylinders' piston positions from mid-stroke (m; 0 with a
+/// rigid attachment).
 pub const ROPES_HEADER: [&str; 11] = [
     "t_s",
     "rope",

@@ -211,6 +211,9 @@ pub struct SceneJson {
     /// Every demarcation point of the reported state's wrap, in θ order (deg); the scalar
     /// `jdp_deg` is the principal one (docs/physics.md, JDP).
     pub demarcations_deg: Vec<f64>,
+    /// Where q is zero at the JDP, `[start, end]` (deg): the stick gap whose middle `jdp_deg` is
+    /// (both ends `jdp_deg` where q changes sign at a point); null without a JDP.
+    pub jdp_gap_deg: Option<[f64; 2]>,
     /// Multi-rope load sharing (duty cycles of a sheet with `[ropes]` only): the largest
     /// deviation of a rope's tension from the mean over every round trip run (%).
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -338,6 +341,11 @@ impl Summary {
                         .as_ref()
                         .map(|w| w.summary.demarcations_rad.iter().map(|r| r.to_degrees()).collect())
                         .unwrap_or_default(),
+                    jdp_gap_deg: s
+                        .wrap
+                        .as_ref()
+                        .and_then(|w| w.summary.jdp_gap_rad)
+                        .map(|(a, b)| [a.to_degrees(), b.to_degrees()]),
                     root_finding: s.wrap.as_ref().map(|w| w.summary.roots),
                     solver: s.history.as_ref().map(|h| h.stats),
                     level3_solver: s.level3,

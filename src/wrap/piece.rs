@@ -197,6 +197,22 @@ impl Piece {
         }
     }
 
+    /// The sign of the friction over the whole piece: 1 (+θ), −1, or 0 where it is zero
+    /// throughout (a stick gap at constant tension), as [`Self::friction_positive`] decides it.
+    pub fn friction_sign(&self) -> i8 {
+        let c = match self.shape {
+            Shape::Exp { amp_n, rate_per_rad, .. } => -amp_n * rate_per_rad,
+            Shape::Entry(r) => r.slope_n_per_s * if r.omega_per_s != 0.0 { r.omega_per_s } else { r.alpha_per_s2 },
+        };
+        if c > 0.0 {
+            1
+        } else if c < 0.0 {
+            -1
+        } else {
+            0
+        }
+    }
+
     /// Whether friction is positive (+θ) on the piece (its sign is the same over the whole piece).
     pub fn friction_positive(&self) -> bool {
         match self.shape {

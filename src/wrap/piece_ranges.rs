@@ -71,8 +71,8 @@ pub struct Screen {
     tension_min_n: f64,
     /// Largest |q| over the piece (N/rad), plus the margin.
     friction_max_n_per_rad: f64,
-    /// The sign of the piece's friction ([`Piece::friction_positive`]).
-    positive: bool,
+    /// The sign of the piece's friction ([`Piece::friction_sign`]).
+    sign: i8,
     /// [`Piece::contact_base_n`]: at m'v² equal to it the piece is an exponential of the
     /// contact force; NaN for any other piece.
     contact_base_n: f64,
@@ -95,14 +95,19 @@ impl Screen {
             slip: widened(range_with_ends(piece, &ends, mu * SLIP_UTILIZATION)),
             tension_min_n: t_min - MARGIN * scale,
             friction_max_n_per_rad: q_max * (1.0 + MARGIN),
-            positive: piece.friction_positive(),
+            sign: piece.friction_sign(),
             contact_base_n: piece.contact_base_n().unwrap_or(f64::NAN),
         }
     }
 
     /// Whether the piece's friction is positive ([`Piece::friction_positive`]).
     pub fn positive(&self) -> bool {
-        self.positive
+        self.sign > 0
+    }
+
+    /// The sign of the piece's friction ([`Piece::friction_sign`]): 1, −1 or 0.
+    pub fn sign(&self) -> i8 {
+        self.sign
     }
 
     /// Whether the piece is an exponential of the contact force at m'v² = `centrifugal_n`

@@ -29,8 +29,12 @@ pub struct WrapSummary {
     /// downstream (rad from the side-1 tangent point), the [`principal`](super::arcs::principal) one where there are
     /// several; `None` without such a sign change.
     pub jdp_rad: Option<f64>,
-    /// Every demarcation point, in θ order (rad): each end of a positive run that a reverse run
-    /// follows.
+    /// Where q is zero at the JDP, `[start, end]` (rad): the stick gap between the last
+    /// positive and the first reverse friction whose middle the JDP is (both the JDP where q
+    /// changes sign at a point); `None` without a JDP.
+    pub jdp_gap_rad: Option<(f64, f64)>,
+    /// Every demarcation point, in θ order (rad): where q changes sign between a positive run
+    /// and the reverse run that follows it (the middle of a stick gap between them).
     pub demarcations_rad: Vec<f64>,
     /// Peak over the wrap of the utilization |q| / (μn), at most 1 (dimensionless).
     pub max_utilization: f64,
@@ -287,11 +291,12 @@ impl Gather {
     /// piece) and returns true; false for any other piece.
     fn exponential(&mut self, piece: &Piece, law: &ContactLaw, index: usize) -> bool {
         let Some((_, rate)) = piece.contact_exponential(law.centrifugal_n) else { return false };
-        let positive = piece.friction_positive();
+        let sign = piece.friction_sign();
+        let positive = sign > 0;
         let u = contact_utilization(rate, law.mu);
         self.max_utilization = self.max_utilization.max(u);
         let (a, b) = (piece.theta0_rad, piece.theta1_rad);
-        self.arcs.add_held((a, b), u >= ARC_THRESHOLD, positive, index, || piece.tension_n(a));
+        self.arcs.add_held((a, b), u >= ARC_THRESHOLD, sign, index, || piece.tension_n(a));
         if self.zones {
             self.states.push(piece.theta0_rad, piece.theta1_rad, state_of(u >= SLIP_UTILIZATION, positive));
         }
@@ -315,12 +320,12 @@ impl Gather {
             self.exponential(&carried.piece(p, i), law, i);
             return Ok(());
         }
-        let positive = screen.positive();
+        let (sign, positive) = (screen.sign(), screen.positive());
         let (a, b) = carried.ends(p, i);
         let arc = match screen.arc.side(c) {
             Side::Open => true,
             side => {
-                self.arcs.add_held((a, b), side == Side::Above, positive, i, || carried.piece(p, i).tension_n(a));
+                self.arcs.add_held((a, b), side == Side::Above, sign, i, || carried.piece(p, i).tension_n(a));
                 false
             }
         };
@@ -344,7 +349,8 @@ impl Gather {
     /// part's ends lie on both sides), as `what` asks.
     fn evaluate(&mut self, piece: &Piece, law: &ContactLaw, what: Evaluate, index: usize) -> Result<(), RootError> {
         // Friction keeps its sign over a piece.
-        let positive = piece.friction_positive();
+        let sign = piece.friction_sign();
+        let positive = sign > 0;
         for part in monotone_parts(*piece, law.centrifugal_n) {
             let ends = (Fraction::at(law, &part, part.theta0_rad), Fraction::at(law, &part, part.theta1_rad));
             if what.peak {
@@ -352,7 +358,7 @@ impl Gather {
             }
             if what.arc {
                 for &(s, e, above) in split(&part, law, ends, ARC_THRESHOLD, &mut self.roots)?.parts() {
-                    self.arcs.add_held((s, e), above, positive, index, || piece.tension_n(s));
+                    self.arcs.add_held((s, e), above, sign, index, || piece.tension_n(s));
                 }
             }
             if what.slip && self.zones {
@@ -440,11 +446,13 @@ impl ArcTally {
         zones: ZoneRuns,
         roots: RootStats,
     ) -> WrapSummary {
+        let principal = self.principal_of(marks);
         WrapSummary {
             positive_arc_rad: self.positive_rad(),
             reverse_arc_rad: self.reverse_rad(),
             idle_arc_rad: self.idle_rad(),
-            jdp_rad: self.principal_of(marks).map(|d| d.at_rad),
+            jdp_rad: principal.map(|d| d.at_rad),
+            jdp_gap_rad: principal.map(|d| d.gap_rad()),
             demarcations_rad: marks.iter().map(|d| d.at_rad).collect(),
             max_utilization: max_utilization.min(1.0),
             zones: zones.into_zones(),

@@ -40,6 +40,9 @@ pub struct HistoryRow {
     pub gross_slip: bool,
     /// Every demarcation point of the row's wrap, in θ order (deg).
     pub demarcations_deg: Vec<f64>,
+    /// Where q is zero at the JDP, `[start, end]` (deg): the stick gap whose middle the JDP is
+    /// (both the JDP where q changes sign at a point); none without a JDP.
+    pub jdp_gap_deg: Option<[f64; 2]>,
 }
 
 /// The wrap at one reported time.
@@ -99,6 +102,7 @@ impl HistoryRun {
             speed_m_s: end.speed_m_s,
             accel_m_s2: end.accel_m_s2,
             jdp_deg: summary.jdp_rad.map(f64::to_degrees),
+            jdp_gap_deg: summary.jdp_gap_rad.map(|(a, b)| [a.to_degrees(), b.to_degrees()]),
             demarcations_deg,
             positive_arc_deg: summary.positive_arc_rad.to_degrees(),
             reverse_arc_deg: summary.reverse_arc_rad.to_degrees(),

@@ -7,7 +7,7 @@ use crate::model::history::{
     self, HistoryRun, HistorySample, Local, MAP_COLUMNS, Output, SolverReport, Wrap, WrapModel,
 };
 use crate::numerics::roots::{RootError, RootStats, brent};
-use crate::wrap::arcs::ArcTally;
+use crate::wrap::arcs::{ArcTally, Demarcation};
 use crate::wrap::contact::{ARC_THRESHOLD, ContactLaw, SLIP_UTILIZATION};
 use crate::wrap::summary::{WrapSummary, ZoneRuns};
 use crate::wrap::{Distribution, Sample};
@@ -135,27 +135,42 @@ pub fn summarize(state: &State, mu: f64, zones: bool) -> Result<WrapSummary, Roo
         max_u = max_u.max(u);
         let (a, b) = (k as f64 * h, (k + 1) as f64 * h);
         let above = u >= ARC_THRESHOLD;
-        arcs.add_valued(a, b, above, q > 0.0, (state.tension_n[k], state.tension_n[k + 1]));
+        let sign = if q > 0.0 {
+            1
+        } else if q < 0.0 {
+            -1
+        } else {
+            0
+        };
+        arcs.add_valued(a, b, above, sign, (state.tension_n[k], state.tension_n[k + 1]));
         if zones {
             runs.push(a, b, law.state(if u >= SLIP_UTILIZATION { 1.0 } else { 0.0 }, q));
         }
     }
-    // Each demarcation at the sign change of q between its runs' segments, not at the end of
-    // the positive run's last segment; the JDP the principal one of these.
+    // Each demarcation where the piecewise linear q through the segment midpoints changes sign
+    // between its runs, not at a segment's end: from the last positive segment's zero
+    // downstream to the first reverse segment's zero upstream (one zero where q crosses at a
+    // point), the demarcation the gap's middle; the JDP the principal one of these.
     let segment = |theta: f64| (theta / h).round() as usize;
     let mut marks = arcs.demarcations();
     for d in &mut marks {
-        d.at_rad = sign_change(state, segment(d.at_rad) - 1, segment(d.gap_end_rad), &mut roots)?;
+        // The tally's gap runs from the last positive segment's end to the first reverse one's start.
+        let (p, r) = (segment(d.sign_change_rad.0) - 1, segment(d.sign_change_rad.1));
+        let after_positive = zero_between(state, p, &mut roots)?;
+        let before_reverse = if r == p + 1 { after_positive } else { zero_between(state, r - 1, &mut roots)? };
+        *d = Demarcation { weight: d.weight, ..Demarcation::of_sign_change((after_positive, before_reverse)) };
     }
     Ok(arcs.summary_of(&marks, max_u, runs, roots))
 }
 
-/// The first zero of the piecewise linear q(θ) through the midpoints of segments `p` (q > 0)
-/// to `r` (q < 0).
-fn sign_change(state: &State, p: usize, r: usize, roots: &mut RootStats) -> Result<f64, RootError> {
-    let m = (p..r).find(|&j| state.friction_n[j + 1] <= 0.0).unwrap_or(r - 1);
+/// The zero of the piecewise linear q(θ) between the midpoints of segments `m` and `m + 1`,
+/// whose frictions are of opposite signs or one of them zero (the zero's end then).
+fn zero_between(state: &State, m: usize, roots: &mut RootStats) -> Result<f64, RootError> {
     let (a, b) = (state.midpoint_rad(m), state.midpoint_rad(m + 1));
     let (qa, qb) = (state.friction_n_per_rad(m), state.friction_n_per_rad(m + 1));
+    if qa == 0.0 || qb == 0.0 {
+        return Ok(if qa == 0.0 { a } else { b });
+    }
     let q = |theta: f64| qa + (qb - qa) * (theta - a) / (b - a);
     brent(q, a, b, 1e-12, roots)
 }
