@@ -324,6 +324,7 @@ fn print_result(design: &Design, result: &RunResult, format: Format, quiet: bool
         Format::Table if !quiet => {
             let color = styled(std::io::stdout().is_terminal());
             print!("{}", table::render(&design.title, &design.sheet, result, table::Style { color }));
+            print!("{}", wrapcalc::report::dynamic_notes::terminal(design, result, table::Style { color }));
         }
         Format::Table => {}
     }

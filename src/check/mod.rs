@@ -146,6 +146,14 @@ pub struct Check {
     pub governing_case: Option<String>,
     /// Why a check is not evaluated or what its verdict rests on, when that needs saying.
     pub note: Option<String>,
+    /// A check decided by the suspended ropes' dynamics: the same check with rigid ropes along
+    /// the same motion (level 0; docs/physics.md §6, "Rigid and dynamic side by side").
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rigid_value: Option<f64>,
+    /// A check decided by the ropes' dynamics: the tension difference |T1 − T2| with the ropes'
+    /// dynamics over that with rigid ropes, at the check's governing instant.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub amplification: Option<f64>,
 }
 
 impl Check {
@@ -168,6 +176,8 @@ impl Check {
             verdict: Verdict::NoRequirement,
             governing_case: None,
             note: None,
+            rigid_value: None,
+            amplification: None,
         }
     }
 

@@ -1,6 +1,8 @@
 //! The scalar summary of a run, as written to summary.json and summary.csv (docs/interface.md).
 
 use crate::check::Check;
+use crate::design::damping::RopeDamping;
+use crate::design::inputs::InputRecord;
 use crate::design::{Design, Requirements};
 use crate::load_cases::MatrixResult;
 use crate::margins::Margins;
@@ -299,6 +301,13 @@ pub struct Summary {
     pub design_checks: Option<Vec<Check>>,
     /// Extension (a sheet with `[load_cases]`): the load-case matrix, every case.
     pub load_cases: Option<MatrixResult>,
+    /// Extension (a sheet with duty cycles): the rope damping ζ they ran with, whether the
+    /// sheet gave it or the default was used, the default's basis, the sensitivity range, and
+    /// the warning of an undamped run.
+    pub rope_damping: Option<RopeDamping>,
+    /// Extension: every input of the sheet with its `source` (`sheet`, `default` or `rule set`)
+    /// and, for a default or a rule set's value, its `basis`.
+    pub inputs: Vec<InputRecord>,
 }
 
 impl Summary {
@@ -347,6 +356,8 @@ impl Summary {
                 .collect(),
             design_checks: run.design.as_ref().map(|d| d.checks.clone()),
             load_cases: run.design.as_ref().and_then(|d| d.matrix.clone()),
+            rope_damping: design.duty_cycle_damping(),
+            inputs: design.inputs.clone(),
         }
     }
 

@@ -8,6 +8,7 @@
 mod derive;
 mod design_checks;
 mod loads;
+pub mod rigid_beside;
 mod ropes;
 mod speed;
 mod time;

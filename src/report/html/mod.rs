@@ -12,6 +12,7 @@
 
 mod by_hand;
 mod checks;
+mod dynamic_front;
 mod figures;
 mod front;
 mod inputs;
@@ -127,6 +128,7 @@ pub fn render(ctx: &Context) -> std::io::Result<String> {
         if ctx.run.all_checks_pass() { "pass" } else { "fail" },
     );
     front::verdict(&mut out, ctx);
+    dynamic_front::notes(&mut out, ctx);
     out.push_str("<nav><h2>Contents</h2><ol>");
     for (anchor, name, _) in SECTIONS {
         let _ = write!(out, "<li><a href=\"#{anchor}\">{}</a></li>", esc(name));
