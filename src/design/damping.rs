@@ -1,5 +1,5 @@
 //! The hoisting ropes' longitudinal damping (`[hoist] rope_damping_ratio`): its default, the
-//! basis of that default, the range the sensitivity of a duty cycle is measured over, and the
+//! basis of that default, the bracket of plausible values stated with it, and the
 //! warning an undamped sheet carries (docs/physics.md §6, "Rope damping").
 
 use super::inputs::InputSource;
@@ -8,7 +8,7 @@ use serde::Serialize;
 /// The damping ratio a duty cycle uses when the sheet gives none.
 pub const DEFAULT_ROPE_DAMPING_RATIO: f64 = 0.01;
 
-/// The ends of the range of ζ a verdict's sensitivity is measured over (low, high).
+/// The bracket of plausible values stated with the default (low, high).
 pub const ROPE_DAMPING_RANGE: (f64, f64) = (0.005, 0.02);
 
 /// Where the default comes from, as the report and summary.json state it.
@@ -29,9 +29,9 @@ pub struct RopeDamping {
     pub source: InputSource,
     /// The basis of the default (always stated, so a reader can weigh a sheet's own value).
     pub basis: &'static str,
-    /// The low end of the range the sensitivity uses.
+    /// The low end of the plausible range stated with the default.
     pub range_low: f64,
-    /// The high end of the range the sensitivity uses.
+    /// The high end of the plausible range stated with the default.
     pub range_high: f64,
     /// [`UNDAMPED_WARNING`] when ζ = 0.
     pub warning: Option<&'static str>,

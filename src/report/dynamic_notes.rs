@@ -1,5 +1,5 @@
 //! What a duty cycle's verdict rests on beyond the checks: the rope damping ζ it ran with
-//! (the sheet's or the default, with the default's basis and the sensitivity range) and the
+//! (the sheet's or the default, with the default's basis and its plausible range) and the
 //! warning of an undamped run; printed on the terminal under the checks and on page 1 of the
 //! report, and carried as `rope_damping` in summary.json (docs/report.md, "Rope damping").
 
@@ -17,7 +17,7 @@ pub fn damping_sentence(d: &RopeDamping) -> String {
         }
     };
     format!(
-        "Rope damping ζ = {} of the first longitudinal mode, {from}; sensitivity range {}–{}. Basis of the {}",
+        "Rope damping ζ = {} of the first longitudinal mode, {from}; plausible range {}–{}. Basis of the {}",
         d.ratio, d.range_low, d.range_high, d.basis
     )
 }

@@ -302,7 +302,7 @@ pub struct Summary {
     /// Extension (a sheet with `[load_cases]`): the load-case matrix, every case.
     pub load_cases: Option<MatrixResult>,
     /// Extension (a sheet with duty cycles): the rope damping ζ they ran with, whether the
-    /// sheet gave it or the default was used, the default's basis, the sensitivity range, and
+    /// sheet gave it or the default was used, the default's basis, its plausible range, and
     /// the warning of an undamped run.
     pub rope_damping: Option<RopeDamping>,
     /// Extension: every input of the sheet with its `source` (`sheet`, `default` or `rule set`)
