@@ -154,6 +154,31 @@ pub struct Check {
     /// dynamics over that with rigid ropes, at the check's governing instant.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub amplification: Option<f64>,
+    /// A check decided by the ropes' dynamics: its value with each uncertain input at the ends
+    /// of its range, the rest as run (docs/checks.md, "Sensitivity").
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub sensitivity: Vec<Sensitivity>,
+}
+
+/// A check's value with one uncertain input at the low and the high end of its range.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Sensitivity {
+    /// The input, as the sheet names it (`hoist.rope_damping_ratio`).
+    pub parameter: &'static str,
+    /// The low end of its range.
+    pub low: f64,
+    /// The high end of its range.
+    pub high: f64,
+    /// The check's value with the input at the low end (`None`: unbounded or not evaluated).
+    pub value_low: Option<f64>,
+    /// The check's value with the input at the high end.
+    pub value_high: Option<f64>,
+    /// The check's verdict with the input at the low end.
+    pub verdict_low: Verdict,
+    /// The check's verdict with the input at the high end.
+    pub verdict_high: Verdict,
+    /// Whether the verdict at either end differs from the check's verdict as run.
+    pub verdict_changes: bool,
 }
 
 impl Check {
@@ -178,6 +203,7 @@ impl Check {
             note: None,
             rigid_value: None,
             amplification: None,
+            sensitivity: Vec::new(),
         }
     }
 

@@ -26,7 +26,7 @@ pub fn damping_sentence(d: &RopeDamping) -> String {
 pub fn terminal(design: &Design, run: &crate::run::RunResult, style: Style) -> String {
     let Some(d) = design.duty_cycle_damping() else { return String::new() };
     let mut out = String::new();
-    for w in why_dynamic_differs(run) {
+    for w in why_dynamic_differs(run).into_iter().chain(verdict_flips(run)) {
         out.push_str(&format!("\n{w}."));
     }
     out.push_str(&format!("\n{}.\n", damping_sentence(&d)));
@@ -62,4 +62,37 @@ pub fn why_dynamic_differs(run: &crate::run::RunResult) -> Vec<String> {
         ));
     }
     out
+}
+
+/// One sentence per check whose verdict changes inside an uncertain input's range (its
+/// `sensitivity`): which scene, which check, the verdict as run and at each end.
+pub fn verdict_flips(run: &crate::run::RunResult) -> Vec<String> {
+    let mut out = Vec::new();
+    for s in &run.scenes {
+        for c in &s.classical.checks {
+            for r in c.sensitivity.iter().filter(|r| r.verdict_changes) {
+                out.push(format!(
+                    "{}: the {} is {} as run, but {} at {} = {} ({}) and {} at {} ({}); the verdict changes inside \
+                     the range of {}",
+                    s.name,
+                    c.name,
+                    c.verdict.label(),
+                    r.verdict_low.label(),
+                    r.parameter,
+                    r.low,
+                    value_text(r.value_low),
+                    r.verdict_high.label(),
+                    r.high,
+                    value_text(r.value_high),
+                    r.parameter
+                ));
+            }
+        }
+    }
+    out
+}
+
+/// A sensitivity end's value as text ("unbounded or not evaluated" without one).
+pub fn value_text(v: Option<f64>) -> String {
+    v.map_or_else(|| "unbounded or not evaluated".to_string(), |v| format!("{v:.3}"))
 }
