@@ -333,7 +333,9 @@ fn print_result(design: &Design, result: &RunResult, format: Format, quiet: bool
         Format::Json => println!("{}", Summary::of(design, result).to_json()),
         Format::Table if !quiet => {
             let color = styled(std::io::stdout().is_terminal());
-            print!("{}", table::render(&design.title, &design.sheet, result, table::Style { color }));
+            let style = table::Style { color };
+            let notes = wrapcalc::report::dynamic_notes::terminal(design, result, style);
+            print!("{}", table::render_with(&design.title, &design.sheet, result, style, &notes));
         }
         Format::Table => {}
     }

@@ -284,6 +284,26 @@ fn gross_slip_onset_ends_the_trip() {
     assert!(!r.checks_pass());
 }
 
+/// A trip that starts moving at once (its first stage a step) and is cut short by gross slip
+/// never comes to rest: its static check is not evaluated and says why with the run's fact —
+/// the slip's instant — not that the trip "never rests".
+#[test]
+fn a_trip_cut_short_by_gross_slip_says_so_in_its_static_check() {
+    let mut d = design();
+    d.hoist.as_mut().expect("hoist").stages[0].step = true;
+    let scene = d.scenes.iter_mut().find(|s| s.name == "emergency-MID").unwrap();
+    let SceneKind::DutyCycle(cycle) = &mut scene.kind else { panic!("a duty cycle") };
+    cycle.emergency.as_mut().unwrap().decel_m_s2 = 3.0;
+    let r = &run_scenes(&d, &["emergency-MID"])[0];
+    let onset = r.slip_onset.expect("the stop slips");
+    let name = wrapcalc::model::level0::STATIC_CHECK;
+    let stat = r.classical.checks.iter().find(|c| c.name == name).expect("the static check");
+    assert!(stat.value.is_none() && stat.verdict == wrapcalc::check::Verdict::NotEvaluated, "{stat:?}");
+    let note = stat.note.as_deref().expect("a reason");
+    assert!(note.contains(&format!("cut short by gross slip at t = {:.3} s", onset.t_s)), "{note}");
+    assert!(!note.contains("never rests"), "{note}");
+}
+
 /// The wrap's answer does not depend on how often a duty cycle reports: the MID lift and the
 /// MID lowering trip reported every 0.05 s and every 0.0125 s give the same arcs and JDP at every
 /// common row (1e-9°: the rows split the wrap's increments, which are exact, so only round-off

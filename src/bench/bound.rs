@@ -102,6 +102,7 @@ fn design(name: &str, samples: Vec<HistorySample>) -> Design {
         machine: crate::design::Machine::default(),
         load_cases: None,
         compare: Vec::new(),
+        inputs: Vec::new(),
         ropes: None,
         document: crate::design::Document::default(),
         // The model levels are timed: the derived margins and fit are left out.

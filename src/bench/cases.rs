@@ -164,6 +164,7 @@ fn bench_design(name: &str, kind: SceneKind) -> Design {
         machine: crate::design::Machine::default(),
         load_cases: None,
         compare: Vec::new(),
+        inputs: Vec::new(),
         ropes: None,
         // The model levels are timed: the derived margins and fit are left out.
         scenes: vec![Scene {

@@ -150,6 +150,39 @@ pub struct Check {
     /// A safety factor whose tensions are balanced (their difference below what the inputs
     /// resolve, `model::level0::balanced`): `value` is `None`, printed "∞ (balanced)".
     pub balanced: bool,
+    /// A check decided by the suspended ropes' dynamics: the same check with rigid ropes along
+    /// the same motion (level 0; docs/physics.md §6, "Rigid and dynamic side by side").
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rigid_value: Option<f64>,
+    /// A check decided by the ropes' dynamics: the tension difference |T1 − T2| with the ropes'
+    /// dynamics over that with rigid ropes, at the check's governing instant.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub amplification: Option<f64>,
+    /// A check decided by the ropes' dynamics: its value with each uncertain input at the ends
+    /// of its range, the rest as run (docs/checks.md, "Sensitivity").
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub sensitivity: Vec<Sensitivity>,
+}
+
+/// A check's value with one uncertain input at the low and the high end of its range.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Sensitivity {
+    /// The input, as the sheet names it (`hoist.rope_damping_ratio`).
+    pub parameter: &'static str,
+    /// The low end of its range.
+    pub low: f64,
+    /// The high end of its range.
+    pub high: f64,
+    /// The check's value with the input at the low end (`None`: unbounded or not evaluated).
+    pub value_low: Option<f64>,
+    /// The check's value with the input at the high end.
+    pub value_high: Option<f64>,
+    /// The check's verdict with the input at the low end.
+    pub verdict_low: Verdict,
+    /// The check's verdict with the input at the high end.
+    pub verdict_high: Verdict,
+    /// Whether the verdict at either end differs from the check's verdict as run.
+    pub verdict_changes: bool,
 }
 
 impl Check {
@@ -173,6 +206,9 @@ impl Check {
             governing_case: None,
             note: None,
             balanced: false,
+            rigid_value: None,
+            amplification: None,
+            sensitivity: Vec::new(),
         }
     }
 

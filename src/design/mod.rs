@@ -10,7 +10,9 @@ pub use drive::Drive;
 
 pub use crate::design::requirements::{DEFAULT_SAFETY_FACTOR_SOURCE, Limit, Requirements, SafetyFactorBasis};
 
+pub mod damping;
 mod direction;
+pub mod inputs;
 mod scene;
 pub use direction::{Direction, Side};
 pub use scene::{
@@ -42,6 +44,9 @@ pub struct Design {
     pub hoist: Option<Hoist>,
     /// The scenes, in sheet order.
     pub scenes: Vec<Scene>,
+    /// Every input of the sheet with its source: each key written, each default and rule-set
+    /// value used (empty for a design not read from a sheet).
+    pub inputs: Vec<inputs::InputRecord>,
     /// The elastic lining of level 3 (the `[lining]` section), when the sheet has one: it
     /// switches level 3 on for the scenes that run the wrap in time.
     pub lining: Option<Lining>,
@@ -149,7 +154,21 @@ pub struct UnknownScene {
     pub known: String,
 }
 
+impl Hoist {
+    /// The rope damping this hoist runs with, its source and basis.
+    pub fn rope_damping(&self) -> damping::RopeDamping {
+        damping::RopeDamping::of(self.rope_damping_ratio, self.rope_damping_given)
+    }
+}
+
 impl Design {
+    /// The rope damping the sheet's duty cycles run with, when it has any (`None` without a
+    /// `[hoist]` or without a `duty-cycle` scene: no result depends on it then).
+    pub fn duty_cycle_damping(&self) -> Option<damping::RopeDamping> {
+        let cycles = self.scenes.iter().any(|s| matches!(s.kind, SceneKind::DutyCycle(_)));
+        self.hoist.as_ref().filter(|_| cycles).map(Hoist::rope_damping)
+    }
+
     /// Equivalent mass of the guide sheave on each side, `J_g/R_g²` (kg; `[0, 0]` without one).
     pub fn guide_mass_kg(&self) -> [f64; 2] {
         match self.machine.guide {
@@ -197,6 +216,8 @@ pub struct Hoist {
     pub conveyance2_kg: f64,
     /// Structural damping ratio of the hoisting ropes' longitudinal modes.
     pub rope_damping_ratio: f64,
+    /// Whether the sheet gave `rope_damping_ratio` (else the default, [`damping::DEFAULT_ROPE_DAMPING_RATIO`]).
+    pub rope_damping_given: bool,
     /// Number of tail (balance) ropes.
     pub tail_count: u32,
     /// Mass per metre of one tail (balance) rope (kg/m).

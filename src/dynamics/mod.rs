@@ -24,8 +24,9 @@
 //! the tail rope hanging below the conveyance is lumped on it with its weight and its mass
 //! (both vary with `x`). The tension at the tangent point is `T_s = P(0, t) / ropes`.
 //! Damping is stiffness proportional (material damping), `β = 2ζ/ω₁` with `ω₁` the spring–mass
-//! estimate of the current fundamental ([`spring_mass_frequency_hz`]): the first mode gets the
-//! damping ratio `ζ`, mode `i` about `ζ ω_i/ω₁`; the rigid motion is not damped.
+//! estimate of the current fundamental ([`spring_mass_frequency_hz`]): `C = βK`, so mode `i`
+//! gets the damping ratio `ζ ω_i/ω₁` exactly, the first mode `ζ` to the estimate's error
+//! (docs/physics.md §6, "Rope damping"); the rigid motion is not damped.
 //!
 //! Assumptions: small strain, linear elastic ropes, all `ropes` ropes of one side share one
 //! motion (equal tensions), no lateral (string) motion, and the transport (Coriolis-like) terms
@@ -99,7 +100,8 @@ pub struct HoistParams {
     pub rope_mass_per_m_kg: f64,
     /// Axial stiffness EA of one hoisting rope, N.
     pub rope_ea_n: f64,
-    /// Damping ratio of the first longitudinal mode (stiffness proportional), ≥ 0.
+    /// Damping ratio ζ given to the spring–mass estimate of the first longitudinal mode
+    /// (stiffness proportional), ≥ 0.
     pub damping_ratio: f64,
     /// Number of tail ropes (0 allowed).
     pub tail_ropes: usize,

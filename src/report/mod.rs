@@ -12,6 +12,7 @@ pub mod checklist;
 pub mod compare;
 pub mod csv_out;
 pub mod drive_out;
+pub mod dynamic_notes;
 pub mod expr;
 pub mod figure_size;
 pub mod friction_colour;
@@ -35,6 +36,7 @@ pub mod target;
 pub mod verdict;
 pub mod xlsx;
 pub mod xlsx_formulas;
+pub mod xlsx_inputs;
 
 use crate::run::{RunResult, SceneResult};
 use rayon::prelude::*;
@@ -168,7 +170,7 @@ fn write_document(
     let path = dir.join("report.html");
     html::write(&path, &html::Context { design, run, provenance, dir }).map_err(io(&path))?;
     let path = dir.join("checks.xlsx");
-    xlsx::write_checks(&path, &design.title, run)
+    xlsx::write_checks(&path, &design.title, run, &design.inputs)
         .map_err(|source| ReportError::Xlsx { path: path.display().to_string(), source })
 }
 

@@ -1,6 +1,8 @@
 //! The scalar summary of a run, as written to summary.json and summary.csv (docs/interface.md).
 
 use crate::check::Check;
+use crate::design::damping::RopeDamping;
+use crate::design::inputs::InputRecord;
 use crate::design::{Design, Requirements};
 use crate::load_cases::MatrixResult;
 use crate::margins::Margins;
@@ -312,6 +314,13 @@ pub struct Summary {
     /// the usual range and the likely slip (empty when every input is usual). They change no
     /// result and no verdict.
     pub input_warnings: Vec<crate::design::plausible::InputWarning>,
+    /// Extension (a sheet with duty cycles): the rope damping ζ they ran with, whether the
+    /// sheet gave it or the default was used, the default's basis, its plausible range, and
+    /// the warning of an undamped run.
+    pub rope_damping: Option<RopeDamping>,
+    /// Extension: every input of the sheet with its `source` (`sheet`, `default` or `rule set`)
+    /// and, for a default or a rule set's value, its `basis`.
+    pub inputs: Vec<InputRecord>,
 }
 
 impl Summary {
@@ -368,6 +377,8 @@ impl Summary {
             design_checks: run.design.as_ref().map(|d| d.checks.clone()),
             load_cases: run.design.as_ref().and_then(|d| d.matrix.clone()),
             input_warnings: crate::design::plausible::warnings(design),
+            rope_damping: design.duty_cycle_damping(),
+            inputs: design.inputs.clone(),
         }
     }
 

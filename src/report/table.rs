@@ -36,6 +36,12 @@ fn factor(v: Option<f64>) -> String {
 
 /// Renders the table report.
 pub fn render(title: &str, sheet: &str, run: &RunResult, style: Style) -> String {
+    render_with(title, sheet, run, style, "")
+}
+
+/// Renders the table report with `notes` (lines of their own) between the verdict and the
+/// last line.
+pub fn render_with(title: &str, sheet: &str, run: &RunResult, style: Style, notes: &str) -> String {
     let mut out = String::new();
     let _ = writeln!(
         out,
@@ -62,6 +68,7 @@ pub fn render(title: &str, sheet: &str, run: &RunResult, style: Style) -> String
         super::matrix::render_design_checks(&mut out, d, style);
     }
     verdict_lines(&mut out, run, style);
+    out.push_str(notes);
     let _ = writeln!(
         out,
         "\n{} — {} scene(s) in {:.2} ms",

@@ -17,6 +17,7 @@ use super::expr::Expr;
 use super::matrix::{CASE_COLUMNS, Field};
 use super::xlsx_formulas::{limit_expr, value_expr};
 use crate::check::Verdict;
+use crate::design::inputs::InputRecord;
 use crate::run::RunResult;
 use rust_xlsxwriter::{Format, Formula, Workbook, Worksheet, XlsxError, utility::row_col_to_cell};
 use std::path::Path;
@@ -256,8 +257,9 @@ fn write_table<T>(
     Ok(())
 }
 
-/// Writes the workbook of `run`'s checks to `path`.
-pub fn write_checks(path: &Path, title: &str, run: &RunResult) -> Result<(), XlsxError> {
+/// Writes the workbook of `run`'s checks to `path`, with the sheet's `inputs` under the checks'
+/// inputs on the Inputs sheet.
+pub fn write_checks(path: &Path, title: &str, run: &RunResult, inputs: &[InputRecord]) -> Result<(), XlsxError> {
     let mut book = Workbook::new();
     let heading = format!("wrapcalc {} — checks of {title}", env!("CARGO_PKG_VERSION"));
     let lines = lines(run);
@@ -272,6 +274,7 @@ pub fn write_checks(path: &Path, title: &str, run: &RunResult) -> Result<(), Xls
         &check_columns(),
     )?;
 
+    let sheet_inputs = inputs;
     let inputs: Vec<InputLine<'_>> = lines
         .iter()
         .enumerate()
@@ -280,16 +283,18 @@ pub fn write_checks(path: &Path, title: &str, run: &RunResult) -> Result<(), Xls
             l.row.check.inputs.iter().map(move |input| InputLine { check_row, row: l.row, input })
         })
         .collect();
+    let sheet = book.add_worksheet();
     write_table(
-        book.add_worksheet(),
+        sheet,
         INPUTS_SHEET,
         [
             &heading,
-            "One row per input of a check (the check's row on sheet Checks); the formulas of sheet Checks refer to the value column.",
+            "One row per input of a check (the check's row on sheet Checks); the formulas of sheet Checks refer to the value column. The sheet's inputs, each with its source, follow below.",
         ],
         &inputs,
         &input_columns(),
     )?;
+    super::xlsx_inputs::write_sheet_inputs(sheet, HEADER_ROW + 2 + inputs.len() as u32, sheet_inputs)?;
 
     write_cases(book.add_worksheet(), &heading, run)?;
     book.save(path)

@@ -8,7 +8,9 @@
 mod derive;
 mod design_checks;
 mod loads;
+pub mod rigid_beside;
 mod ropes;
+pub mod sensitivity;
 mod speed;
 mod time;
 pub mod track;
@@ -435,7 +437,8 @@ fn run_scene(
             (result, None, Vec::new(), work)
         }
         SceneKind::DutyCycle(cycle) => {
-            let run = run_duty_cycle(design, scene, cycle, plan, options, context)?;
+            let mut run = run_duty_cycle(design, scene, cycle, plan.clone(), options, context)?;
+            sensitivity::mark(design, scene, cycle, &plan, options, &mut run.result)?;
             (run.result, run.ropes, run.kept, run.work)
         }
     };

@@ -2,6 +2,7 @@
 //! tensions come from the suspended ropes of level 4), level 0 over every sample, then the wrap
 //! through them at level 2 or 3.
 
+use super::rigid_beside::code_beside;
 use super::speed::pipelined;
 use super::trip::{self, Trip};
 use super::wrap_run::{Initial, Kept, Model, ModelRun, WrapShare, rolling_initial, run_model, wrap_model};
@@ -124,8 +125,8 @@ pub(super) fn run_duty_cycle(
     work += wrap;
     if let Some((ropes, rigid)) = &dynamics {
         let dynamics = &ropes.samples;
-        let code = trip::code_classical(design, rigid);
-        result.rope_dynamics_safety_factor = trip::code_and_rope_dynamics(design, &mut result.classical, &code);
+        let sf = code_beside(design, &mut result.classical, (rigid, &trip), &params);
+        result.rope_dynamics_safety_factor = sf;
         if let Some(history) = &mut result.history {
             history.anchors_n = history.rows.iter().map(|r| level4::anchors_at(dynamics, r.t_s)).collect();
             history.midpoints_n = history.rows.iter().map(|r| level4::midpoints_at(dynamics, r.t_s)).collect();

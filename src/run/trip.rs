@@ -143,6 +143,10 @@ pub(super) fn mark_onset(classical: &mut Classical, trip: &Trip) {
             ));
             debug_assert!(c.verdict == Verdict::Fail);
         }
+        // A trip cut short never reached its rest: its static check says so, with the instant.
+        for c in classical.checks.iter_mut().filter(|c| c.note.as_deref() == Some(level0::NEVER_AT_REST)) {
+            c.note = Some(cut_short(o.t_s, o.ratio));
+        }
     }
 }
 
@@ -164,4 +168,12 @@ pub(super) fn add_stop_and_drive(
     result.classical.checks.extend(crate::drive::checks::motor_checks(design, &drive));
     result.drive = Some(Box::new(drive));
     Ok(())
+}
+
+/// Why the static check of a trip cut short by gross slip is not evaluated.
+pub(super) fn cut_short(t_s: f64, ratio: f64) -> String {
+    format!(
+        "the trip was cut short by gross slip at t = {t_s:.3} s (ratio {ratio:.4}) before it came to rest: it has \
+         no static state; the design's static checks take the rigid static tensions at the ends of its travel"
+    )
 }

@@ -7,6 +7,7 @@ use super::rules::{
     At, NON_NEGATIVE, POSITIVE, Rule, checked, direction_keyword, foreign_keys, in_range, optional, required,
     sorted_times,
 };
+use crate::design::damping::DEFAULT_ROPE_DAMPING_RATIO;
 use crate::design::{Direction, DutyCycleScene, EmergencyStop, Hoist, MotionStage};
 use crate::model::level4;
 use toml::Spanned;
@@ -29,7 +30,8 @@ pub(super) fn hoist(c: &mut Collector, h: &Spanned<RawHoist>) -> Option<Hoist> {
     let h = h.get_ref();
     let conveyance1_kg = required(c, at, "conveyance1_kg", &h.conveyance1_kg, POSITIVE);
     let conveyance2_kg = required(c, at, "conveyance2_kg", &h.conveyance2_kg, POSITIVE);
-    let rope_damping_ratio = optional(c, at, "rope_damping_ratio", &h.rope_damping_ratio, RATIO, 0.0);
+    let rope_damping_ratio =
+        optional(c, at, "rope_damping_ratio", &h.rope_damping_ratio, RATIO, DEFAULT_ROPE_DAMPING_RATIO);
     let tail_count = match &h.tail_count {
         None => Some(0),
         Some(n) if (0..=TAIL_COUNT_MAX).contains(n.get_ref()) => u32::try_from(*n.get_ref()).ok(),
@@ -81,6 +83,7 @@ pub(super) fn hoist(c: &mut Collector, h: &Spanned<RawHoist>) -> Option<Hoist> {
             conveyance1_kg: conveyance1_kg.unwrap_or(1.0),
             conveyance2_kg: conveyance2_kg.unwrap_or(1.0),
             rope_damping_ratio: rope_damping_ratio.unwrap_or(0.0),
+            rope_damping_given: h.rope_damping_ratio.is_some(),
             tail_count,
             tail_mass_per_m_kg: tail_mass_per_m_kg.unwrap_or(0.0),
             side1_length_m: s1,
@@ -96,6 +99,7 @@ pub(super) fn hoist(c: &mut Collector, h: &Spanned<RawHoist>) -> Option<Hoist> {
         conveyance1_kg: conveyance1_kg?,
         conveyance2_kg: conveyance2_kg?,
         rope_damping_ratio: rope_damping_ratio?,
+        rope_damping_given: h.rope_damping_ratio.is_some(),
         tail_count: tail_count?,
         tail_mass_per_m_kg: tail_mass_per_m_kg?,
         side1_length_m: side1_length_m?,

@@ -12,6 +12,7 @@ mod diag;
 mod document;
 mod history;
 mod hoist;
+pub mod inputs;
 pub mod keys;
 pub(crate) mod lift;
 mod lining;
@@ -204,7 +205,7 @@ pub fn parse(file: &str, text: &str) -> Result<Design, SheetError> {
     }
     let design = validate::design(&mut c, sections);
     match design {
-        Some(d) if c.diagnostics.is_empty() => Ok(d),
+        Some(d) if c.diagnostics.is_empty() => Ok(Design { inputs: inputs::of(text), ..d }),
         _ => Err(SheetError { diagnostics: c.diagnostics }),
     }
 }

@@ -102,6 +102,7 @@ pub fn design(c: &mut Collector, s: Sections) -> Option<Design> {
         load_cases: load_cases?,
         compare: compare?,
         ropes: ropes?,
+        inputs: Vec::new(),
     })
 }
 

@@ -13,6 +13,7 @@
 mod by_hand;
 mod checks;
 mod confirm;
+mod dynamic_front;
 mod figures;
 mod front;
 mod inputs;
@@ -130,6 +131,7 @@ pub fn render(ctx: &Context) -> std::io::Result<String> {
     front::verdict(&mut out, ctx);
     confirm::inputs_to_confirm(&mut out, ctx);
     confirm::informational_cases(&mut out, ctx);
+    dynamic_front::notes(&mut out, ctx);
     out.push_str("<nav><h2>Contents</h2><ol>");
     for (anchor, name, _) in SECTIONS {
         let _ = write!(out, "<li><a href=\"#{anchor}\">{}</a></li>", esc(name));

@@ -6,6 +6,7 @@ use super::Type::{
     Bool, Integer, Limit, Number, Numbers, Table as Sub, Tables, Text, TextOrDate, TextOrInteger, Texts,
 };
 use super::{Default as D, Key, Table};
+use crate::design::damping::DEFAULT_ROPE_DAMPING_RATIO;
 use crate::design::{DEFAULT_SAFETY_FACTOR_SOURCE, Phase, Requirements, STANDARD_GRAVITY_M_S2, compare_columns};
 use crate::sheet::hoist::{DEFAULT_TIME_STEP_S, MAX_STAGES, TAIL_COUNT_MAX};
 use crate::sheet::lining::DEFAULT_BENDING_RATIO;
@@ -383,8 +384,8 @@ fn hoist() -> Table {
         vec![
             Key::new("conveyance1_kg", Number, "kg", "side-1 conveyance without payload").required().positive(),
             Key::new("conveyance2_kg", Number, "kg", "counterweight or side-2 conveyance").required().positive(),
-            Key::new("rope_damping_ratio", Number, "", "damping ratio of the hoisting ropes' first longitudinal mode")
-                .default(D::Number(0.0))
+            Key::new("rope_damping_ratio", Number, "", "damping ratio of the hoisting ropes' first longitudinal mode (default: the reference hoist's rope model, Guo et al. 2020; 0 runs undamped and is warned)")
+                .default(D::Number(DEFAULT_ROPE_DAMPING_RATIO))
                 .non_negative()
                 .max(1.0, false),
             Key::new("tail_count", Integer, "", "tail (balance) ropes")

@@ -1,0 +1,98 @@
+//! What a duty cycle's verdict rests on beyond the checks: the rope damping ζ it ran with
+//! (the sheet's or the default, with the default's basis and its plausible range) and the
+//! warning of an undamped run; printed on the terminal under the checks and on page 1 of the
+//! report, and carried as `rope_damping` in summary.json (docs/report.md, "Rope damping").
+
+use super::check_text::Style;
+use crate::design::Design;
+use crate::design::damping::RopeDamping;
+use crate::design::inputs::InputSource;
+
+/// The sentence that states ζ and where it came from.
+pub fn damping_sentence(d: &RopeDamping) -> String {
+    let from = match d.source {
+        InputSource::Sheet => "as the sheet gives it".to_string(),
+        InputSource::Default | InputSource::RuleSet => {
+            format!("{} ([hoist] rope_damping_ratio not in the sheet)", d.source.label())
+        }
+    };
+    format!(
+        "Rope damping ζ = {} of the first longitudinal mode, {from}; plausible range {}–{}. Basis of the {}",
+        d.ratio, d.range_low, d.range_high, d.basis
+    )
+}
+
+/// The terminal's lines for a design's duty cycles (empty without any).
+pub fn terminal(design: &Design, run: &crate::run::RunResult, style: Style) -> String {
+    let Some(d) = design.duty_cycle_damping() else { return String::new() };
+    let mut out = String::new();
+    for w in why_dynamic_differs(run).into_iter().chain(verdict_flips(run)) {
+        out.push_str(&format!("\n{w}."));
+    }
+    out.push_str(&format!("\n{}.\n", damping_sentence(&d)));
+    if let Some(w) = d.warning {
+        let word = if style.color { "\x1b[1;33mwarning\x1b[0m" } else { "warning" };
+        out.push_str(&format!("{word}: [hoist] rope_damping_ratio = 0: {w}.\n"));
+    }
+    out
+}
+
+/// One sentence per duty cycle whose checks with the ropes' dynamics differ from rigid ropes by
+/// more than 1 % in tension difference: why (the excited mode, the amplification, the two values).
+pub fn why_dynamic_differs(run: &crate::run::RunResult) -> Vec<String> {
+    use crate::run::rigid_beside::FIRST_MODE;
+    let mut out = Vec::new();
+    for s in &run.scenes {
+        let worst = s
+            .classical
+            .checks
+            .iter()
+            .filter(|c| c.amplification.is_some_and(|a| (a - 1.0).abs() > 0.01))
+            .max_by(|a, b| a.amplification.unwrap_or(1.0).total_cmp(&b.amplification.unwrap_or(1.0)));
+        let Some(c) = worst else { continue };
+        let t = c.inputs.iter().find(|q| q.name == "t").map(|q| q.value);
+        let f = c.intermediates.iter().find(|q| q.name == FIRST_MODE).map(|q| q.value);
+        let (Some(t), Some(amp), Some(v), Some(rigid)) = (t, c.amplification, c.value, c.rigid_value) else { continue };
+        let mode = f.map_or_else(String::new, |f| format!(" in their {f:.2} Hz first longitudinal mode"));
+        out.push(format!(
+            "{}: the ropes ring{mode}, which each change of acceleration excites; at t = {t:.2} s the tension \
+             difference is {amp:.2} times the rigid ropes', so the {} is {v:.3} with the ropes' dynamics against \
+             {rigid:.3} on rigid ropes",
+            s.name, c.name
+        ));
+    }
+    out
+}
+
+/// One sentence per check whose verdict changes inside an uncertain input's range (its
+/// `sensitivity`): which scene, which check, the verdict as run and at each end.
+pub fn verdict_flips(run: &crate::run::RunResult) -> Vec<String> {
+    let mut out = Vec::new();
+    for s in &run.scenes {
+        for c in &s.classical.checks {
+            for r in c.sensitivity.iter().filter(|r| r.verdict_changes) {
+                out.push(format!(
+                    "{}: the {} is {} as run, but {} at {} = {} ({}) and {} at {} ({}); the verdict changes inside \
+                     the range of {}",
+                    s.name,
+                    c.name,
+                    c.verdict.label(),
+                    r.verdict_low.label(),
+                    r.parameter,
+                    r.low,
+                    value_text(r.value_low),
+                    r.verdict_high.label(),
+                    r.high,
+                    value_text(r.value_high),
+                    r.parameter
+                ));
+            }
+        }
+    }
+    out
+}
+
+/// A sensitivity end's value as text ("unbounded or not evaluated" without one).
+pub fn value_text(v: Option<f64>) -> String {
+    v.map_or_else(|| "unbounded or not evaluated".to_string(), |v| format!("{v:.3}"))
+}
