@@ -116,10 +116,10 @@ fn key_schema(key: &Key, ty: Type) -> Value {
         Type::Text => words(),
         Type::TextOrDate => json!({ "type": "string" }),
         Type::TextOrInteger => json!({ "type": ["string", "integer"] }),
-        Type::Numbers => items(number()),
+        Type::Numbers => items(with_unit(number())),
         Type::Texts => items(words()),
-        Type::NumberOrNumbers => json!({ "anyOf": [number(), items(number())] }),
-        Type::Limit => limit_schema(&key.range),
+        Type::NumberOrNumbers => json!({ "anyOf": [with_unit(number()), items(with_unit(number()))] }),
+        Type::Limit => limit_schema(with_unit(number())),
         Type::Table | Type::Tables => json!({ "type": "object" }),
     };
     add_description(&mut s, key);
@@ -143,8 +143,9 @@ fn range_schema(mut s: Value, r: &Range) -> Value {
 }
 
 /// A limit: a number in range, or `{ value = number in range, source = "text" }`.
-fn limit_schema(r: &Range) -> Value {
-    let number = range_schema(json!({ "type": "number" }), r);
+/// A limit: its number (`number`, with the key's range, and a text with a unit where the key
+/// has one) alone or as the `value` of `{ value, source }`.
+fn limit_schema(number: Value) -> Value {
     json!({ "anyOf": [number.clone(), {
         "$ref": "#/$defs/limit",
         "properties": { "value": number },
@@ -156,7 +157,7 @@ fn limit_def() -> Value {
         "type": "object",
         "description": "a limit with the source it rests on (a code clause, a data sheet)",
         "properties": {
-            "value": { "type": "number", "description": "the limit" },
+            "value": { "type": ["number", "string"], "description": "the limit (a text only with a unit, where the key has one)" },
             "source": { "type": "string", "minLength": 1, "pattern": "\\S", "description": "where the limit comes from" },
         },
         "required": ["value"],

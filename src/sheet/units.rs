@@ -177,30 +177,45 @@ fn walk(c: &mut Collector, tables: &[keys::Table], path: &str, table: &DeTable, 
     for (key, value) in table.iter() {
         let name = key.get_ref().as_ref();
         let sub = if path.is_empty() { name.to_string() } else { format!("{path}.{name}") };
-        match value.get_ref() {
-            DeValue::Table(t) => walk(c, tables, &sub, t, edits),
-            DeValue::Array(items) => {
+        let unit = registry.and_then(|t| t.key(name)).filter(|k| !k.unit.is_empty()).map(|k| (k.ty, k.unit));
+        match (value.get_ref(), unit) {
+            // A limit written `{ value = "50000 lbf", source = "…" }`.
+            (DeValue::Table(t), Some((Type::Limit, unit))) => {
+                let given = t.iter().find(|(k, _)| k.get_ref().as_ref() == "value").map(|(_, v)| v);
+                if let Some(v) = given
+                    && let DeValue::String(s) = v.get_ref()
+                {
+                    convert_at(c, (&sub, unit), s, v.span(), edits);
+                }
+            }
+            (DeValue::Table(t), _) => walk(c, tables, &sub, t, edits),
+            (DeValue::Array(items), unit) => {
+                // An array of numbers may hold texts with a unit: `payloads_kg = ["0 lb", "20000 lb"]`.
+                let numbers = unit.filter(|(ty, _)| matches!(ty, Type::Numbers | Type::NumberOrNumbers));
                 for item in items.iter() {
-                    if let DeValue::Table(t) = item.get_ref() {
-                        walk(c, tables, &sub, t, edits);
+                    match (item.get_ref(), numbers) {
+                        (DeValue::Table(t), _) => walk(c, tables, &sub, t, edits),
+                        (DeValue::String(s), Some((_, unit))) => convert_at(c, (&sub, unit), s, item.span(), edits),
+                        _ => {}
                     }
                 }
             }
-            DeValue::String(s) => {
-                let Some(k) = registry.and_then(|t| t.key(name)) else { continue };
-                if !matches!(k.ty, Type::Number | Type::NumberOrNumbers) || k.unit.is_empty() {
-                    continue;
-                }
-                let span = value.span();
-                match convert(s, k.unit) {
-                    Ok(v) => edits.push(Edit { span, value: format!("{v:?}"), failed: false }),
-                    Err(message) => {
-                        c.push(Some(span.clone()), None, &sub, message);
-                        edits.push(Edit { span, value: "nan".into(), failed: true });
-                    }
-                }
+            (DeValue::String(s), Some((Type::Number | Type::NumberOrNumbers | Type::Limit, unit))) => {
+                convert_at(c, (&sub, unit), s, value.span(), edits)
             }
             _ => {}
+        }
+    }
+}
+
+/// One text `s` of the key `key` (its sheet name and unit) at `span`: its value in the key's unit,
+/// or an error at the value.
+fn convert_at(c: &mut Collector, (key, unit): (&str, &str), s: &str, span: Range<usize>, edits: &mut Vec<Edit>) {
+    match convert(s, unit) {
+        Ok(v) => edits.push(Edit { span, value: format!("{v:?}"), failed: false }),
+        Err(message) => {
+            c.push(Some(span.clone()), None, key, message);
+            edits.push(Edit { span, value: "nan".into(), failed: true });
         }
     }
 }

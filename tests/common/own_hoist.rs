@@ -71,8 +71,15 @@ pub fn sheet(units: Units, edits: &[(&str, &str)], full_speed_s: f64, matrix: bo
     }
     out.push_str(&stages(full_speed_s));
     if matrix {
+        // In feet and pounds the payloads and a limit with a unit are texts too: 20 000 lb, and
+        // a certificate's 50 000 lbf of unbalanced load (an array item and a `{ value, source }`).
+        let (payloads, unbalanced) = match units {
+            Units::Si => (format!("[0.0, {PAYLOAD_KG:?}]"), format!("{:?}", 50_000.0 * LBF)),
+            Units::FootPound => ("[\"0 lb\", \"20000 lb\"]".to_string(), "\"50000 lbf\"".to_string()),
+        };
         out.push_str(&format!(
-            "[load_cases]\npayloads_kg = [0.0, {PAYLOAD_KG:?}]\nemergency_decel_m_s2 = 1.5\nrope_dynamics = []\n"
+            "[load_cases]\npayloads_kg = {payloads}\nemergency_decel_m_s2 = 1.5\nrope_dynamics = []\n\
+             [requirements]\nstatic_tension_difference_max_n = {{ value = {unbalanced}, source = \"the hoist's certificate\" }}\n"
         ));
     }
     out.push_str(scenes);
