@@ -230,9 +230,10 @@ const MIRROR_DEG: f64 = 1e-9;
 /// The same where m'v² rises beside zones at the limit: the repair of stuck rope put beyond the
 /// limit lays its new pieces from the end it works from, and its boundaries agree with the
 /// mirror's only to the repair's residue (measured: 2.0e-9° at t = 1.522 s of one history, a
-/// demarcation at 155.461194535°; and in a duty cycle with an emergency stop, μ 0.254, 13.8 t,
-/// a stop at 50.47 s braking at 0.8 m/s², 2.4e-9° at t = 5.8 s, at 172.598512481°); kept at
-/// the arcs' placement, 1e-6°, until the repair mirrors to round-off.
+/// demarcation at 155.461194535°; and in the reference hoist's duty cycle at μ 0.254 with
+/// 13.8 t, 2.4e-9° at t = 5.8 s, while accelerating, at 172.598512481° — with or without an
+/// emergency stop later in the trip); kept at the arcs' placement, 1e-6°, until the repair
+/// mirrors to round-off.
 const REPAIRED_DEG: f64 = 1e-6;
 
 /// Which of its row's demarcations the JDP is.
@@ -286,7 +287,7 @@ proptest! {
         let (_, samples) = duty_cycle_history(payload, None);
         let p = reference_wrap(mu);
         mirror_at_every_sample(p, &samples)?;
-        rows_mirror(p, &samples, Some(DUTY_ROW_STEP_S), MIRROR_DEG)?;
+        rows_mirror(p, &samples, Some(DUTY_ROW_STEP_S), REPAIRED_DEG)?;
     }
 
     /// The same with an emergency stop at 2–58 s braking at 0.8–4 m/s²: the ropes ring after the

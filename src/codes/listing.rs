@@ -47,12 +47,15 @@ pub const JUDGES: &[(&str, &str)] = &[
     ("tail_rope_safety_factor_min", "tail rope safety factor"),
     ("pulley_design_load_min_n", "friction wheel design load case"),
     ("dynamic_allowance_min", "the machine ratings' dynamic allowance"),
+    ("brake_holding_factor_min", "static holding factor of the brake"),
     ("lift_loading_factor", "lift traction cases (load factor)"),
     ("lift_traction_mu_loading", "lift traction, car loading"),
     ("lift_traction_mu_braking", "lift traction, emergency braking"),
     ("lift_traction_mu_stalled", "lift traction, car stalled"),
     ("lift_rope_safety_factor_min", "lift rope safety factor"),
     ("lift_d_ratio_min", "lift D/d"),
+    ("lift_rope_diameter_min_mm", "suspension rope nominal diameter"),
+    ("lift_groove_undercut_angle_max_deg", "lift groove angles (a sheet outside them is refused)"),
 ];
 
 /// The checks `set` judges, in the order of its limits.

@@ -54,26 +54,7 @@ pub(super) fn hoist(c: &mut Collector, h: &Spanned<RawHoist>) -> Option<Hoist> {
         Some(v) => checked(c, at, "tail_min_breaking_force_n", v, POSITIVE).map(Some),
         None => Some(None),
     };
-    let stages: Option<Vec<MotionStage>> = match &h.stage {
-        None => {
-            c.push_at(
-                Some(span.clone()),
-                None,
-                "hoist.stage",
-                "missing; the motion profile is a list of [[hoist.stage]] tables (duration_s, accel_m_s2)",
-            );
-            None
-        }
-        Some(list) if list.get_ref().is_empty() || list.get_ref().len() > MAX_STAGES => {
-            c.push(Some(list.span()), None, "hoist.stage", format!("expected 1 to {MAX_STAGES} stages"));
-            None
-        }
-        Some(list) => {
-            let stages: Vec<Option<MotionStage>> =
-                list.get_ref().iter().enumerate().map(|(i, s)| stage(c, i, s)).collect();
-            stages.into_iter().collect()
-        }
-    };
+    let stages = stage_list(c, &span, &h.stage);
     // The lengths against the travel whenever they and the stages are valid, whatever the
     // masses: every error of the section in one run.
     if let (Some(tail_count), Some(s1), Some(s2), Some(t1), Some(t2), Some(stages)) =
@@ -110,6 +91,34 @@ pub(super) fn hoist(c: &mut Collector, h: &Spanned<RawHoist>) -> Option<Hoist> {
         stages: stages?,
     };
     Some(hoist)
+}
+
+/// The motion profile's `[[hoist.stage]]` tables, each validated (`span`: the `[hoist]` table's).
+fn stage_list(
+    c: &mut Collector,
+    span: &std::ops::Range<usize>,
+    list: &Option<Spanned<Vec<Spanned<RawStage>>>>,
+) -> Option<Vec<MotionStage>> {
+    match list {
+        None => {
+            c.push_at(
+                Some(span.clone()),
+                None,
+                "hoist.stage",
+                "missing; the motion profile is a list of [[hoist.stage]] tables (duration_s, accel_m_s2)",
+            );
+            None
+        }
+        Some(list) if list.get_ref().is_empty() || list.get_ref().len() > MAX_STAGES => {
+            c.push(Some(list.span()), None, "hoist.stage", format!("expected 1 to {MAX_STAGES} stages"));
+            None
+        }
+        Some(list) => {
+            let stages: Vec<Option<MotionStage>> =
+                list.get_ref().iter().enumerate().map(|(i, s)| stage(c, i, s)).collect();
+            stages.into_iter().collect()
+        }
+    }
 }
 
 fn stage(c: &mut Collector, i: usize, s: &Spanned<RawStage>) -> Option<MotionStage> {

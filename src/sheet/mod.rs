@@ -143,51 +143,61 @@ pub fn parse(file: &str, text: &str) -> Result<Design, SheetError> {
             return Err(c.into_error());
         }
     };
+    let sections = read_sections(&mut c, root);
+    let design = validate::design(&mut c, sections);
+    match design {
+        Some(d) if c.diagnostics.is_empty() => Ok(Design { inputs: inputs::of(text), ..d }),
+        _ => Err(SheetError { diagnostics: c.diagnostics }),
+    }
+}
+
+/// The sheet's top-level keys, each section deserialized (its errors recorded in `c`).
+fn read_sections(c: &mut Collector, root: Spanned<DeTable<'_>>) -> validate::Sections {
     let doc_span = root.span();
     let mut sections = validate::Sections { doc_span, ..Default::default() };
     for (key, value) in root.into_inner() {
         let key_span = key.span();
         match key.get_ref().as_ref() {
-            "title" => sections.title = section(&mut c, value, "title"),
-            "g_m_s2" => sections.g_m_s2 = section(&mut c, value, "g_m_s2"),
+            "title" => sections.title = section(c, value, "title"),
+            "g_m_s2" => sections.g_m_s2 = section(c, value, "g_m_s2"),
             "pulley" => {
                 sections.present.push("pulley");
-                sections.pulley = section(&mut c, value, "pulley");
+                sections.pulley = section(c, value, "pulley");
             }
             "rope" => {
                 sections.present.push("rope");
-                sections.rope = section(&mut c, value, "rope");
+                sections.rope = section(c, value, "rope");
             }
-            "requirements" => sections.requirements = section(&mut c, value, "requirements"),
-            "document" => sections.document = section(&mut c, value, "document"),
+            "requirements" => sections.requirements = section(c, value, "requirements"),
+            "document" => sections.document = section(c, value, "document"),
             "hoist" => {
                 sections.present.push("hoist");
-                sections.hoist = section(&mut c, value, "hoist");
+                sections.hoist = section(c, value, "hoist");
             }
-            "scene" => sections.scenes = Some(scene_tables(&mut c, value)),
+            "scene" => sections.scenes = Some(scene_tables(c, value)),
             "lining" => {
                 sections.present.push("lining");
-                sections.lining = section(&mut c, value, "lining");
+                sections.lining = section(c, value, "lining");
             }
             "brake" => {
                 sections.present.push("brake");
-                sections.brake = section(&mut c, value, "brake");
+                sections.brake = section(c, value, "brake");
             }
             "drive" => {
                 sections.present.push("drive");
-                sections.drive = section(&mut c, value, "drive");
+                sections.drive = section(c, value, "drive");
             }
             "compare" => {
                 sections.present.push("compare");
-                sections.compare = section(&mut c, value, "compare");
+                sections.compare = section(c, value, "compare");
             }
             "ropes" => {
                 sections.present.push("ropes");
-                sections.ropes = section(&mut c, value, "ropes");
+                sections.ropes = section(c, value, "ropes");
             }
             "load_cases" => {
                 sections.present.push("load_cases");
-                sections.load_cases = section(&mut c, value, "load_cases");
+                sections.load_cases = section(c, value, "load_cases");
             }
             "lift" => c.push(
                 Some(key_span),
@@ -203,11 +213,7 @@ pub fn parse(file: &str, text: &str) -> Result<Design, SheetError> {
             }
         }
     }
-    let design = validate::design(&mut c, sections);
-    match design {
-        Some(d) if c.diagnostics.is_empty() => Ok(Design { inputs: inputs::of(text), ..d }),
-        _ => Err(SheetError { diagnostics: c.diagnostics }),
-    }
+    sections
 }
 
 /// Deserializes one section, recording its error.

@@ -3,6 +3,7 @@
 //! (`docs/sheet.md`) and the JSON Schema (`wrapcalc schema`) are generated from this registry,
 //! and tests hold it equal to what the parser accepts.
 
+mod drive;
 mod lift;
 mod ropes;
 mod scene;

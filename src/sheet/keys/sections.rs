@@ -1,6 +1,6 @@
 //! The registry's sections other than `[[scene]]`: the top level, `[pulley]`, `[pulley.guide]`,
-//! `[rope]`, `[requirements]`, `[document]`, `[brake]`, `[lining]`, `[hoist]`,
-//! `[[hoist.stage]]`, `[load_cases]` and `[[compare]]`.
+//! `[rope]`, `[requirements]`, `[document]`, `[lining]`, `[hoist]`, `[[hoist.stage]]`,
+//! `[load_cases]` and `[[compare]]` (`[brake]` and `[drive]`: `drive.rs`).
 
 use super::Type::{
     Bool, Integer, Limit, Number, Numbers, Table as Sub, Tables, Text, TextOrDate, TextOrInteger, Texts,
@@ -13,7 +13,7 @@ use crate::sheet::lining::DEFAULT_BENDING_RATIO;
 use crate::sheet::load_cases::{DEFAULT_POSITIONS, DEFAULT_STOPS, MAX_ENTRIES};
 use crate::sheet::rules::{MU_MAX, ROPE_COUNT_MAX, WRAP_ANGLE_MAX_DEG};
 
-fn table(path: &'static str, array: bool, meaning: &'static str, keys: Vec<Key>) -> Table {
+pub(super) fn table(path: &'static str, array: bool, meaning: &'static str, keys: Vec<Key>) -> Table {
     Table { path, array, meaning, keys, one_of: Vec::new() }
 }
 
@@ -26,8 +26,8 @@ pub fn tables() -> Vec<Table> {
         rope(),
         requirements(),
         document(),
-        brake(),
-        drive(),
+        super::drive::brake(),
+        super::drive::drive(),
         lining(),
         hoist(),
         stage(),
@@ -287,58 +287,6 @@ fn document() -> Table {
             Key::new("date", TextOrDate, "", "date of issue, as written (a TOML date or a text)"),
             Key::new("appendix_figures", Bool, "", "whether report.html ends with the appendix of further figures")
                 .default(D::Bool(true)),
-        ],
-    )
-}
-
-fn brake() -> Table {
-    let mut t = table(
-        "brake",
-        false,
-        "The safety brake that stops the pulley as a body in an emergency.",
-        vec![
-            Key::new("force_n", Number, "N", "full brake force at the friction pulley's rim …")
-                .when("required (or torque_n_m)")
-                .positive()
-                .note("not with torque_n_m"),
-            Key::new("torque_n_m", Number, "N·m", "… or the brake torque about its axis, F_b = M_b/R").positive(),
-            Key::new("idle_time_s", Number, "s", "from the trip to the first brake force").required().non_negative(),
-            Key::new("build_up_s", Number, "s", "linear rise to the full force").required().non_negative(),
-        ],
-    );
-    t.one_of = vec![vec!["force_n"], vec!["torque_n_m"]];
-    t
-}
-
-fn drive() -> Table {
-    use crate::design::drive::{DEFAULT_EFFICIENCY, DEFAULT_REST_TIME_S};
-    table(
-        "drive",
-        false,
-        "The drive: what the duty cycles' shaft torque and power are computed with and checked against. \
-         Optional: without it torque and power are still computed, and the motor's checks have no requirement.",
-        vec![
-            Key::new(
-                "inertia_kg_m2",
-                Number,
-                "kg·m²",
-                "rotating parts at the pulley shaft: motor rotor, gear, friction pulley",
-            )
-            .default(D::Described("[pulley]'s inertia, else 0".into()))
-            .non_negative()
-            .note("not with [pulley] inertia_kg_m2 or equivalent_mass_kg; the guide sheave's is [pulley.guide]'s"),
-            Key::new("efficiency", Number, "", "mechanical efficiency η motor → rope: motoring P/η, regenerating P·η")
-                .default(D::Number(DEFAULT_EFFICIENCY))
-                .positive()
-                .max(1.0, true),
-            Key::new("rated_power_kw", Number, "kW", "the motor's rated (continuous) power").positive(),
-            Key::new("rated_torque_n_m", Number, "N·m", "the motor's rated torque referred to the pulley shaft")
-                .positive(),
-            Key::new("overload_factor", Number, "", "the motor's short-time overload on its rated torque")
-                .min(1.0, true),
-            Key::new("rest_time_s", Number, "s", "at rest between trips (loading, unloading): counts in the RMS")
-                .default(D::Number(DEFAULT_REST_TIME_S))
-                .non_negative(),
         ],
     )
 }
