@@ -5,8 +5,8 @@
 
 use super::output::{LiftRun, LiftSummary};
 use super::{Lift, RULE_SET, verdict, workbook};
-use crate::check::{Check, Verdict};
-use crate::report::html::{esc, style::CSS};
+use crate::check::Check;
+use crate::report::html::{esc, style::CSS, verdict_html};
 use crate::report::verdict::Entry;
 use std::fmt::Write as _;
 
@@ -35,17 +35,6 @@ pub fn render(lift: &Lift, run: &LiftRun, plots: bool) -> String {
     cases(&mut out, &summary, plots);
     out.push_str("</body></html>\n");
     out
-}
-
-/// A typed verdict as a labelled span (the report's stylesheet colours it).
-fn verdict_span(v: Verdict) -> String {
-    let class = match v {
-        Verdict::Pass => "pass",
-        Verdict::Fail => "fail",
-        Verdict::Warning => "warning",
-        _ => "note",
-    };
-    format!("<span class=\"verdict {class}\">{}</span>", v.label())
 }
 
 fn margin(m: Option<f64>) -> String {
@@ -79,7 +68,7 @@ fn front(out: &mut String, s: &LiftSummary, run: &LiftRun) {
             g.value.map_or_else(|| "—".into(), crate::report::check_text::number),
             g.limit.map_or_else(|| "none".into(), crate::report::check_text::number),
             margin(g.margin),
-            verdict_span(g.verdict),
+            verdict_html(g.verdict),
             esc(g.governing_case.as_deref().unwrap_or("the lift"))
         );
     }
@@ -91,7 +80,7 @@ fn front(out: &mut String, s: &LiftSummary, run: &LiftRun) {
                 esc(&e.check),
                 esc(&value_limit(e)),
                 margin(e.margin),
-                verdict_span(e.verdict),
+                verdict_html(e.verdict),
                 esc(&e.explanation)
             );
         }

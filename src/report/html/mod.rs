@@ -22,6 +22,8 @@ mod sections;
 mod software;
 pub(crate) mod style;
 
+pub use checks::verdict_html;
+
 use super::accuracy::Evidence;
 use crate::design::Design;
 use crate::run::RunResult;
