@@ -16,6 +16,7 @@
 //! trips (`[drive] rest_time_s`) by the brake, with no motor torque: it counts in the RMS as zero.
 
 pub mod checks;
+pub mod energy;
 mod series;
 
 pub use series::{Basis, DriveRow, DriveSeries, DriveSummary, drive_series};

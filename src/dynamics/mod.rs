@@ -69,8 +69,8 @@ mod sweep;
 pub use braked::{PulleyBody, braked_stop};
 pub use profile::{AT_REST_M_S, Kinematics, MotionProfile, Stage};
 pub use simulate::{
-    Prefix, STREAM_CHUNK, Streamed, recorded_times, simulate, simulate_prefix, simulate_resumable, simulate_streamed,
-    simulate_with,
+    LedgerRow, Prefix, STREAM_CHUNK, Streamed, energy_ledger, recorded_times, simulate, simulate_prefix,
+    simulate_resumable, simulate_streamed, simulate_with,
 };
 pub use state::{Checkpoint, DynSample, SimOptions};
 

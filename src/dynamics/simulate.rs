@@ -1,5 +1,8 @@
 //! Time integration of both sides over a motion profile.
 
+mod ledger;
+pub use ledger::{LedgerRow, energy_ledger};
+
 use super::rope::SideState;
 use super::state::{
     Checkpoint, DynSample, Side2, SimOptions, coeffs, coeffs_within, sample_of, step_sides_to, step_time_s,
