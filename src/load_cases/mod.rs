@@ -105,6 +105,9 @@ pub struct CaseResult {
     pub checks: Vec<Check>,
     /// Whether every check of the case passes.
     pub checks_pass: bool,
+    /// The drive and the brake at the case (shaft torque, static out-of-balance torque, holding
+    /// factor, the brake window's torques): [`crate::drive::cases`].
+    pub drive: Option<crate::drive::cases::CaseDrive>,
 }
 
 /// A case's checks in summary.json: `{name, value, limit, verdict}` each.
@@ -172,6 +175,9 @@ pub fn evaluate(design: &Design, rope_dynamics: bool) -> Option<Result<MatrixRes
             let (dynamic, n, integrated) = dynamic::cases(design, hoist, cases, &prof)?;
             results.extend(dynamic);
             (runs, steps) = (n, integrated);
+        }
+        for c in &mut results {
+            c.drive = Some(crate::drive::cases::case_drive(design, c));
         }
         let checks = govern::governing(&results);
         let checks_pass = crate::check::all_pass(&checks);

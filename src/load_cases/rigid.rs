@@ -230,6 +230,7 @@ pub fn from_states(
         slip_onset: None,
         checks_pass: crate::check::all_pass(&checks),
         checks,
+        drive: None,
     }
 }
 

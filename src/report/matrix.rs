@@ -3,6 +3,7 @@
 
 use super::check_text::{Style, render_check};
 use crate::check::Verdict;
+use crate::drive::cases::CaseDrive;
 use crate::load_cases::{CaseResult, MatrixResult, Position};
 use crate::run::DesignResult;
 use std::fmt::Write;
@@ -120,6 +121,9 @@ pub enum Field {
     /// A safety factor of balanced tensions: empty in matrix.csv (its `balanced` column says
     /// why), "∞ (balanced)" in the workbook.
     Balanced,
+    /// A number with the workbook's live formula over the row's own cells (`{header}`: the cell
+    /// of that column in the same row); matrix.csv writes the number.
+    Live(f64, String),
 }
 
 impl Field {
@@ -140,7 +144,7 @@ impl Field {
     pub fn csv_text(&self) -> String {
         match self {
             Field::Text(s) => s.clone(),
-            Field::Number(v) => v.to_string(),
+            Field::Number(v) | Field::Live(v, _) => v.to_string(),
             Field::Int(v) => v.to_string(),
             Field::Bool(v) => v.to_string(),
             Field::Missing | Field::Balanced => String::new(),
@@ -194,7 +198,28 @@ pub const CASE_COLUMNS: &[CaseColumn] = &[
     CaseColumn { header: "slip_onset_t_s", field: |c| Field::opt(c.slip_onset.map(|o| o.t_s)) },
     CaseColumn { header: "checks_pass", field: |c| Field::Bool(c.checks_pass) },
     CaseColumn { header: "balanced", field: |c| Field::Bool(c.balanced) },
+    CaseColumn { header: "static_t1_n", field: |c| Field::Number(c.static_t1_n) },
+    CaseColumn { header: "static_t2_n", field: |c| Field::Number(c.static_t2_n) },
+    CaseColumn { header: "shaft_torque_n_m", field: |c| drive_field(c, 0, |d| Some(d.shaft_torque_n_m)) },
+    CaseColumn {
+        header: "static_unbalance_torque_n_m",
+        field: |c| drive_field(c, 1, |d| Some(d.static_unbalance_torque_n_m)),
+    },
+    CaseColumn { header: "brake_holding_factor", field: |c| drive_field(c, 2, |d| d.brake_holding_factor) },
+    CaseColumn { header: "brake_torque_min_n_m", field: |c| drive_field(c, 3, |d| d.brake_torque_min_n_m) },
+    CaseColumn { header: "brake_torque_max_n_m", field: |c| drive_field(c, 4, |d| d.brake_torque_max_n_m) },
 ];
+
+/// A drive column of a case ([`crate::drive::cases`]): its value with the workbook's formula
+/// `which` of [`crate::drive::cases::formulas`]; empty where it does not apply.
+fn drive_field(c: &CaseResult, which: usize, value: fn(&CaseDrive) -> Option<f64>) -> Field {
+    let Some(d) = &c.drive else { return Field::Missing };
+    match (value(d), crate::drive::cases::formulas(d)[which].clone()) {
+        (Some(v), Some(f)) => Field::Live(v, f),
+        (Some(v), None) => Field::Number(v),
+        (None, _) => Field::Missing,
+    }
+}
 
 /// matrix.csv: one row per case, the columns of [`CASE_COLUMNS`].
 pub fn write_matrix_csv<W: io::Write>(out: W, m: &MatrixResult) -> csv::Result<()> {

@@ -310,8 +310,10 @@ fn write_cases(sheet: &mut Worksheet, heading: &str, run: &RunResult) -> Result<
     };
     start_sheet(sheet, CASES_SHEET, [heading, what], CASE_COLUMNS.iter().map(|c| (c.header, 14.0)))?;
     for (i, case) in matrix.iter().flat_map(|m| &m.cases).enumerate() {
+        let row = HEADER_ROW + 1 + i as u32;
         for (col, c) in CASE_COLUMNS.iter().enumerate() {
             let cell = match (c.field)(case) {
+                Field::Live(v, f) => Cell::Formula(Computed { cells: case_cells(&f, row), symbols: f, result: v }),
                 Field::Text(s) => Cell::Text(s),
                 Field::Number(v) => Cell::Number(v),
                 Field::Int(v) => Cell::Number(v as f64),
@@ -319,8 +321,17 @@ fn write_cases(sheet: &mut Worksheet, heading: &str, run: &RunResult) -> Result<
                 Field::Missing => Cell::Empty,
                 Field::Balanced => text(super::matrix::BALANCED),
             };
-            write_cell(sheet, HEADER_ROW + 1 + i as u32, col as u16, cell)?;
+            write_cell(sheet, row, col as u16, cell)?;
         }
     }
     Ok(())
+}
+
+/// A load case's formula with each `{header}` replaced by the cell of that column in `row`.
+fn case_cells(formula: &str, row: u32) -> String {
+    let mut out = format!("={formula}");
+    for (col, c) in CASE_COLUMNS.iter().enumerate() {
+        out = out.replace(&format!("{{{}}}", c.header), &row_col_to_cell(row, col as u16));
+    }
+    out
 }
