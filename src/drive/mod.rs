@@ -20,7 +20,7 @@ pub mod checks;
 pub mod energy;
 mod series;
 
-pub use series::{Basis, DriveRow, DriveSeries, DriveSummary, drive_series};
+pub use series::{Basis, DriveRow, DriveSeries, DriveSummary, Summing, Thinning, drive_row, drive_series};
 
 use crate::design::drive::{DEFAULT_EFFICIENCY, DEFAULT_REST_TIME_S};
 use crate::design::{Design, InertiaSource};
@@ -111,15 +111,39 @@ pub fn scene_drive(
     let (samples, kinematics) = (&samples[..keep], &kinematics[..keep.min(kinematics.len())]);
     let inputs = DriveInputs::of(design);
     let n = f64::from(design.rope.count);
-    let kin: Vec<(f64, crate::dynamics::Kinematics)> =
-        samples.iter().zip(kinematics).map(|(s, k)| (s.t_s, *k)).collect();
-    let rigid_samples = crate::model::stop::rigid_samples(design, params, &kin)?;
-    let mut rigid = drive_series(&inputs, n, &rigid_samples, kinematics, Basis::RigidRopes, payload_kg);
-    let mut dynamic = dynamic.then(|| drive_series(&inputs, n, samples, kinematics, Basis::RopeDynamics, payload_kg));
-    // Keep the rows drive.csv writes (the summaries are made): both series at the same instants.
-    let keep = series::thinned(&rigid.rows, cycle.output_step_s);
-    for s in std::iter::once(&mut rigid).chain(dynamic.as_mut()) {
-        s.rows = keep.iter().filter_map(|&i| s.rows.get(i).copied()).collect();
+    // The samples come from a run of these parameters: checked once, not at every sample.
+    params.validate()?;
+    let guide = design.guide_mass_kg();
+    // One pass over the samples: both series' rows, their sums, and the rows drive.csv keeps
+    // (one every output step, at the same instants in both).
+    let capacity = (samples.last().map_or(0.0, |s| s.t_s) / cycle.output_step_s.max(1e-3)) as usize + 2;
+    let mut rigid = Summing::new(Basis::RigidRopes, capacity);
+    let mut ropes = dynamic.then(|| Summing::new(Basis::RopeDynamics, capacity));
+    let mut thinning = Thinning::new(cycle.output_step_s);
+    for (i, (s, k)) in samples.iter().zip(kinematics).enumerate() {
+        let keep = thinning.keep(s.t_s, i + 1 == kinematics.len());
+        let tensions = rigid_tensions_n(params, guide, k);
+        rigid.push(drive_row(&inputs, n, s.t_s, tensions, k), keep);
+        if let Some(sum) = ropes.as_mut() {
+            sum.push(drive_row(&inputs, n, s.t_s, (s.t1_n, s.t2_n), k), keep);
+        }
     }
+    let (rest, payload) = (inputs.rest_time_s, payload_kg);
+    let (rigid, dynamic) = (rigid.finish(rest, payload), ropes.map(|s| s.finish(rest, payload)));
     Ok(SceneDrive { inputs, dynamic, rigid, payload_kg, output_step_s: cycle.output_step_s })
+}
+
+/// [`crate::model::stop::rigid_tensions_n`] at a sample of a run of `params` (validated, its
+/// lengths checked by the run), without checking them again: the same operations in the same
+/// order, `T_s = (M_s + ρL_s)·g/n` at rest, then `T1 = T1s(g + a)/g + m_g1·a/n`,
+/// `T2 = T2s(g − a)/g − m_g2·a/n`.
+fn rigid_tensions_n(
+    p: &crate::dynamics::HoistParams,
+    [g1, g2]: [f64; 2],
+    k: &crate::dynamics::Kinematics,
+) -> (f64, f64) {
+    let (g, n, a) = (p.g_m_s2, p.ropes as f64, k.accel_m_s2);
+    let at_rest = |side| (p.end_mass_kg(side, k.x_m) + p.rho_kg_m() * p.hanging_length_m(side, k.x_m)) * g / n;
+    let (t1s, t2s) = (at_rest(crate::design::Side::One), at_rest(crate::design::Side::Two));
+    (t1s * (g + a) / g + g1 * a / n, t2s * (g - a) / g - g2 * a / n)
 }

@@ -68,18 +68,27 @@ pub struct DriveSummary {
     pub braking_peak: Option<DriveRow>,
 }
 
-/// The rows kept of `rows`: one every `step_s` (the first at or after each step, each exact) and
-/// the last; the summary is made of every row before.
-pub fn thinned(rows: &[DriveRow], step_s: f64) -> Vec<usize> {
-    let mut keep = Vec::new();
-    let mut next = f64::NEG_INFINITY;
-    for (i, r) in rows.iter().enumerate() {
-        if r.t_s >= next - 1e-9 || i + 1 == rows.len() {
-            keep.push(i);
-            next = r.t_s + step_s;
-        }
+/// Which rows a series keeps: one every `step_s` (the first at or after each step, each exact)
+/// and the last; the summary is made of every row.
+pub struct Thinning {
+    step_s: f64,
+    next_s: f64,
+}
+
+impl Thinning {
+    /// Rows `step_s` apart.
+    pub fn new(step_s: f64) -> Self {
+        Self { step_s, next_s: f64::NEG_INFINITY }
     }
-    keep
+
+    /// Whether the row at `t_s` is kept (`last`: the series' last row).
+    pub fn keep(&mut self, t_s: f64, last: bool) -> bool {
+        let keep = t_s >= self.next_s - 1e-9 || last;
+        if keep {
+            self.next_s = t_s + self.step_s;
+        }
+        keep
+    }
 }
 
 /// The drive's rows of a trip and their summary.
@@ -94,7 +103,31 @@ pub struct DriveSeries {
     pub summary: DriveSummary,
 }
 
+/// The drive at one instant: the tensions per rope `t1_n`, `t2_n` at the friction pulley and the
+/// pulley's kinematics `k`; `ropes` n.
+pub fn drive_row(inputs: &DriveInputs, ropes: f64, t_s: f64, (t1_n, t2_n): (f64, f64), k: &Kinematics) -> DriveRow {
+    let (r, eta) = (inputs.radius_m, inputs.efficiency);
+    let torque = ropes * (t1_n - t2_n) * r + inputs.pulley_body_kg * k.accel_m_s2 * r;
+    // At standstill nothing moves: no power flows and none is lost.
+    let v = if k.speed_m_s.abs() <= AT_REST_M_S { 0.0 } else { k.speed_m_s };
+    let motor_torque = match torque * v {
+        p if p > 0.0 => torque / eta,
+        p if p < 0.0 => torque * eta,
+        _ => torque,
+    };
+    let omega = v / r;
+    DriveRow {
+        t_s,
+        speed_m_s: v,
+        torque_n_m: torque,
+        power_kw: torque * omega / 1e3,
+        motor_torque_n_m: motor_torque,
+        motor_power_kw: motor_torque * omega / 1e3,
+    }
+}
+
 /// The drive's rows of a trip: `samples` (tensions per rope, speed) at `kinematics`; `ropes` n.
+/// Every row is kept.
 pub fn drive_series(
     inputs: &DriveInputs,
     ropes: f64,
@@ -103,74 +136,103 @@ pub fn drive_series(
     basis: Basis,
     payload_kg: f64,
 ) -> DriveSeries {
-    let (r, eta) = (inputs.radius_m, inputs.efficiency);
-    let rows: Vec<DriveRow> = samples
-        .iter()
-        .zip(kinematics)
-        .map(|(s, k)| {
-            let torque = ropes * (s.t1_n - s.t2_n) * r + inputs.pulley_body_kg * k.accel_m_s2 * r;
-            // At standstill nothing moves: no power flows and none is lost.
-            let v = if k.speed_m_s.abs() <= AT_REST_M_S { 0.0 } else { k.speed_m_s };
-            let motor_torque = match torque * v {
-                p if p > 0.0 => torque / eta,
-                p if p < 0.0 => torque * eta,
-                _ => torque,
-            };
-            let omega = v / r;
-            DriveRow {
-                t_s: s.t_s,
-                speed_m_s: v,
-                torque_n_m: torque,
-                power_kw: torque * omega / 1e3,
-                motor_torque_n_m: motor_torque,
-                motor_power_kw: motor_torque * omega / 1e3,
-            }
-        })
-        .collect();
-    let summary = summarize(&rows, inputs.rest_time_s, payload_kg);
-    DriveSeries { basis, rows, summary }
+    let mut sum = Summing::new(basis, samples.len());
+    for (s, k) in samples.iter().zip(kinematics) {
+        sum.push(drive_row(inputs, ropes, s.t_s, (s.t1_n, s.t2_n), k), true);
+    }
+    sum.finish(inputs.rest_time_s, payload_kg)
 }
 
-/// `∫ f dt` and `∫ f² dt` of the piecewise-linear interpolation of `f` between rows (exact for
-/// it: `h(f_a + f_b)/2` and `h(f_a² + f_a f_b + f_b²)/3` on each interval).
-fn integrals(rows: &[DriveRow], f: impl Fn(&DriveRow) -> f64) -> (f64, f64) {
-    rows.windows(2).fold((0.0, 0.0), |(i1, i2), w| {
-        let (a, b, h) = (f(&w[0]), f(&w[1]), w[1].t_s - w[0].t_s);
-        (i1 + 0.5 * h * (a + b), i2 + h * (a * a + a * b + b * b) / 3.0)
-    })
+/// A series summed as its rows come, in their order: the integrals of the piecewise-linear
+/// interpolation between rows (exact for it: `h(f_a + f_b)/2` and `h(f_a² + f_a f_b + f_b²)/3` on
+/// each interval), the peaks and their rows; only the rows asked for are kept.
+pub struct Summing {
+    basis: Basis,
+    rows: Vec<DriveRow>,
+    first: Option<DriveRow>,
+    last: Option<DriveRow>,
+    /// `∫M_m² dt`, `∫P_m dt`, `∫P_m² dt`, `∫P dt` (shaft).
+    integrals: [f64; 4],
+    /// Largest |M_m|, |M_m| motoring, |M_m| braking, P_m, −P_m.
+    peaks: [f64; 5],
+    motoring_peak: Option<DriveRow>,
+    braking_peak: Option<DriveRow>,
 }
 
-fn summarize(rows: &[DriveRow], rest_time_s: f64, payload_kg: f64) -> DriveSummary {
-    let max = |f: &dyn Fn(&DriveRow) -> f64| rows.iter().map(f).fold(0.0_f64, f64::max);
-    let motoring = |r: &DriveRow| r.torque_n_m * r.speed_m_s >= 0.0;
-    let trip_s = match (rows.first(), rows.last()) {
-        (Some(a), Some(b)) => b.t_s - a.t_s,
-        _ => 0.0,
-    };
-    let cycle_s = trip_s + rest_time_s;
-    let rms = |i2: f64| if cycle_s > 0.0 { (i2 / cycle_s).sqrt() } else { 0.0 };
-    let (_, torque2) = integrals(rows, |r| r.motor_torque_n_m);
-    let (motor_kws, power2) = integrals(rows, |r| r.motor_power_kw);
-    let (shaft_kws, _) = integrals(rows, |r| r.power_kw);
-    let energy_kwh = shaft_kws / 3600.0;
-    let peak_row = |m: bool| {
-        let class = rows.iter().filter(|r| motoring(r) == m);
-        class.max_by(|a, b| a.motor_torque_n_m.abs().total_cmp(&b.motor_torque_n_m.abs())).copied()
-    };
-    DriveSummary {
-        motoring_peak: peak_row(true),
-        braking_peak: peak_row(false),
-        peak_torque_n_m: max(&|r| r.motor_torque_n_m.abs()),
-        peak_motoring_torque_n_m: max(&|r| if motoring(r) { r.motor_torque_n_m.abs() } else { 0.0 }),
-        peak_braking_torque_n_m: max(&|r| if motoring(r) { 0.0 } else { r.motor_torque_n_m.abs() }),
-        rms_torque_n_m: rms(torque2),
-        peak_power_kw: max(&|r| r.motor_power_kw),
-        peak_regen_power_kw: max(&|r| -r.motor_power_kw),
-        rms_power_kw: rms(power2),
-        energy_kwh,
-        motor_energy_kwh: motor_kws / 3600.0,
-        energy_kwh_per_t: (payload_kg > 0.0).then(|| energy_kwh / (payload_kg / 1e3)),
-        trip_s,
-        rest_time_s,
+impl Summing {
+    /// An empty series with room for `capacity` kept rows.
+    pub fn new(basis: Basis, capacity: usize) -> Self {
+        Self {
+            basis,
+            rows: Vec::with_capacity(capacity),
+            first: None,
+            last: None,
+            integrals: [0.0; 4],
+            peaks: [0.0; 5],
+            motoring_peak: None,
+            braking_peak: None,
+        }
+    }
+
+    /// Adds the next row; `keep`: it is one of the rows the series keeps.
+    pub fn push(&mut self, row: DriveRow, keep: bool) {
+        if let Some(prev) = self.last {
+            let h = row.t_s - prev.t_s;
+            let lin = |a: f64, b: f64| 0.5 * h * (a + b);
+            let sq = |a: f64, b: f64| h * (a * a + a * b + b * b) / 3.0;
+            let [t2, pm, p2, ps] = &mut self.integrals;
+            *t2 += sq(prev.motor_torque_n_m, row.motor_torque_n_m);
+            *pm += lin(prev.motor_power_kw, row.motor_power_kw);
+            *p2 += sq(prev.motor_power_kw, row.motor_power_kw);
+            *ps += lin(prev.power_kw, row.power_kw);
+        }
+        let motoring = row.torque_n_m * row.speed_m_s >= 0.0;
+        let m = row.motor_torque_n_m.abs();
+        let [all, mot, brk, pw, regen] = &mut self.peaks;
+        *all = all.max(m);
+        *mot = mot.max(if motoring { m } else { 0.0 });
+        *brk = brk.max(if motoring { 0.0 } else { m });
+        *pw = pw.max(row.motor_power_kw);
+        *regen = regen.max(-row.motor_power_kw);
+        // The last of equal peaks, as `Iterator::max_by` takes it.
+        let best = if motoring { &mut self.motoring_peak } else { &mut self.braking_peak };
+        if best.is_none_or(|b| m.total_cmp(&b.motor_torque_n_m.abs()).is_ge()) {
+            *best = Some(row);
+        }
+        self.first.get_or_insert(row);
+        self.last = Some(row);
+        if keep {
+            self.rows.push(row);
+        }
+    }
+
+    /// The series: its kept rows and its summary over the trip and `rest_time_s` after it.
+    pub fn finish(self, rest_time_s: f64, payload_kg: f64) -> DriveSeries {
+        let trip_s = match (self.first, self.last) {
+            (Some(a), Some(b)) => b.t_s - a.t_s,
+            _ => 0.0,
+        };
+        let cycle_s = trip_s + rest_time_s;
+        let rms = |i2: f64| if cycle_s > 0.0 { (i2 / cycle_s).sqrt() } else { 0.0 };
+        let [torque2, motor_kws, power2, shaft_kws] = self.integrals;
+        let [peak, motoring, braking, power, regen] = self.peaks;
+        let energy_kwh = shaft_kws / 3600.0;
+        let summary = DriveSummary {
+            motoring_peak: self.motoring_peak,
+            braking_peak: self.braking_peak,
+            peak_torque_n_m: peak,
+            peak_motoring_torque_n_m: motoring,
+            peak_braking_torque_n_m: braking,
+            rms_torque_n_m: rms(torque2),
+            peak_power_kw: power,
+            peak_regen_power_kw: regen,
+            rms_power_kw: rms(power2),
+            energy_kwh,
+            motor_energy_kwh: motor_kws / 3600.0,
+            energy_kwh_per_t: (payload_kg > 0.0).then(|| energy_kwh / (payload_kg / 1e3)),
+            trip_s,
+            rest_time_s,
+        };
+        DriveSeries { basis: self.basis, rows: self.rows, summary }
     }
 }
