@@ -273,3 +273,50 @@ fn wrapcalc_cell(row: u32, col: u32) -> String {
     }
     format!("{name}{}", row + 1)
 }
+
+/// Mirror symmetry: the hoist with its sides swapped (the 3 000 kg on the side-2 cage with an
+/// empty side 1, the guide sheave on side 1) has T1 ↔ T2 and v, a → −v, −a, so its case lowering
+/// at a fraction f of the travel is the original's lifting at 1 − f, and the other way: the shaft
+/// torque changes sign, the static torque, the holding factor and the window's torques stay.
+/// Sums of the same products in another order: 1e-12 of the largest term.
+#[test]
+fn the_mirrored_hoist_has_the_same_drive_columns() {
+    let original = SHEET.replace("payloads_kg = [3000.0, 1000.0, 0.0]", "payloads_kg = [3000.0]");
+    let mirrored = original
+        .replace("payloads_kg = [3000.0]", "payloads_kg = [0.0]")
+        .replace("conveyance2_kg = 5000.0", "conveyance2_kg = 8000.0")
+        .replace("side = 2", "side = 1");
+    let matrix = |text: &str| {
+        let d = sheet::parse("matrix.toml", text).expect("parses");
+        load_cases::evaluate(&d, false).expect("a matrix").expect("runs")
+    };
+    let (a, b) = (matrix(&original), matrix(&mirrored));
+    let mut pairs = 0;
+    for c in travel_cases(&a) {
+        let Position::Travel { fraction } = c.position else { continue };
+        let other = if c.direction == "lift" { "lower" } else { "lift" };
+        let m = travel_cases(&b)
+            .find(|m| {
+                matches!(m.position, Position::Travel { fraction: f } if (f - (1.0 - fraction)).abs() < 1e-12)
+                    && m.direction == other
+                    && m.phase == c.phase
+            })
+            .expect("the mirrored case");
+        let (x, y) = (c.drive.expect("drive"), m.drive.expect("drive"));
+        let scale = 3_000.0 * G + 20_000.0 * 5.0;
+        let same = |u: f64, w: f64| (u - w).abs() <= 1e-12 * scale;
+        assert!(same(x.shaft_torque_n_m, -y.shaft_torque_n_m), "{} ↔ {}", c.label, m.label);
+        assert!(same(x.static_unbalance_torque_n_m, y.static_unbalance_torque_n_m), "{}", c.label);
+        assert!(same(x.brake_holding_factor.unwrap(), y.brake_holding_factor.unwrap()), "{}", c.label);
+        for (u, w) in
+            [(x.brake_torque_min_n_m, y.brake_torque_min_n_m), (x.brake_torque_max_n_m, y.brake_torque_max_n_m)]
+        {
+            assert_eq!(u.is_some(), w.is_some(), "{}", c.label);
+            if let (Some(u), Some(w)) = (u, w) {
+                assert!(same(u, w), "{}: {u} vs {w}", c.label);
+            }
+        }
+        pairs += 1;
+    }
+    assert_eq!(pairs, 2 * 4 * 3, "directions × phases × positions");
+}
