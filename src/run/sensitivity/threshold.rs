@@ -1,0 +1,101 @@
+//! What would make a check pass: for a check decided by the ropes' dynamics that fails as run,
+//! or whose verdict changes inside an input's range, the input's value at which its limit is
+//! just met, by Brent's method ([`crate::numerics::roots::brent`]) on reruns of the governing
+//! case ([`super::rerun`]), the check's margin `value − limit` (`limit − value` for an upper
+//! limit) as the function. The root is searched between the value as run and the nearest of the
+//! range's ends where the check's pass/fail differs; when it fails at the value as run and at
+//! both ends, it "fails throughout" the interval (no root in range).
+
+use super::rerun::{self, NotRun};
+use crate::check::{Check, Relation, Threshold, ThresholdStatus};
+use crate::design::sensitivity::Parameter;
+use crate::design::{Design, DutyCycleScene};
+use crate::model::level4::RopeRun;
+use crate::numerics::roots::{RootStats, brent};
+use std::cell::Cell;
+
+/// The root finding's tolerance on the input, relative to the interval searched (the ζ
+/// threshold's test compares with a bisection of whole runs to 1e-3 absolute; 1e-4 of the
+/// damping range's 0.015 is 1.5e-6).
+pub const RELATIVE_TOLERANCE: f64 = 1e-4;
+
+/// The margin of `check` (≥ 0: its limit is met); `None` without a value or a limit.
+pub fn margin(check: &Check) -> Option<f64> {
+    let (v, l) = (check.value?, check.limit?);
+    Some(match check.relation {
+        Relation::AtLeast => v - l,
+        Relation::AtMost => l - v,
+    })
+}
+
+/// One point of the search: the input's value and the check's margin there (`Err`: why none).
+pub type Point = (f64, Result<f64, String>);
+
+/// The case a threshold search reruns: the design, the duty cycle, the ropes as run (reused
+/// when the input leaves them as they are, μ) and the check's name.
+pub struct Case<'a> {
+    /// The design as run.
+    pub design: &'a Design,
+    /// The duty cycle.
+    pub cycle: &'a DutyCycleScene,
+    /// Its suspended ropes as run.
+    pub ropes: Option<&'a RopeRun>,
+    /// The check's name.
+    pub check: &'static str,
+}
+
+/// The check's margin with `parameter` at `x`, by a rerun.
+fn margin_at(case: &Case, parameter: Parameter, x: f64) -> Result<f64, NotRun> {
+    let reuse = if parameter == Parameter::Friction { case.ropes } else { None };
+    let checks = rerun::rope_checks(&parameter.with(case.design, x), case.cycle, reuse)?;
+    let c = checks.iter().find(|c| c.name == case.check).ok_or_else(|| format!("no {}", case.check))?;
+    margin(c).ok_or_else(|| format!("{} has no value or no limit at {} = {x}", case.check, parameter.name()))
+}
+
+/// The threshold of `parameter` for the case, from the margin as run and at the range's ends
+/// (`points`, in any order).
+pub fn search(case: &Case, parameter: Parameter, points: &[Point]) -> Threshold {
+    let mut sorted: Vec<Point> = points.to_vec();
+    sorted.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let (searched_low, searched_high) = (sorted[0].0, sorted[sorted.len() - 1].0);
+    let mut out = Threshold {
+        parameter: parameter.name(),
+        status: ThresholdStatus::NotFound,
+        value: None,
+        passes: None,
+        searched_low,
+        searched_high,
+        reruns: 0,
+        note: None,
+    };
+    if let Some((_, Err(why))) = sorted.iter().find(|(_, m)| m.is_err()) {
+        out.note = Some(why.clone());
+        return out;
+    }
+    let m: Vec<(f64, f64)> = sorted.iter().map(|(x, m)| (*x, *m.as_ref().unwrap_or(&f64::NAN))).collect();
+    // The first adjacent pair where the check's pass/fail differs.
+    let Some(pair) = m.windows(2).find(|w| (w[0].1 >= 0.0) != (w[1].1 >= 0.0)) else {
+        if m.iter().all(|(_, v)| *v < 0.0) {
+            out.status = ThresholdStatus::FailsThroughout;
+        }
+        return out;
+    };
+    let ((a, fa), (b, _)) = (pair[0], pair[1]);
+    let calls = Cell::new(0u64);
+    let f = |x: f64| {
+        calls.set(calls.get() + 1);
+        margin_at(case, parameter, x).unwrap_or(f64::NAN)
+    };
+    let tol = RELATIVE_TOLERANCE * (searched_high - searched_low).max(f64::MIN_POSITIVE);
+    let root = brent(f, a, b, tol, &mut RootStats::default());
+    out.reruns = calls.get();
+    match root {
+        Ok(x) => {
+            out.status = ThresholdStatus::Found;
+            out.value = Some(x);
+            out.passes = Some(if fa >= 0.0 { Relation::AtMost } else { Relation::AtLeast });
+        }
+        Err(e) => out.note = Some(e.to_string()),
+    }
+    out
+}
