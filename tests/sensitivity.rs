@@ -336,3 +336,32 @@ fn the_mirrored_sheets_records_mirror_the_plain_ones() {
         }
     }
 }
+
+/// The largest deceleration step at which a stop that slips holds: at 3 m/s² emergency-MID
+/// slips grossly (docs: ratio 2.29 > e^{μα} = 2.27 from t = 30.25 s); its threshold lies
+/// between half the step (1.5 m/s², which holds) and 3, and whole runs just either side of it
+/// hold and slip (1e-3 m/s² is about 7 times Brent's tolerance, 1e-4 of the 1.5 m/s² searched).
+#[test]
+fn a_stop_that_slips_names_the_largest_step_that_holds() {
+    let name = "emergency-MID";
+    let at = |d: f64| {
+        let text = sheet_text(None, "");
+        let start = text.find("name = \"emergency-MID\"").expect("the scene");
+        let (head, tail) = text.split_at(start);
+        format!("{head}{}", tail.replacen("emergency_decel_m_s2 = 1.5", &format!("emergency_decel_m_s2 = {d:?}"), 1))
+    };
+    let r = run_scene(&at(3.0), name);
+    let c = check(&r, GROSS_SLIP_CHECK);
+    assert_eq!(c.verdict, Verdict::Fail, "{c:?}");
+    assert_eq!(c.thresholds.len(), 1, "{:?}", c.thresholds);
+    let t = &c.thresholds[0];
+    assert_eq!(
+        (t.parameter, t.status, t.passes),
+        ("scene.emergency_decel_m_s2", ThresholdStatus::Found, Some(Relation::AtMost))
+    );
+    assert_eq!((t.searched_low, t.searched_high), (1.5, 3.0));
+    let d = t.value.expect("a value");
+    assert!(1.5 < d && d < 3.0, "{t:?}");
+    assert_eq!(check(&run_scene(&at(d - 1e-3), name), GROSS_SLIP_CHECK).verdict, Verdict::Pass);
+    assert_eq!(check(&run_scene(&at(d + 1e-3), name), GROSS_SLIP_CHECK).verdict, Verdict::Fail);
+}

@@ -162,6 +162,11 @@ pub struct Check {
     /// of its range, the rest as run (docs/checks.md, "Sensitivity").
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub sensitivity: Vec<Sensitivity>,
+    /// A check decided by the ropes' dynamics that fails as run: the value of a scene input
+    /// without a range at which it passes (the imposed stop's deceleration step,
+    /// `scene.emergency_decel_m_s2`; docs/checks.md, "Sensitivity").
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub thresholds: Vec<Threshold>,
 }
 
 /// A check's value with one uncertain input at the low and the high end of its range.
@@ -253,6 +258,7 @@ impl Check {
             rigid_value: None,
             amplification: None,
             sensitivity: Vec::new(),
+            thresholds: Vec::new(),
         }
     }
 

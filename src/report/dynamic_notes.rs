@@ -104,7 +104,7 @@ pub fn thresholds(run: &crate::run::RunResult) -> Vec<String> {
     let mut out = Vec::new();
     for s in &run.scenes {
         for c in &s.classical.checks {
-            for t in c.sensitivity.iter().filter_map(|r| r.threshold.as_ref()) {
+            for t in c.sensitivity.iter().filter_map(|r| r.threshold.as_ref()).chain(&c.thresholds) {
                 out.push(format!("{}: the {} {}", s.name, c.name, threshold_text(t)));
             }
         }

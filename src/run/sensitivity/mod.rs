@@ -117,11 +117,23 @@ fn thresholds(
             let as_run = parameter.value(design).unwrap_or(f64::NAN);
             let m0 = threshold::margin(c).ok_or_else(|| format!("{} has no margin as run", c.name));
             let points = [(as_run, m0), at(&ends[2 * j]), at(&ends[2 * j + 1])];
-            (i, j, threshold::search(&case, parameter, &points))
+            (i, j, threshold::search(parameter.name(), &points, |x| case.margin_at(parameter, x)))
         })
         .collect();
     for (i, j, t) in found {
         checks[i].sensitivity[j].threshold = Some(t);
+    }
+    // The largest deceleration step of an imposed stop at which a failing check passes.
+    let decel: Vec<_> = checks
+        .par_iter()
+        .enumerate()
+        .filter(|(_, c)| decided_by_ropes(c) && c.verdict == Verdict::Fail)
+        .filter_map(|(i, c)| {
+            threshold::decel(&threshold::Case { design, cycle, ropes, check: c.name }, c).map(|t| (i, t))
+        })
+        .collect();
+    for (i, t) in decel {
+        checks[i].thresholds.push(t);
     }
 }
 

@@ -44,22 +44,57 @@ pub struct Case<'a> {
     pub check: &'static str,
 }
 
-/// The check's margin with `parameter` at `x`, by a rerun.
-fn margin_at(case: &Case, parameter: Parameter, x: f64) -> Result<f64, NotRun> {
-    let reuse = if parameter == Parameter::Friction { case.ropes } else { None };
-    let checks = rerun::rope_checks(&parameter.with(case.design, x), case.cycle, reuse)?;
-    let c = checks.iter().find(|c| c.name == case.check).ok_or_else(|| format!("no {}", case.check))?;
-    margin(c).ok_or_else(|| format!("{} has no value or no limit at {} = {x}", case.check, parameter.name()))
+impl Case<'_> {
+    /// The check's margin in the checks of a rerun.
+    fn margin_in(&self, checks: Result<Vec<Check>, NotRun>, what: &str) -> Result<f64, NotRun> {
+        let checks = checks?;
+        let c = checks.iter().find(|c| c.name == self.check).ok_or_else(|| format!("no {}", self.check))?;
+        margin(c).ok_or_else(|| format!("{} has no value or no limit at {what}", self.check))
+    }
+
+    /// The check's margin with `parameter` at `x`, by a rerun.
+    pub fn margin_at(&self, parameter: Parameter, x: f64) -> Result<f64, NotRun> {
+        let reuse = if parameter == Parameter::Friction { self.ropes } else { None };
+        let checks = rerun::rope_checks(&parameter.with(self.design, x), self.cycle, reuse);
+        self.margin_in(checks, &format!("{} = {x}", parameter.name()))
+    }
+
+    /// The check's margin with the imposed stop's deceleration `decel_m_s2`, by a rerun.
+    pub fn margin_at_decel(&self, decel_m_s2: f64) -> Result<f64, NotRun> {
+        let mut cycle = self.cycle.clone();
+        if let Some(stop) = &mut cycle.emergency {
+            stop.decel_m_s2 = decel_m_s2;
+        }
+        let checks = rerun::rope_checks(self.design, &cycle, None);
+        self.margin_in(checks, &format!("{DECEL_PARAMETER} = {decel_m_s2}"))
+    }
 }
 
-/// The threshold of `parameter` for the case, from the margin as run and at the range's ends
-/// (`points`, in any order).
-pub fn search(case: &Case, parameter: Parameter, points: &[Point]) -> Threshold {
+/// The imposed stop's deceleration step, as the sheet names it.
+pub const DECEL_PARAMETER: &str = "scene.emergency_decel_m_s2";
+
+/// The largest deceleration step of an imposed emergency stop at which a check that fails as
+/// run passes: searched from the sheet's minimum deceleration for the direction (when below
+/// the scene's), else from half the scene's, up to the scene's (`None` without an imposed stop).
+pub fn decel(case: &Case, check: &Check) -> Option<Threshold> {
+    let stop = case.cycle.emergency.filter(|_| case.cycle.brake_stop_s.is_none())?;
+    let d0 = stop.decel_m_s2;
+    let lifting = case.cycle.direction == crate::design::Direction::Lift;
+    let minimum = case.design.requirements.emergency_window(lifting).0.map(|l| l.value);
+    let low = minimum.filter(|m| *m > 0.0 && *m < d0).unwrap_or(0.5 * d0);
+    let as_run = margin(check).ok_or_else(|| format!("{} has no margin as run", check.name));
+    let points = [(d0, as_run), (low, case.margin_at_decel(low))];
+    Some(search(DECEL_PARAMETER, &points, |x| case.margin_at_decel(x)))
+}
+
+/// The threshold of the input named `parameter`, from the check's margin at `points` (the value
+/// as run and the range's ends, in any order), by Brent's method on `margin_at`.
+pub fn search(parameter: &'static str, points: &[Point], margin_at: impl Fn(f64) -> Result<f64, NotRun>) -> Threshold {
     let mut sorted: Vec<Point> = points.to_vec();
     sorted.sort_by(|a, b| a.0.total_cmp(&b.0));
     let (searched_low, searched_high) = (sorted[0].0, sorted[sorted.len() - 1].0);
     let mut out = Threshold {
-        parameter: parameter.name(),
+        parameter,
         status: ThresholdStatus::NotFound,
         value: None,
         passes: None,
@@ -84,7 +119,7 @@ pub fn search(case: &Case, parameter: Parameter, points: &[Point]) -> Threshold 
     let calls = Cell::new(0u64);
     let f = |x: f64| {
         calls.set(calls.get() + 1);
-        margin_at(case, parameter, x).unwrap_or(f64::NAN)
+        margin_at(x).unwrap_or(f64::NAN)
     };
     let tol = RELATIVE_TOLERANCE * (searched_high - searched_low).max(f64::MIN_POSITIVE);
     let root = brent(f, a, b, tol, &mut RootStats::default());
