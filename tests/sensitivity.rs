@@ -5,6 +5,8 @@
 //! that writes `[hoist] rope_damping_ratio` at the range's ends, and a minimum placed by hand
 //! between two such runs' values, so that the verdict must flip inside the range.
 
+mod common;
+
 use wrapcalc::check::{Check, Relation, ThresholdStatus, Verdict};
 use wrapcalc::design::damping::ROPE_DAMPING_RANGE;
 use wrapcalc::design::inputs::InputSource;
@@ -364,4 +366,21 @@ fn a_stop_that_slips_names_the_largest_step_that_holds() {
     assert!(1.5 < d && d < 3.0, "{t:?}");
     assert_eq!(check(&run_scene(&at(d - 1e-3), name), GROSS_SLIP_CHECK).verdict, Verdict::Pass);
     assert_eq!(check(&run_scene(&at(d + 1e-3), name), GROSS_SLIP_CHECK).verdict, Verdict::Fail);
+}
+
+/// Through the command line: a bad range stops `run` with exit status 1, the file's
+/// line:column and the sheet's key on stderr, and no report written.
+#[test]
+fn the_command_line_refuses_a_bad_range_and_writes_nothing() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let sheet = dir.path().join("bad.toml");
+    let text = format!("{}\n[sensitivity]\nmu = {{ low = 0.3, high = 0.2 }}\n", sheet_text(None, ""));
+    std::fs::write(&sheet, &text).expect("written");
+    let out = dir.path().join("r");
+    let result = common::wrapcalc().args(["run", "--quiet", "--out"]).arg(&out).arg(&sheet).output().expect("runs");
+    assert_eq!(result.status.code(), Some(1), "{result:?}");
+    let stderr = String::from_utf8_lossy(&result.stderr);
+    let line = text.lines().count();
+    assert!(stderr.contains(&format!("bad.toml:{line}:14")) && stderr.contains("sensitivity.mu.low"), "{stderr}");
+    assert!(!out.exists(), "nothing written");
 }
