@@ -384,3 +384,24 @@ fn the_command_line_refuses_a_bad_range_and_writes_nothing() {
     assert!(stderr.contains(&format!("bad.toml:{line}:14")) && stderr.contains("sensitivity.mu.low"), "{stderr}");
     assert!(!out.exists(), "nothing written");
 }
+
+/// Resampling invariance: the records come from the suspended ropes' own samples, not from the
+/// scene's output grid, so emergency-MID's with rows every 0.01 s equal those with rows every
+/// 0.02 s (the same runs: to round-off, 1e-12 relative).
+#[test]
+fn the_records_do_not_depend_on_the_output_grid() {
+    let name = "emergency-MID";
+    let text = sheet_text(None, "");
+    let start = text.find("name = \"emergency-MID\"").expect("the scene");
+    let (head, tail) = text.split_at(start);
+    let finer = format!("{head}{}", tail.replacen("output_step_s = 0.02", "output_step_s = 0.01", 1));
+    let (a, b) = (run_scene(&text, name), run_scene(&finer, name));
+    for check_name in [ROPE_DYNAMICS_CHECK, GROSS_SLIP_CHECK] {
+        let (p, q) = (&check(&a, check_name).sensitivity, &check(&b, check_name).sensitivity);
+        assert_eq!(p.len(), q.len());
+        for (p, q) in p.iter().zip(q) {
+            assert_eq!((p.parameter, p.verdict_low, p.verdict_high), (q.parameter, q.verdict_low, q.verdict_high));
+            assert!(close(p.value_low, q.value_low) && close(p.value_high, q.value_high), "{p:?} {q:?}");
+        }
+    }
+}

@@ -10,10 +10,10 @@
 pub mod rerun;
 pub mod threshold;
 
-use super::{Options, RunError, SceneResult};
+use super::{RunError, SceneResult};
 use crate::check::{Check, Sensitivity, Verdict};
 use crate::design::sensitivity::Parameter;
-use crate::design::{Design, DutyCycleScene, Scene};
+use crate::design::{Design, DutyCycleScene};
 use crate::model::level0::GROSS_SLIP_CHECK;
 use crate::model::level4::{ROPE_DYNAMICS_CHECK, RopeRun};
 use crate::plan::{Level, Plan};
@@ -46,10 +46,8 @@ type End = (f64, Result<Vec<Check>, rerun::NotRun>);
 /// the scene's suspended ropes as run (reused where an input leaves them unchanged, μ).
 pub(super) fn mark(
     design: &Design,
-    _scene: &Scene,
     cycle: &DutyCycleScene,
     plan: &Plan,
-    _options: Options,
     result: &mut SceneResult,
     ropes: Option<&RopeRun>,
 ) -> Result<(), RunError> {
