@@ -61,20 +61,26 @@ pub(super) fn mark(
         .collect();
     // Every end of every range is independent: 2 × (up to 5) reruns, on the free cores.
     let jobs: Vec<(Parameter, f64)> = ranges.iter().flat_map(|(p, (lo, hi, _))| [(*p, *lo), (*p, *hi)]).collect();
-    let ends: Vec<End> = jobs
-        .par_iter()
-        .map(|(p, x)| {
-            let reuse = if *p == Parameter::Friction { ropes } else { None };
-            (*x, rerun::rope_checks(&p.with(design, *x), cycle, reuse))
-        })
-        .collect();
+    // The brake's times act from the trip on: their reruns continue from the trip's start.
+    let brake_start = ranges
+        .iter()
+        .any(|(p, _)| matches!(p, Parameter::BrakeIdle | Parameter::BrakeBuildUp))
+        .then(|| rerun::shared_start(design, cycle, cycle))
+        .flatten();
+    let shared = |p: Parameter| rerun::Shared {
+        ropes: if p == Parameter::Friction { ropes } else { None },
+        start: if matches!(p, Parameter::BrakeIdle | Parameter::BrakeBuildUp) { brake_start.as_ref() } else { None },
+    };
+    let ends: Vec<End> =
+        jobs.par_iter().map(|(p, x)| (*x, rerun::rope_checks(&p.with(design, *x), cycle, shared(*p)))).collect();
     for ((parameter, (low, high, source)), pair) in ranges.iter().zip(ends.chunks(2)) {
         for c in result.classical.checks.iter_mut().filter(|c| decided_by_ropes(c)) {
             let record = record(c, *parameter, (*low, *high, *source), (&pair[0], &pair[1]));
             c.sensitivity.push(record);
         }
     }
-    thresholds(design, cycle, ropes, &mut result.classical.checks, (&ranges, &ends));
+    let case = |check| threshold::Case { design, cycle, ropes, brake_start: brake_start.as_ref(), check };
+    thresholds(&case, &mut result.classical.checks, (&ranges, &ends));
     Ok(())
 }
 
@@ -83,10 +89,8 @@ type CaseRanges = [(Parameter, (f64, f64, crate::design::inputs::InputSource))];
 
 /// The threshold of each input of a check that fails as run, or whose verdict changes inside
 /// the input's range (a warning, not binding, gets none) ([`threshold::search`]); the searches run in parallel.
-fn thresholds(
-    design: &Design,
-    cycle: &DutyCycleScene,
-    ropes: Option<&RopeRun>,
+fn thresholds<'a>(
+    case: &(dyn Fn(&'static str) -> threshold::Case<'a> + Sync),
     checks: &mut [Check],
     (ranges, ends): (&CaseRanges, &[End]),
 ) {
@@ -104,7 +108,7 @@ fn thresholds(
         .map(|&(i, j)| {
             let c = &checks[i];
             let parameter = ranges[j].0;
-            let case = threshold::Case { design, cycle, ropes, check: c.name };
+            let case = case(c.name);
             let at = |end: &End| -> threshold::Point {
                 let m = match &end.1 {
                     Ok(list) => list.iter().find(|k| k.name == c.name).and_then(threshold::margin),
@@ -112,7 +116,7 @@ fn thresholds(
                 };
                 (end.0, m.ok_or_else(|| format!("no margin of {} at {} = {}", c.name, parameter.name(), end.0)))
             };
-            let as_run = parameter.value(design).unwrap_or(f64::NAN);
+            let as_run = parameter.value(case.design).unwrap_or(f64::NAN);
             let m0 = threshold::margin(c).ok_or_else(|| format!("{} has no margin as run", c.name));
             let points = [(as_run, m0), at(&ends[2 * j]), at(&ends[2 * j + 1])];
             (i, j, threshold::search(parameter.name(), &points, |x| case.margin_at(parameter, x)))
@@ -126,9 +130,7 @@ fn thresholds(
         .par_iter()
         .enumerate()
         .filter(|(_, c)| decided_by_ropes(c) && c.verdict == Verdict::Fail)
-        .filter_map(|(i, c)| {
-            threshold::decel(&threshold::Case { design, cycle, ropes, check: c.name }, c).map(|t| (i, t))
-        })
+        .filter_map(|(i, c)| threshold::decel(&case(c.name), c).map(|t| (i, t)))
         .collect();
     for (i, t) in decel {
         checks[i].thresholds.push(t);

@@ -12,6 +12,7 @@ use crate::check::Check;
 use crate::design::{Design, DutyCycleScene};
 use crate::dynamics::Kinematics;
 use crate::model::level0;
+use crate::model::level4::shared::{RopePlan, RopePrefix, prefixes};
 use crate::model::level4::{self, Level4Error, RopeRun};
 use crate::model::stop;
 
@@ -19,24 +20,46 @@ use crate::model::stop;
 /// starts, …).
 pub type NotRun = String;
 
-/// The checks of `cycle` decided by the ropes' dynamics, with `design`'s inputs; `ropes`, when
-/// given, are the suspended ropes already run with these inputs (a change of μ leaves them as
-/// they are: the pulley's motion is imposed).
-pub fn rope_checks(design: &Design, cycle: &DutyCycleScene, ropes: Option<&RopeRun>) -> Result<Vec<Check>, NotRun> {
-    run(design, cycle, ropes).map_err(|e| e.to_string())
+/// What a rerun may take over from the run as made: the suspended ropes themselves (a change of
+/// μ leaves them as they are: the pulley's motion is imposed), or the start of the trip up to
+/// where the changed input first acts (the brake's times, an imposed stop's deceleration).
+#[derive(Clone, Copy, Default)]
+pub struct Shared<'a> {
+    /// The suspended ropes as run with these inputs.
+    pub ropes: Option<&'a RopeRun>,
+    /// The trip's start, integrated once, that the rerun's ropes continue from.
+    pub start: Option<&'a RopePrefix>,
 }
 
-fn run(design: &Design, cycle: &DutyCycleScene, ropes: Option<&RopeRun>) -> Result<Vec<Check>, Level4Error> {
+/// The start of `cycle`'s trip that a rerun of `other` (the same hoist and inputs, a motion
+/// that agrees up to some instant, or only the brake's times changed) shares with it: the
+/// suspended ropes up to the last recorded step before the motions part
+/// ([`RopePlan::fork_step`]), integrated once; the reruns continue from it, to the last bit the
+/// same as from the start ([`crate::model::level4::shared`]). `None` when nothing is shared.
+pub fn shared_start(design: &Design, cycle: &DutyCycleScene, other: &DutyCycleScene) -> Option<RopePrefix> {
+    let hoist = design.hoist.as_ref()?;
+    let (plan, other) = (RopePlan::of(design, hoist, cycle).ok()?, RopePlan::of(design, hoist, other).ok()?);
+    let k = plan.fork_step(&other)?;
+    prefixes(&plan, &[k]).ok()?.0.pop()?
+}
+
+/// The checks of `cycle` decided by the ropes' dynamics, with `design`'s inputs, taking over
+/// what `shared` holds.
+pub fn rope_checks(design: &Design, cycle: &DutyCycleScene, shared: Shared) -> Result<Vec<Check>, NotRun> {
+    run(design, cycle, shared).map_err(|e| e.to_string())
+}
+
+fn run(design: &Design, cycle: &DutyCycleScene, shared: Shared) -> Result<Vec<Check>, Level4Error> {
     let hoist = design.hoist.as_ref().ok_or(Level4Error::NoHoist)?;
     let params = level4::hoist_params(design, hoist, cycle);
     let kin = level4::rigid_kinematics(design, hoist, cycle, &params)?;
     let rigid_samples = stop::rigid_samples(design, &params, &kin)?;
     let rigid = Trip::valid_part(design, rigid_samples, kin.into_iter().map(|(_, k)| k).collect());
     let owned;
-    let samples = match ropes {
+    let samples = match shared.ropes {
         Some(r) => &r.samples,
         None => {
-            owned = level4::scene_ropes(design, hoist, cycle, false)?;
+            owned = level4::scene_ropes_from(design, hoist, cycle, false, shared.start)?;
             &owned.samples
         }
     };

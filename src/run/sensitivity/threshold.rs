@@ -11,6 +11,7 @@ use crate::check::{Check, Relation, Threshold, ThresholdStatus};
 use crate::design::sensitivity::Parameter;
 use crate::design::{Design, DutyCycleScene};
 use crate::model::level4::RopeRun;
+use crate::model::level4::shared::RopePrefix;
 use crate::numerics::roots::{RootStats, brent};
 use std::cell::Cell;
 
@@ -40,6 +41,8 @@ pub struct Case<'a> {
     pub cycle: &'a DutyCycleScene,
     /// Its suspended ropes as run.
     pub ropes: Option<&'a RopeRun>,
+    /// The trip's start up to the brake's trip, which the brake's times leave as it is.
+    pub brake_start: Option<&'a RopePrefix>,
     /// The check's name.
     pub check: &'static str,
 }
@@ -54,18 +57,32 @@ impl Case<'_> {
 
     /// The check's margin with `parameter` at `x`, by a rerun.
     pub fn margin_at(&self, parameter: Parameter, x: f64) -> Result<f64, NotRun> {
-        let reuse = if parameter == Parameter::Friction { self.ropes } else { None };
-        let checks = rerun::rope_checks(&parameter.with(self.design, x), self.cycle, reuse);
+        let shared = rerun::Shared {
+            ropes: if parameter == Parameter::Friction { self.ropes } else { None },
+            start: if matches!(parameter, Parameter::BrakeIdle | Parameter::BrakeBuildUp) {
+                self.brake_start
+            } else {
+                None
+            },
+        };
+        let checks = rerun::rope_checks(&parameter.with(self.design, x), self.cycle, shared);
         self.margin_in(checks, &format!("{} = {x}", parameter.name()))
     }
 
-    /// The check's margin with the imposed stop's deceleration `decel_m_s2`, by a rerun.
-    pub fn margin_at_decel(&self, decel_m_s2: f64) -> Result<f64, NotRun> {
+    /// The duty cycle with the imposed stop's deceleration `decel_m_s2`.
+    fn with_decel(&self, decel_m_s2: f64) -> DutyCycleScene {
         let mut cycle = self.cycle.clone();
         if let Some(stop) = &mut cycle.emergency {
             stop.decel_m_s2 = decel_m_s2;
         }
-        let checks = rerun::rope_checks(self.design, &cycle, None);
+        cycle
+    }
+
+    /// The check's margin with the imposed stop's deceleration `decel_m_s2`, by a rerun that
+    /// continues from `start` (the trip before the stop, shared by every deceleration).
+    pub fn margin_at_decel(&self, decel_m_s2: f64, start: Option<&RopePrefix>) -> Result<f64, NotRun> {
+        let cycle = self.with_decel(decel_m_s2);
+        let checks = rerun::rope_checks(self.design, &cycle, rerun::Shared { ropes: None, start });
         self.margin_in(checks, &format!("{DECEL_PARAMETER} = {decel_m_s2}"))
     }
 }
@@ -83,8 +100,9 @@ pub fn decel(case: &Case, check: &Check) -> Option<Threshold> {
     let minimum = case.design.requirements.emergency_window(lifting).0.map(|l| l.value);
     let low = minimum.filter(|m| *m > 0.0 && *m < d0).unwrap_or(0.5 * d0);
     let as_run = margin(check).ok_or_else(|| format!("{} has no margin as run", check.name));
-    let points = [(d0, as_run), (low, case.margin_at_decel(low))];
-    Some(search(DECEL_PARAMETER, &points, |x| case.margin_at_decel(x)))
+    let start = rerun::shared_start(case.design, case.cycle, &case.with_decel(low));
+    let points = [(d0, as_run), (low, case.margin_at_decel(low, start.as_ref()))];
+    Some(search(DECEL_PARAMETER, &points, |x| case.margin_at_decel(x, start.as_ref())))
 }
 
 /// The threshold of the input named `parameter`, from the check's margin at `points` (the value
