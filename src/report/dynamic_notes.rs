@@ -98,7 +98,7 @@ pub fn value_text(v: Option<f64>) -> String {
 }
 
 /// One sentence per threshold found or searched ([`crate::check::Threshold`]): the input's value
-/// from which the check passes ("passes only for hoist.rope_damping_ratio ≥ 0.0123"), or that it
+/// from which the check passes ("passes only for pulley.mu ≥ 0.2255"), or that it
 /// fails throughout the interval searched.
 pub fn thresholds(run: &crate::run::RunResult) -> Vec<String> {
     let mut out = Vec::new();
