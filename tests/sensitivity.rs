@@ -366,6 +366,15 @@ fn a_stop_that_slips_names_the_largest_step_that_holds() {
     assert!(1.5 < d && d < 3.0, "{t:?}");
     assert_eq!(check(&run_scene(&at(d - 1e-3), name), GROSS_SLIP_CHECK).verdict, Verdict::Pass);
     assert_eq!(check(&run_scene(&at(d + 1e-3), name), GROSS_SLIP_CHECK).verdict, Verdict::Fail);
+    // It slips at both ends of ζ's range too: no ζ makes it hold there, and the record says so
+    // rather than giving a value.
+    let z = &c.sensitivity[0];
+    assert_eq!((z.parameter, z.verdict_low, z.verdict_high), (DAMPING, Verdict::Fail, Verdict::Fail));
+    let t = z.threshold.as_ref().expect("searched: the check fails as run");
+    assert_eq!(
+        (t.status, t.value, t.searched_low, t.searched_high),
+        (ThresholdStatus::FailsThroughout, None, 0.005, 0.02)
+    );
 }
 
 /// Through the command line: a bad range stops `run` with exit status 1, the file's
