@@ -104,6 +104,7 @@ fn design(name: &str, samples: Vec<HistorySample>) -> Design {
         compare: Vec::new(),
         inputs: Vec::new(),
         ropes: None,
+        sensitivity: Default::default(),
         document: crate::design::Document::default(),
         // The model levels are timed: the derived margins and fit are left out.
         scenes: vec![Scene {

@@ -166,6 +166,7 @@ fn bench_design(name: &str, kind: SceneKind) -> Design {
         compare: Vec::new(),
         inputs: Vec::new(),
         ropes: None,
+        sensitivity: Default::default(),
         // The model levels are timed: the derived margins and fit are left out.
         scenes: vec![Scene {
             name: name.into(),

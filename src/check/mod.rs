@@ -162,6 +162,11 @@ pub struct Check {
     /// of its range, the rest as run (docs/checks.md, "Sensitivity").
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub sensitivity: Vec<Sensitivity>,
+    /// A check decided by the ropes' dynamics that fails as run: the value of a scene input
+    /// without a range at which it passes (the imposed stop's deceleration step,
+    /// `scene.emergency_decel_m_s2`; docs/checks.md, "Sensitivity").
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub thresholds: Vec<Threshold>,
 }
 
 /// A check's value with one uncertain input at the low and the high end of its range.
@@ -183,6 +188,50 @@ pub struct Sensitivity {
     pub verdict_high: Verdict,
     /// Whether the verdict at either end differs from the check's verdict as run.
     pub verdict_changes: bool,
+    /// Where the range comes from: the sheet's `[sensitivity]` or the stated default.
+    pub range_source: crate::design::inputs::InputSource,
+    /// Why an end has no value, when the rerun there stopped (a slack rope, …).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub note: Option<String>,
+    /// For a check that fails as run or whose verdict changes inside the range: the input's
+    /// value at which the check's limit is just met, by root finding on reruns.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub threshold: Option<Threshold>,
+}
+
+/// Where a check's limit is just met as one input varies (its other inputs as run).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Threshold {
+    /// The input, as the sheet names it.
+    pub parameter: &'static str,
+    /// Whether a threshold was found, or why not.
+    pub status: ThresholdStatus,
+    /// The input's value at which the check's value meets its limit (with `status` found).
+    pub value: Option<f64>,
+    /// Which side of `value` the check passes on: `at_least` (passes for input ≥ value) or
+    /// `at_most` (passes for input ≤ value).
+    pub passes: Option<Relation>,
+    /// The interval searched: the range, widened to hold the value as run.
+    pub searched_low: f64,
+    /// Its upper end.
+    pub searched_high: f64,
+    /// Reruns the root finding made (besides the range's ends).
+    pub reruns: u64,
+    /// Why no threshold was found, when that needs words (a rerun that stopped, …).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub note: Option<String>,
+}
+
+/// The outcome of a threshold search.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ThresholdStatus {
+    /// The limit is met at `value` (to the root finding's tolerance).
+    Found,
+    /// The check fails at every point of the interval searched: no root in range.
+    FailsThroughout,
+    /// The root finding did not converge, or a rerun inside the interval stopped.
+    NotFound,
 }
 
 impl Check {
@@ -209,6 +258,7 @@ impl Check {
             rigid_value: None,
             amplification: None,
             sensitivity: Vec::new(),
+            thresholds: Vec::new(),
         }
     }
 

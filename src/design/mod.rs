@@ -14,6 +14,7 @@ pub mod damping;
 mod direction;
 pub mod inputs;
 mod scene;
+pub mod sensitivity;
 pub use direction::{Direction, Side};
 pub use scene::{
     DutyCycleScene, ElementAt, EmergencyStop, EndLoads, HistorySample, HistoryScene, LoadsScene, Output, Outputs,
@@ -59,6 +60,9 @@ pub struct Design {
     /// The ropes' deviations and attachments of a multi-rope hoist (`[ropes]`), when the sheet
     /// has the section: duty cycles then share their load among the ropes ([`crate::ropes`]).
     pub ropes: Option<crate::ropes::RopeSet>,
+    /// The ranges of the uncertain inputs the sheet's `[sensitivity]` section gives (empty: the
+    /// default ranges).
+    pub sensitivity: sensitivity::Ranges,
 }
 
 /// A `[[compare]]` figure: one quantity of several time scenes over time, side by side.

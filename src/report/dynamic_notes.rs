@@ -26,7 +26,7 @@ pub fn damping_sentence(d: &RopeDamping) -> String {
 pub fn terminal(design: &Design, run: &crate::run::RunResult, style: Style) -> String {
     let Some(d) = design.duty_cycle_damping() else { return String::new() };
     let mut out = String::new();
-    for w in why_dynamic_differs(run).into_iter().chain(verdict_flips(run)) {
+    for w in why_dynamic_differs(run).into_iter().chain(verdict_flips(run)).chain(thresholds(run)) {
         out.push_str(&format!("\n{w}."));
     }
     out.push_str(&format!("\n{}.\n", damping_sentence(&d)));
@@ -95,4 +95,51 @@ pub fn verdict_flips(run: &crate::run::RunResult) -> Vec<String> {
 /// A sensitivity end's value as text ("unbounded or not evaluated" without one).
 pub fn value_text(v: Option<f64>) -> String {
     v.map_or_else(|| "unbounded or not evaluated".to_string(), |v| format!("{v:.3}"))
+}
+
+/// One sentence per threshold found or searched ([`crate::check::Threshold`]): the input's value
+/// from which the check passes ("passes only for pulley.mu ≥ 0.2255"), or that it
+/// fails throughout the interval searched.
+pub fn thresholds(run: &crate::run::RunResult) -> Vec<String> {
+    let mut out = Vec::new();
+    for s in &run.scenes {
+        for c in &s.classical.checks {
+            for t in c.sensitivity.iter().filter_map(|r| r.threshold.as_ref()).chain(&c.thresholds) {
+                out.push(format!("{}: the {} {}", s.name, c.name, threshold_text(t)));
+            }
+        }
+    }
+    out
+}
+
+/// A threshold in words, after the check's name.
+pub fn threshold_text(t: &crate::check::Threshold) -> String {
+    use crate::check::ThresholdStatus;
+    match (t.status, t.value, t.passes) {
+        (ThresholdStatus::Found, Some(x), Some(side)) => {
+            format!("passes only for {} {} {}", t.parameter, side.symbol(), significant(x))
+        }
+        (ThresholdStatus::FailsThroughout, _, _) => format!(
+            "fails for every {} from {} to {} (no threshold in that interval)",
+            t.parameter,
+            significant(t.searched_low),
+            significant(t.searched_high)
+        ),
+        _ => format!(
+            "has no threshold of {} found between {} and {}{}",
+            t.parameter,
+            significant(t.searched_low),
+            significant(t.searched_high),
+            t.note.as_deref().map_or_else(String::new, |n| format!(" ({n})"))
+        ),
+    }
+}
+
+/// A number to four significant digits.
+fn significant(x: f64) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return format!("{x}");
+    }
+    let digits = (3 - x.abs().log10().floor() as i32).max(0) as usize;
+    format!("{x:.digits$}")
 }

@@ -438,7 +438,7 @@ fn run_scene(
         }
         SceneKind::DutyCycle(cycle) => {
             let mut run = run_duty_cycle(design, scene, cycle, plan.clone(), options, context)?;
-            sensitivity::mark(design, scene, cycle, &plan, options, &mut run.result)?;
+            sensitivity::mark(design, cycle, &plan, &mut run.result, run.ropes.as_ref())?;
             (run.result, run.ropes, run.kept, run.work)
         }
     };

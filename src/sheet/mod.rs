@@ -26,6 +26,7 @@ mod ropes;
 mod rules;
 mod scene;
 mod schema;
+mod sensitivity;
 pub mod templates;
 mod track;
 mod travel;
@@ -61,6 +62,7 @@ const TOP_LEVEL_KEYS: &[&str] = &[
     "compare",
     "ropes",
     "lift",
+    "sensitivity",
 ];
 
 /// A validated sheet of either kind.
@@ -194,6 +196,10 @@ fn read_sections(c: &mut Collector, root: Spanned<DeTable<'_>>) -> validate::Sec
             "ropes" => {
                 sections.present.push("ropes");
                 sections.ropes = section(c, value, "ropes");
+            }
+            "sensitivity" => {
+                sections.present.push("sensitivity");
+                sections.sensitivity = section(c, value, "sensitivity");
             }
             "load_cases" => {
                 sections.present.push("load_cases");

@@ -31,6 +31,7 @@ pub struct Sections {
     pub document: Option<Spanned<super::document::RawDocument>>,
     pub compare: Option<Spanned<Vec<Spanned<super::raw::RawCompare>>>>,
     pub ropes: Option<Spanned<super::ropes::RawRopes>>,
+    pub sensitivity: Option<Spanned<super::sensitivity::RawSensitivity>>,
 }
 
 pub fn design(c: &mut Collector, s: Sections) -> Option<Design> {
@@ -86,6 +87,7 @@ pub fn design(c: &mut Collector, s: Sections) -> Option<Design> {
     let ropes = if s.present.contains(&"ropes") && s.ropes.is_none() { None } else { ropes };
     let lining = super::lining::lining_section(c, &s.lining, &s.present, &s.rope, rope.as_ref());
     let document = super::document::document(c, &s.document);
+    let sensitivity = super::sensitivity::ranges(c, &s.sensitivity, &s.present);
     let compare = super::compare::compare(c, &s.compare, s.present.contains(&"compare"), scenes.as_deref());
     Some(Design {
         sheet: c.file.to_string(),
@@ -102,6 +104,7 @@ pub fn design(c: &mut Collector, s: Sections) -> Option<Design> {
         load_cases: load_cases?,
         compare: compare?,
         ropes: ropes?,
+        sensitivity: sensitivity?,
         inputs: Vec::new(),
     })
 }

@@ -2,7 +2,9 @@
 //! rope damping ζ they ran with, its source and basis, and the warning of an undamped run.
 
 use super::{Context, esc};
-use crate::report::dynamic_notes::{damping_sentence, value_text, verdict_flips, why_dynamic_differs};
+use crate::report::dynamic_notes::{
+    damping_sentence, threshold_text, thresholds, value_text, verdict_flips, why_dynamic_differs,
+};
 use std::fmt::Write;
 
 /// The block (nothing for a sheet without duty cycles).
@@ -18,6 +20,9 @@ pub fn notes(out: &mut String, ctx: &Context) {
     }
     for f in verdict_flips(ctx.run) {
         let _ = writeln!(out, "<p class=\"warning\"><b>Verdict within a range:</b> {}.</p>", esc(&f));
+    }
+    for t in thresholds(ctx.run) {
+        let _ = writeln!(out, "<p class=\"warning\"><b>What would make it pass:</b> {}.</p>", esc(&t));
     }
     let _ = writeln!(out, "<p class=\"note\">{}.</p>", esc(&damping_sentence(&d)));
     sensitivity_table(out, ctx);
@@ -46,13 +51,13 @@ fn sensitivity_table(out: &mut String, ctx: &Context) {
     out.push_str("<h3>Sensitivity of the checks decided by the ropes' dynamics</h3>\n<table class=\"sensitivity\">\n");
     out.push_str(
         "<tr><th>scene</th><th>check</th><th>as run</th><th>input</th><th>low</th><th>value, verdict</th>\
-         <th>high</th><th>value, verdict</th><th>verdict changes</th></tr>\n",
+         <th>high</th><th>value, verdict</th><th>verdict changes</th><th>range from</th><th>threshold</th></tr>\n",
     );
     for (s, c, r) in rows {
         let _ = writeln!(
             out,
             "<tr><td>{}</td><td>{}</td><td>{}, {}</td><td><code>{}</code></td><td>{}</td><td>{}, {}</td><td>{}</td>\
-             <td>{}, {}</td><td>{}</td></tr>",
+             <td>{}, {}</td><td>{}</td><td>{}</td><td>{}</td></tr>",
             esc(&s.name),
             esc(c.name),
             value_text(c.value),
@@ -64,7 +69,9 @@ fn sensitivity_table(out: &mut String, ctx: &Context) {
             r.high,
             value_text(r.value_high),
             r.verdict_high.label(),
-            if r.verdict_changes { "yes" } else { "no" }
+            if r.verdict_changes { "yes" } else { "no" },
+            r.range_source.label(),
+            r.threshold.as_ref().map_or_else(|| "—".to_string(), |t| esc(&threshold_text(t)))
         );
     }
     out.push_str("</table>\n");

@@ -8,6 +8,7 @@ mod lift;
 mod ropes;
 mod scene;
 mod sections;
+mod sensitivity;
 
 use std::fmt::Write as _;
 
@@ -329,6 +330,7 @@ pub struct SceneKind {
 pub fn tables() -> Vec<Table> {
     let mut out = sections::tables();
     out.extend(ropes::tables());
+    out.extend(sensitivity::tables());
     out.push(scene::table());
     out.extend(lift::tables());
     out

@@ -69,6 +69,7 @@ fn top() -> Table {
             section("compare", Tables, "figures overlaying one quantity of several time scenes"),
             section("ropes", Sub, "the hoisting ropes one by one: multi-rope load sharing"),
             section("lift", Sub, "a traction lift: makes the sheet a lift sheet (EN 81-50)"),
+            section("sensitivity", Sub, "the ranges of the uncertain inputs the rope-dynamics checks are rerun at"),
         ],
     );
     t.one_of = vec![vec!["pulley", "rope", "scene"], vec!["pulley", "rope", "hoist", "load_cases"], vec!["lift"]];

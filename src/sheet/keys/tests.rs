@@ -61,7 +61,8 @@ fn registry(path: &str) -> BTreeSet<&'static str> {
 
 #[test]
 fn every_table_has_the_parsers_keys_and_no_other() {
-    let parser: [(&str, BTreeSet<&str>); 19] = [
+    let range = fields::<crate::sheet::sensitivity::RawRange>;
+    let parser: [(&str, BTreeSet<&str>); 25] = [
         ("", crate::sheet::TOP_LEVEL_KEYS.iter().copied().collect()),
         ("pulley", fields::<RawPulley>()),
         ("pulley.guide", fields::<RawGuide>()),
@@ -81,6 +82,12 @@ fn every_table_has_the_parsers_keys_and_no_other() {
         ("ropes.conveyance2", fields::<crate::sheet::ropes::RawAttachment>()),
         ("lift", fields::<crate::sheet::lift::RawLift>()),
         ("lift.pulley", fields::<crate::sheet::lift::RawLiftPulley>()),
+        ("sensitivity", fields::<crate::sheet::sensitivity::RawSensitivity>()),
+        ("sensitivity.rope_damping_ratio", range()),
+        ("sensitivity.mu", range()),
+        ("sensitivity.ea_n", range()),
+        ("sensitivity.brake_idle_time_s", range()),
+        ("sensitivity.brake_build_up_s", range()),
     ];
     for (path, keys) in &parser {
         assert!(!keys.is_empty(), "no fields recorded for {path:?}");
