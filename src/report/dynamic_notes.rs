@@ -53,7 +53,14 @@ pub fn why_dynamic_differs(run: &crate::run::RunResult) -> Vec<String> {
         let t = c.inputs.iter().find(|q| q.name == "t").map(|q| q.value);
         let f = c.intermediates.iter().find(|q| q.name == FIRST_MODE).map(|q| q.value);
         let (Some(t), Some(amp), Some(v), Some(rigid)) = (t, c.amplification, c.value, c.rigid_value) else { continue };
-        let mode = f.map_or_else(String::new, |f| format!(" in their {f:.2} Hz first longitudinal mode"));
+        let mode = match s.rigid_dynamic.as_deref().filter(|o| o.check == c.name) {
+            Some(o) => format!(
+                " at {} (figure {}/rigid_dynamic.png)",
+                crate::report::rigid_dynamic_out::frequency_text(o),
+                s.name
+            ),
+            None => f.map_or_else(String::new, |f| format!(" in their {f:.2} Hz first longitudinal mode")),
+        };
         out.push(format!(
             "{}: the ropes ring{mode}, which each change of acceleration excites; at t = {t:.2} s the tension \
              difference is {amp:.2} times the rigid ropes', so the {} is {v:.3} with the ropes' dynamics against \
