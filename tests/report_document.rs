@@ -80,11 +80,16 @@ fn report_prints_to_pdf_with_verdicts_and_the_governing_case() {
     println!("report.html of the reference hoist prints on {pages} A4 pages: main body {main_body}, whole {pages}");
     // The main body printed on 25 pages and the whole on 56 before the report gained the drive's
     // and the rule sets' checks, the wet load case, every input with its source and the
-    // sensitivity of the rope-dynamics checks: 32 and 63 now. The bounds stop it growing further
-    // unnoticed; bringing the main body back to 25 pages (the defaults' table and the
-    // sensitivity tables are the candidates for the appendix) is open.
-    assert!(main_body <= 33, "the main body prints on {main_body} pages, more than 33");
-    assert!(pages <= 66, "the whole document prints on {pages} pages, more than 66");
+    // sensitivity of the rope-dynamics checks (32 and 63). The tables looked up rather than read
+    // went to Appendix B (the defaults used, the sensitivity, the load-case matrix, every check:
+    // 7 pages), and the overlay of rigid and dynamic tensions joined the main body beside the
+    // governing rope-dynamics checks (1 page) and the appendix for the other eight duty cycles
+    // (8 pages, one to a page as the stacked panels print): measured 25 and 72. The main body's
+    // bound is the 25 pages it had, with no margin: a longer main body is what this test stops.
+    // The whole's margin of 2 pages: the appendix's page breaks follow its figures and tables,
+    // and a Chromium that wraps a table cell differently moves a break by a page or two.
+    assert!(main_body <= 25, "the main body prints on {main_body} pages, more than 25");
+    assert!(pages <= 74, "the whole document prints on {pages} pages, more than 74");
     // Page 1: the headline with its counts and the governing check with its case.
     let summary: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).expect("summary")).expect("json");

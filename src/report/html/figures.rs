@@ -29,10 +29,7 @@ pub const FIGURES: [(&str, &str); 6] = [
         "wrap_map.png",
         "Friction utilization |q|/μn over time (across) and the wrap (θ, up), signed by the friction's direction as its colour bar shows (positive dark red, reverse light blue, none near-white; the two apart in greyscale too); the JDP in black, a line where it moves continuously and a short mark per output step where it jumps: read how the pattern moves round the wrap.",
     ),
-    (
-        "rigid_dynamic.png",
-        "End tensions T1 (top) and T2 (bottom) per rope with the suspended ropes' dynamics (solid) and on rigid ropes along the same motion (dashed): read how far each change of acceleration makes the ropes ring about the rigid tensions, the dominant frequency (dots: the crossings of T − T_rigid it is measured from, its value in the legend and the title beside the first mode's closed form) and the governing instant of the checks decided by the ropes' dynamics (vertical line).",
-    ),
+    OVERLAY,
     (
         "ropes.png",
         "Each rope's end tensions through the trip (a dash pattern per rope) and the mean rope (the solid line) that the other figures show: read how far the most loaded rope departs from the mean and where its share builds up or is relieved.",
@@ -40,7 +37,10 @@ pub const FIGURES: [(&str, &str); 6] = [
 ];
 
 /// The overlay of rigid and dynamic tensions, and its caption.
-const OVERLAY: (&str, &str) = FIGURES[5];
+const OVERLAY: (&str, &str) = (
+    "rigid_dynamic.png",
+    "End tensions T1 (top) and T2 (bottom) per rope with the suspended ropes' dynamics (solid) and on rigid ropes along the same motion (dashed): read how far each change of acceleration makes the ropes ring about the rigid tensions, the dominant frequency (dots: the crossings of T − T_rigid it is measured from, its value in the legend and the title beside the first mode's closed form) and the governing instant of the checks decided by the ropes' dynamics (vertical line).",
+);
 
 /// The checks decided by the ropes' dynamics, whose governing scene's overlay joins the main body.
 const ROPE_CHECKS: [&str; 2] = [crate::model::level4::ROPE_DYNAMICS_CHECK, crate::model::level0::GROSS_SLIP_CHECK];
