@@ -128,6 +128,10 @@ fn the_marked_frequency_is_the_first_modes_closed_form() {
     assert!((got / expected - 1.0).abs() < 5e-3, "measured {got} Hz vs closed form {expected} Hz");
     // The heavier side 1 (8 200 kg below 500 m of rope) rings the more after the same steps.
     assert_eq!(o.side, Side::One);
+    // The change that excites the ropes, named on page 1: the step from rest to 0.5 m/s² (the
+    // governing instant falls after it, inside the first second's 0.5 m/s²): exact.
+    assert!(o.governing_t_s > 0.01 && o.governing_t_s < 1.0, "{}", o.governing_t_s);
+    assert_eq!(o.accel_change_m_s2, 0.5);
     // The window holds several periods: at least 6 crossings (3 periods).
     assert!(o.crossings_s.len() >= 6, "{:?}", o.crossings_s);
 }

@@ -136,6 +136,9 @@ pub struct RigidDynamicJson {
     pub first_mode_hz: Option<f64>,
     /// The measuring window (s).
     pub window_s: [f64; 2],
+    /// The range of the pulley's acceleration from the window's start to the governing instant:
+    /// the change of acceleration that excites the ropes (m/s²).
+    pub accel_change_m_s2: f64,
     /// How the frequency was measured.
     pub method: &'static str,
 }
@@ -150,6 +153,7 @@ impl RigidDynamicJson {
             side: if o.side == Side::One { "side1" } else { "side2" },
             first_mode_hz: o.closed_form_hz,
             window_s: o.window_s,
+            accel_change_m_s2: o.accel_change_m_s2,
             method: METHOD,
         }
     }

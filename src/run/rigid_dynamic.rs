@@ -47,6 +47,9 @@ pub struct RigidDynamic {
     pub window_s: [f64; 2],
     /// The crossings counted (s), marked on the figure.
     pub crossings_s: Vec<f64>,
+    /// The change of acceleration that excites the ropes: the range of the pulley's acceleration
+    /// from the window's start to the governing instant (m/s²).
+    pub accel_change_m_s2: f64,
 }
 
 /// The check the overlay marks: of the checks decided by the ropes' dynamics with an
@@ -93,7 +96,13 @@ pub(super) fn overlay(
     let side = if rms(&two) > rms(&one) { Side::Two } else { Side::One };
     let crossings_s = crossings(if side == Side::Two { &two } else { &one });
     let measured_hz = frequency_hz(&crossings_s);
+    let before =
+        trip.samples.iter().zip(&trip.kinematics).filter(|(s, _)| s.t_s >= window_s[0] && s.t_s <= governing_t_s);
+    let (lo, hi) = before
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), (_, k)| (lo.min(k.accel_m_s2), hi.max(k.accel_m_s2)));
+    let accel_change_m_s2 = if hi >= lo { hi - lo } else { 0.0 };
     Some(RigidDynamic {
+        accel_change_m_s2,
         dynamic,
         rigid,
         check: check.name,
