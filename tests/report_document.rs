@@ -363,3 +363,41 @@ fn a_run_with_warnings_never_says_all_checks_pass() {
     let text = String::from_utf8_lossy(&out.stdout);
     assert!(out.status.success() && text.contains(headline) && !text.contains("all checks pass"), "{text}");
 }
+
+/// Nothing moved out of the main body is lost: Appendix B of the reference report holds a row
+/// for every input not in the sheet (B.1), every sensitivity end pair (B.2), every load case
+/// (B.3) and every check of the scenes and the design (B.4), counted from summary.json; the main
+/// body keeps a line pointing to each table.
+#[test]
+fn appendix_b_holds_every_row_moved_out_of_the_main_body() {
+    let dir = reference_report();
+    let html = std::fs::read_to_string(dir.join("report.html")).expect("report.html");
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).expect("summary")).expect("json");
+    let (before, appendix) = html.split_once("<section id=\"appendix-tables\"").expect("Appendix B");
+    let rows = |title: &str| {
+        let start = appendix.find(title).unwrap_or_else(|| panic!("Appendix B lacks {title}"));
+        let table = &appendix[start..];
+        let table = &table[..table.find("</table>").expect("its table")];
+        table.matches("<tr>").count() - 1
+    };
+    let arr = |v: &serde_json::Value| v.as_array().expect("an array").clone();
+    let scenes = arr(&summary["scenes"]);
+    let defaults = arr(&summary["inputs"]).iter().filter(|i| i["source"] != "sheet").count();
+    let checks: usize =
+        scenes.iter().map(|s| arr(&s["checks"]).len()).sum::<usize>() + arr(&summary["design_checks"]).len();
+    let sensitivity: usize = scenes
+        .iter()
+        .flat_map(|s| arr(&s["checks"]))
+        .map(|c| c.get("sensitivity").and_then(|r| r.as_array()).map_or(0, Vec::len))
+        .sum();
+    let cases = arr(&summary["load_cases"]["cases"]).len();
+    assert!(defaults > 0 && sensitivity > 0 && cases > 0 && checks > 0);
+    assert_eq!(rows("B.1. Not in the sheet"), defaults, "B.1: every default used");
+    assert_eq!(rows("B.2. Sensitivity"), sensitivity, "B.2: every sensitivity record");
+    assert_eq!(rows("B.3. Load-case matrix"), cases, "B.3: every load case");
+    assert_eq!(rows("B.4. Every check"), checks, "B.4: every check");
+    for table in ["table B.1", "table B.2", "table B.3", "table B.4"] {
+        assert!(before.contains(table), "the main body points to {table}");
+    }
+}
