@@ -208,3 +208,25 @@ fn the_overlay_mirrors() {
         }
     }
 }
+
+/// Resampling invariance: the overlay is made of the ropes' own steps, not of the history's
+/// output rows, so another output step gives the same series, crossings and frequency, both ways.
+#[test]
+fn the_overlay_does_not_depend_on_the_output_step() {
+    let run_with = |step: &str| {
+        let text = sheet_text(false).replace("output_step_s = 0.01", &format!("output_step_s = {step}"));
+        let d = sheet::parse("overlay.toml", &text).expect("parses");
+        let scenes: Vec<_> = d.scenes.iter().collect();
+        let request = Request::Full { forced_level: Some(Level::Dynamic4) };
+        run::run(&d, &scenes, Options { nodes: 30, request, ..Options::default() }).expect("runs").scenes.remove(0)
+    };
+    let (a, b) = (run_with("0.01"), run_with("0.05"));
+    for (p, q, label) in [(overlay(&a), overlay(&b), "0.01 → 0.05 s"), (overlay(&b), overlay(&a), "0.05 → 0.01 s")]
+    {
+        // The same ropes' run to the last bit: equal, not close.
+        assert_eq!(p.measured_hz, q.measured_hz, "{label}");
+        assert_eq!(p.dynamic, q.dynamic, "{label}");
+        assert_eq!(p.rigid, q.rigid, "{label}");
+        assert_eq!(p.crossings_s, q.crossings_s, "{label}");
+    }
+}
