@@ -13,22 +13,13 @@ use serde::Serialize;
 use std::io::Write;
 use std::path::Path;
 
-/// Rows of the CSV and points of each line at most (the trip's samples thinned evenly).
-pub const MAX_POINTS: usize = 5000;
-
 /// rigid_dynamic.csv's columns.
 pub const COLUMNS: [&str; 5] = ["t_s", "t1_n", "t2_n", "rigid_t1_n", "rigid_t2_n"];
 
-/// The indices of the samples kept: every k-th, k the smallest that keeps at most
-/// [`MAX_POINTS`], and the last.
+/// The indices of the samples drawn and written: every one the run kept (at most
+/// [`crate::run::rigid_dynamic::MAX_POINTS`]).
 pub fn kept(overlay: &RigidDynamic) -> Vec<usize> {
-    let n = overlay.dynamic.len();
-    let stride = n.div_ceil(MAX_POINTS - 1).max(1);
-    let mut keep: Vec<usize> = (0..n).step_by(stride).collect();
-    if n > 0 && keep.last() != Some(&(n - 1)) {
-        keep.push(n - 1);
-    }
-    keep
+    (0..overlay.dynamic.len()).collect()
 }
 
 /// rigid_dynamic.csv: per rope (N), with the ropes' dynamics and on rigid ropes, at the kept samples.

@@ -25,7 +25,8 @@ pub const METHOD: &str = "one over the median full period between zero crossings
 /// Rigid and dynamic tensions of a duty cycle, per rope (N), at the trip's instants.
 #[derive(Debug, Clone, PartialEq)]
 pub struct RigidDynamic {
-    /// `(t, T1, T2)` with the ropes' dynamics: the trip's samples (up to gross slip, if any).
+    /// `(t, T1, T2)` with the ropes' dynamics: the trip's samples (up to gross slip, if any),
+    /// thinned evenly to at most [`MAX_POINTS`] ([`thinned`]).
     pub dynamic: Vec<[f64; 3]>,
     /// `(t, T1, T2)` on rigid ropes, `T = m(g ± a)/n` with the guide sheave's inertia, at the
     /// same instants and kinematics.
@@ -101,6 +102,10 @@ pub(super) fn overlay(
     let (lo, hi) = before
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), (_, k)| (lo.min(k.accel_m_s2), hi.max(k.accel_m_s2)));
     let accel_change_m_s2 = if hi >= lo { hi - lo } else { 0.0 };
+    // Kept for the figure and its CSV: at most MAX_POINTS samples, evenly (the measurement above
+    // used every one).
+    let keep = thinned(dynamic.len());
+    let (dynamic, rigid) = (keep.iter().map(|&i| dynamic[i]).collect(), keep.iter().map(|&i| rigid[i]).collect());
     Some(RigidDynamic {
         accel_change_m_s2,
         dynamic,
@@ -113,6 +118,20 @@ pub(super) fn overlay(
         window_s,
         crossings_s,
     })
+}
+
+/// Samples of the series the overlay keeps at most (the figure's points, the CSV's rows).
+pub const MAX_POINTS: usize = 5000;
+
+/// The indices kept of `n` samples: every k-th, k the smallest that keeps at most
+/// [`MAX_POINTS`], and the last.
+pub fn thinned(n: usize) -> Vec<usize> {
+    let stride = n.div_ceil(MAX_POINTS - 1).max(1);
+    let mut keep: Vec<usize> = (0..n).step_by(stride).collect();
+    if n > 0 && keep.last() != Some(&(n - 1)) {
+        keep.push(n - 1);
+    }
+    keep
 }
 
 /// `points` less their least-squares line.
