@@ -168,3 +168,23 @@ fn a_hoist_without_tail_ropes_runs_its_duty_cycles() {
     assert!(matches!(out.status.code(), Some(0 | 2)), "{}", String::from_utf8_lossy(&out.stderr));
     assert!(out_dir.join("summary.json").exists());
 }
+
+/// A TOML type error hides nothing: with an array where `[hoist] rope_damping_ratio` takes a
+/// number, a negative conveyance mass and lengths short of the travel, one run reports the type
+/// error, the validation error and both travel errors, each at its key's line:column.
+#[test]
+fn a_type_error_does_not_hide_the_sections_other_errors() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let text = sheet(195.0, 30.0, Some((10.0, 190.0)), &duty("up", "lift", None))
+        .replace("conveyance1_kg = 10000.0\n", "conveyance1_kg = -10000.0\nrope_damping_ratio = [0.01]\n");
+    let (stderr, file) = rejected(dir.path(), &text);
+    let type_error = located(&file, &text, "rope_damping_ratio", "hoist.rope_damping_ratio");
+    assert!(stderr.contains(&type_error), "the type error at its place: {type_error}\n{stderr}");
+    // In the sheet's words: TOML's types, and what would be valid.
+    assert!(stderr.contains("invalid type: array, expected a number"), "{stderr}");
+    assert!(stderr.contains(&located(&file, &text, "conveyance1_kg", "hoist.conveyance1_kg")), "{stderr}");
+    assert!(stderr.contains(&located(&file, &text, "side1_length_m", "hoist.side1_length_m")), "{stderr}");
+    assert!(stderr.contains(&located(&file, &text, "tail2_length_m", "hoist.tail2_length_m")), "{stderr}");
+    // The placeholder read in its place adds nothing: the key has its one error.
+    assert_eq!(stderr.matches("rope_damping_ratio").count(), 1, "{stderr}");
+}

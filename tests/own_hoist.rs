@@ -244,3 +244,80 @@ fn a_unit_of_the_wrong_dimension_is_an_error_at_the_key() {
     assert!(stderr.contains("lb is a mass, but this key is a length (m)"), "{stderr}");
     assert_eq!(stderr.lines().filter(|l| l.contains("side1_length_m")).count(), 1, "one message:\n{stderr}");
 }
+
+/// The rows of matrix.csv that say `balanced` = true: (payload, direction, phase, position,
+/// position fraction).
+fn balanced_rows(out: &Path) -> std::collections::BTreeSet<Vec<String>> {
+    let mut csv = csv::Reader::from_path(out.join("matrix.csv")).expect("matrix.csv");
+    let headers = csv.headers().expect("headers").clone();
+    let cols: Vec<usize> = ["payload_kg", "direction", "phase", "position", "position_fraction"]
+        .iter()
+        .map(|n| headers.iter().position(|h| h == *n).expect(n))
+        .collect();
+    let balanced = headers.iter().position(|h| h == "balanced").expect("balanced");
+    csv.records()
+        .map(|r| r.expect("row"))
+        .filter(|r| &r[balanced] == "true")
+        .map(|r| cols.iter().map(|&i| r[i].to_string()).collect())
+        .collect()
+}
+
+/// The names of a scene's checks that summary.json gives as balanced (`null` with
+/// `balanced: true`).
+fn balanced_checks(summary: &serde_json::Value, scene: &str) -> std::collections::BTreeSet<String> {
+    let s = summary["scenes"].as_array().expect("scenes").iter().find(|s| s["name"] == scene).expect("the scene");
+    s["checks"]
+        .as_array()
+        .expect("checks")
+        .iter()
+        .filter(|c| c["balanced"] == true)
+        .inspect(|c| assert!(c["value"].is_null(), "a balanced check has no value: {c}"))
+        .map(|c| c["name"].as_str().expect("a name").to_string())
+        .collect()
+}
+
+/// Mirror symmetry of the balanced verdict (T1 ↔ T2, v → −v), both ways. The matrix: the 0.1 mm
+/// round-off on side 1's tail (60 ft written 18.2881 m: side 1 heavier by 3.6 g) and the same
+/// on side 2's (3060 ft written 932.6881 m: side 2 heavier by 3.6 g) give the same balanced rows.
+/// Two loads scenes at 2 m/s, side 1 heavier by 3.6 g of 50 t and its mirror, side 2 heavier at
+/// −2 m/s, give the same balanced checks, "∞ (balanced)" in report.html.
+#[test]
+fn the_balanced_verdict_mirrors_both_ways() {
+    let scenes = "[[scene]]\nname = \"one-heavier\"\nkind = \"loads\"\nm1_kg = 50000.0036\nm2_kg = 50000.0\n\
+                  speed_m_s = 2.0\naccel_m_s2 = 0.0\n\
+                  [[scene]]\nname = \"two-heavier\"\nkind = \"loads\"\nm1_kg = 50000.0\nm2_kg = 50000.0036\n\
+                  speed_m_s = -2.0\naccel_m_s2 = 0.0\n";
+    let mut outs = Vec::new();
+    for (i, tail) in [("hoist.tail1_length_m", "18.2881"), ("hoist.tail2_length_m", "932.6881")].into_iter().enumerate()
+    {
+        let dir = tempfile::tempdir().expect("temp dir");
+        let (out, status, said) = run(dir.path(), &sheet(Units::Si, &[tail], FULL_SPEED_S, true, scenes));
+        assert!(matches!(status, Some(0 | 2)), "{said}");
+        let summary: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).expect("summary")).expect("json");
+        let html = std::fs::read_to_string(out.join("report.html")).expect("report.html");
+        assert!(html.contains("∞ (balanced)"), "sheet {i}: report.html names the balanced factors");
+        outs.push((balanced_rows(&out), summary, dir));
+    }
+    let (rows_a, rows_b) = (&outs[0].0, &outs[1].0);
+    // Payload 0 at rest, 3 positions × 2 directions × 4 phases (3 at the worst instants of a
+    // step profile): at least 12 rows, the same ones whichever side the 3.6 g is on.
+    assert!(rows_a.len() >= 12, "{} balanced rows", rows_a.len());
+    assert!(rows_a.is_subset(rows_b), "side 1 heavier → side 2 heavier: {:?}", rows_a.difference(rows_b));
+    assert!(rows_b.is_subset(rows_a), "side 2 heavier → side 1 heavier: {:?}", rows_b.difference(rows_a));
+    for (_, summary, _) in &outs {
+        let (one, two) = (balanced_checks(summary, "one-heavier"), balanced_checks(summary, "two-heavier"));
+        // 3.6 g of 50 t: below what the inputs resolve, so the static factor of both scenes is
+        // balanced, whichever side is heavier; their gross-slip ratio (T_hi − m'v²)/(T_lo − m'v²)
+        // is the same number both ways (the same sums with the sides renamed: 1e-12).
+        assert!(one.contains("static safety factor"), "{one:?}");
+        assert!(one.is_subset(&two) && two.is_subset(&one), "{one:?} vs {two:?}");
+        let ratio = |scene: &str| {
+            let s = summary["scenes"].as_array().expect("scenes").iter().find(|s| s["name"] == scene).expect("scene");
+            let c = s["checks"].as_array().expect("checks").iter().find(|c| c["name"] == "gross slip (Euler/capstan)");
+            c.and_then(|c| c["value"].as_f64()).expect("a gross-slip ratio")
+        };
+        let (r1, r2) = (ratio("one-heavier"), ratio("two-heavier"));
+        assert!((r1 / r2 - 1.0).abs() < 1e-12, "{r1} vs {r2}");
+    }
+}

@@ -53,13 +53,42 @@ pub fn why_dynamic_differs(run: &crate::run::RunResult) -> Vec<String> {
         let t = c.inputs.iter().find(|q| q.name == "t").map(|q| q.value);
         let f = c.intermediates.iter().find(|q| q.name == FIRST_MODE).map(|q| q.value);
         let (Some(t), Some(amp), Some(v), Some(rigid)) = (t, c.amplification, c.value, c.rigid_value) else { continue };
-        let mode = f.map_or_else(String::new, |f| format!(" in their {f:.2} Hz first longitudinal mode"));
-        out.push(format!(
-            "{}: the ropes ring{mode}, which each change of acceleration excites; at t = {t:.2} s the tension \
-             difference is {amp:.2} times the rigid ropes', so the {} is {v:.3} with the ropes' dynamics against \
-             {rigid:.3} on rigid ropes",
-            s.name, c.name
-        ));
+        let overlay = s.rigid_dynamic.as_deref().filter(|o| o.check == c.name);
+        let sentence = match overlay {
+            Some(o) => {
+                let span = t - o.window_s[0].max(o.dynamic.first().map_or(0.0, |d| d[0]));
+                // A change below 1 µm/s² is none: the ropes still ring from earlier changes.
+                let cause = if o.accel_change_m_s2 > 1e-6 {
+                    format!(
+                        "the change of acceleration by {:.2} m/s² in the {span:.1} s before t = {t:.2} s",
+                        o.accel_change_m_s2
+                    )
+                } else {
+                    format!(
+                        "the changes of acceleration earlier in the trip (none in the {span:.1} s before t = {t:.2} s)"
+                    )
+                };
+                format!(
+                    "{}: {cause} the ropes, which ring at {} (figure {}/rigid_dynamic.png); there the tension \
+                     difference is {amp:.2} times the rigid ropes', so the {} is {v:.3} with the ropes' dynamics \
+                     against {rigid:.3} on rigid ropes",
+                    s.name,
+                    crate::report::rigid_dynamic_out::frequency_text(o),
+                    s.name,
+                    c.name
+                )
+            }
+            None => {
+                let mode = f.map_or_else(String::new, |f| format!(" in their {f:.2} Hz first longitudinal mode"));
+                format!(
+                    "{}: the ropes ring{mode}, which each change of acceleration excites; at t = {t:.2} s the tension \
+                     difference is {amp:.2} times the rigid ropes', so the {} is {v:.3} with the ropes' dynamics against \
+                     {rigid:.3} on rigid ropes",
+                    s.name, c.name
+                )
+            }
+        };
+        out.push(sentence);
     }
     out
 }

@@ -29,6 +29,7 @@ pub mod plot_series;
 pub mod plot_track;
 pub mod plot_wrap;
 pub mod plot_zones;
+pub mod rigid_dynamic_out;
 pub mod ropes_out;
 pub mod summary;
 pub mod table;
@@ -201,6 +202,9 @@ fn write_scene(
     if let Some(drive) = &scene.drive {
         write_drive(&scene_dir, &scene.name, drive, options.plots)?;
     }
+    if let Some(overlay) = &scene.rigid_dynamic {
+        write_rigid_dynamic(&scene_dir, &scene.name, overlay, options.plots)?;
+    }
     if options.plots {
         plot_scene(&scene_dir, summary, scene, wrap)?;
     }
@@ -310,6 +314,23 @@ fn write_drive(scene_dir: &Path, name: &str, drive: &crate::drive::SceneDrive, p
     if plots {
         let title = format!("{name} — torque and power at the pulley shaft");
         drive_out::plot_drive(&scene_dir.join("drive.png"), &title, drive, drive.inputs.overload_torque_n_m)?;
+    }
+    Ok(())
+}
+
+/// A duty cycle's rigid_dynamic.csv and (with plots) rigid_dynamic.png.
+fn write_rigid_dynamic(
+    scene_dir: &Path,
+    name: &str,
+    overlay: &crate::run::rigid_dynamic::RigidDynamic,
+    plots: bool,
+) -> Result<(), ReportError> {
+    let path = scene_dir.join("rigid_dynamic.csv");
+    let f = File::create(&path).map_err(io(&path))?;
+    rigid_dynamic_out::write_csv(BufWriter::new(f), overlay)
+        .map_err(|source| ReportError::Csv { path: path.display().to_string(), source })?;
+    if plots {
+        rigid_dynamic_out::plot(&scene_dir.join("rigid_dynamic.png"), name, overlay)?;
     }
     Ok(())
 }

@@ -226,6 +226,10 @@ pub struct SceneJson {
     /// Duty cycles: the drive's peak and RMS torque and power, energy per trip and per tonne.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub drive: Option<super::drive_out::DriveJson>,
+    /// Duty cycles with the ropes' dynamics: the overlay's governing instant and the dominant
+    /// longitudinal frequency, measured and the first mode's closed form.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rigid_dynamic: Option<super::rigid_dynamic_out::RigidDynamicJson>,
 }
 
 /// One followed element in summary.json: when it was on the pulley, its largest forces, its
@@ -372,6 +376,7 @@ impl Summary {
                         .as_ref()
                         .map(|r| super::ropes_out::RopesJson::of(r, design.rope.min_breaking_force_n)),
                     drive: s.drive.as_deref().map(super::drive_out::DriveJson::of),
+                    rigid_dynamic: s.rigid_dynamic.as_deref().map(super::rigid_dynamic_out::RigidDynamicJson::of),
                 })
                 .collect(),
             design_checks: run.design.as_ref().map(|d| d.checks.clone()),

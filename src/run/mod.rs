@@ -9,6 +9,7 @@ mod derive;
 mod design_checks;
 mod loads;
 pub mod rigid_beside;
+pub mod rigid_dynamic;
 mod ropes;
 pub mod sensitivity;
 mod speed;
@@ -255,6 +256,9 @@ pub struct SceneResult {
     /// Duty cycles: the drive's torque and power over the trip, with the ropes' dynamics and on
     /// rigid ropes ([`crate::drive`]).
     pub drive: Option<Box<crate::drive::SceneDrive>>,
+    /// Duty cycles with the ropes' dynamics: rigid and dynamic T1, T2 of the trip overlaid, the
+    /// governing instant and the dominant longitudinal frequency ([`rigid_dynamic`]).
+    pub rigid_dynamic: Option<Box<rigid_dynamic::RigidDynamic>>,
 }
 
 impl SceneResult {
@@ -473,6 +477,7 @@ fn empty(scene: &Scene, plan: Plan, classical: Classical) -> SceneResult {
         ropes: None,
         informational: scene.informational,
         drive: None,
+        rigid_dynamic: None,
     }
 }
 

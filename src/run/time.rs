@@ -127,6 +127,7 @@ pub(super) fn run_duty_cycle(
         let dynamics = &ropes.samples;
         let sf = code_beside(design, &mut result.classical, (rigid, &trip), &params);
         result.rope_dynamics_safety_factor = sf;
+        result.rigid_dynamic = super::rigid_dynamic::overlay(design, &result.classical, &trip, &params).map(Box::new);
         if let Some(history) = &mut result.history {
             history.anchors_n = history.rows.iter().map(|r| level4::anchors_at(dynamics, r.t_s)).collect();
             history.midpoints_n = history.rows.iter().map(|r| level4::midpoints_at(dynamics, r.t_s)).collect();

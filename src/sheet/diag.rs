@@ -158,7 +158,7 @@ impl<'a> Collector<'a> {
         }
         let field = unknown_field(&message).or_else(|| err.span().and_then(|s| self.key_before(s.start)));
         let key = field.map_or_else(|| section.to_string(), |f| join_key(section, &f));
-        self.push(err.span(), scene, &key, message);
+        self.push(err.span(), scene, &key, in_toml_words(&message));
     }
 
     /// The bare key of a `key = value` line whose value starts at `offset` (serde's type errors
@@ -198,4 +198,37 @@ pub(crate) fn did_you_mean<'a>(word: &str, candidates: impl IntoIterator<Item = 
 fn unknown_field(message: &str) -> Option<String> {
     let rest = message.strip_prefix("unknown field `")?;
     Some(rest[..rest.find('`')?].to_string())
+}
+
+/// A serde type error in the sheet's words: TOML's names of the types (a number, a whole number,
+/// an array, a table) for Rust's (`f64`, `u32`, sequence, map), and what would be valid.
+pub fn in_toml_words(message: &str) -> String {
+    if !message.starts_with("invalid type") {
+        return message.to_string();
+    }
+    let words = [
+        ("expected f64", "expected a number"),
+        ("expected f32", "expected a number"),
+        ("expected u8", "expected a whole number ≥ 0"),
+        ("expected u16", "expected a whole number ≥ 0"),
+        ("expected u32", "expected a whole number ≥ 0"),
+        ("expected u64", "expected a whole number ≥ 0"),
+        ("expected usize", "expected a whole number ≥ 0"),
+        ("expected i64", "expected a whole number"),
+        ("expected i32", "expected a whole number"),
+        ("sequence", "array"),
+        ("expected a map", "expected a table"),
+        ("expected map", "expected a table"),
+        ("floating point", "number with a decimal point"),
+    ];
+    let mut out = message.to_string();
+    for (rust, toml) in words {
+        out = out.replace(rust, toml);
+    }
+    if let Some(i) = out.find("expected struct ") {
+        // `expected struct RawPulley`: a section or sub-table.
+        let end = out[i + 16..].find(|c: char| !c.is_alphanumeric()).map_or(out.len(), |e| i + 16 + e);
+        out.replace_range(i..end, "expected a table of keys");
+    }
+    out
 }

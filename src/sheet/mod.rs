@@ -21,6 +21,7 @@ mod machine;
 mod outputs;
 mod raw;
 mod reference;
+mod repair;
 mod requirements;
 mod ropes;
 mod rules;
@@ -40,7 +41,6 @@ pub use schema::{SCHEMA_FILE, json_schema, schema_text};
 use crate::design::Design;
 use diag::Collector;
 use serde::Deserialize;
-use serde::de::IntoDeserializer;
 use std::path::Path;
 use toml::Spanned;
 use toml::de::{DeTable, DeValue};
@@ -222,19 +222,13 @@ fn read_sections(c: &mut Collector, root: Spanned<DeTable<'_>>) -> validate::Sec
     sections
 }
 
-/// Deserializes one section, recording its error.
+/// Deserializes one section, recording its errors (a type error does not hide the others).
 fn section<T: for<'de> Deserialize<'de>>(
     c: &mut Collector,
     value: Spanned<DeValue<'_>>,
     name: &str,
 ) -> Option<Spanned<T>> {
-    match Spanned::<T>::deserialize(value.into_deserializer()) {
-        Ok(v) => Some(v),
-        Err(e) => {
-            c.push_toml(&e, None, name);
-            None
-        }
-    }
+    repair::deserialize_all(c, value, None, name)
 }
 
 /// The `[[scene]]` array: each table deserialized on its own (`None` where it failed).
@@ -251,13 +245,7 @@ fn scene_tables(c: &mut Collector, value: Spanned<DeValue<'_>>) -> Vec<scene::Sc
                         .find(|(k, _)| k.get_ref() == "name")
                         .and_then(|(_, v)| v.get_ref().as_str().map(str::to_string))
                 });
-                let raw = match Spanned::<raw::RawScene>::deserialize(item.into_deserializer()) {
-                    Ok(v) => Some(v),
-                    Err(e) => {
-                        c.push_toml(&e, name.as_deref(), &label);
-                        None
-                    }
-                };
+                let raw = repair::deserialize_all::<raw::RawScene>(c, item, name.as_deref(), &label);
                 scene::SceneSlot { label, raw }
             })
             .collect(),

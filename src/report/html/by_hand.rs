@@ -86,7 +86,7 @@ fn case_name(run: &RunResult, case: Case) -> &str {
 
 /// 7. Every check once, with everything needed to redo it by hand.
 pub fn details(out: &mut String, ctx: &Context) -> io::Result<()> {
-    out.push_str("<p>Each check once, with the inputs and intermediate values of its governing case (the least margin to its limit); its values in the other cases follow it, and every case's verdict is in the verdict table. Tensions per rope; σ = ∞ when T1 = T2.</p>\n");
+    out.push_str("<p>Each check once, with the inputs and intermediate values of its governing case (the least margin to its limit); its values in the other cases follow it, and every case's verdict is in Appendix B, table B.4. Tensions per rope; σ = ∞ when T1 = T2.</p>\n");
     for e in evaluated(ctx.run) {
         let (case, c) = e.governing;
         let where_ = match case {

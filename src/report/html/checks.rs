@@ -51,10 +51,23 @@ pub fn load_cases(out: &mut String, ctx: &Context) -> io::Result<()> {
         out.push_str("<p class=\"note\">The sheet has no <code>[load_cases]</code>: the design checks are taken over the scenes' states at rest.</p>\n");
         return Ok(());
     };
+    let _ = writeln!(
+        out,
+        "<p class=\"note\"><b>Load-case matrix:</b> {} cases, {} with the ropes' dynamics; each case's tensions, safety factors and verdict are in <a href=\"#appendix-tables\">{}</a>, table B.3.</p>",
+        m.cases.len(),
+        m.rope_dynamics_runs,
+        super::appendix_tables::APPENDIX_B
+    );
+    Ok(())
+}
+
+/// Table B.3, the load-case matrix: its grid, then a row per case (nothing without one).
+pub(super) fn matrix_table(out: &mut String, ctx: &Context) {
+    let Some(m) = ctx.run.design.as_ref().and_then(|d| d.matrix.as_ref()) else { return };
     let payloads: Vec<String> = m.payloads_kg.iter().map(|p| format!("{p:.0}")).collect();
     let _ = writeln!(
         out,
-        "<h3>Load-case matrix</h3><p>Payloads {} kg; travel {:.2} m, top speed {:.3} m/s, acceleration {:.3} m/s², \
+        "<h3>B.3. Load-case matrix (section 5)</h3><p>Payloads {} kg; travel {:.2} m, top speed {:.3} m/s, acceleration {:.3} m/s², \
          deceleration {:.3} m/s²; emergency stops: {}; {} cases, {} with the ropes' dynamics.</p>",
         payloads.join(", "),
         m.travel_m,
@@ -98,7 +111,6 @@ pub fn load_cases(out: &mut String, ctx: &Context) -> io::Result<()> {
         "verdict",
     ];
     table(out, "small", &header, rows);
-    Ok(())
 }
 
 /// 6. Verdicts: the scenes, then every check with its limit and margin.
@@ -123,6 +135,17 @@ pub fn verdicts(out: &mut String, ctx: &Context) -> io::Result<()> {
     });
     out.push_str("<h3>Scenes</h3>\n");
     table(out, "small", &["scene", "lvl", "T1 kN", "T2 kN", "ratio", "e^{μα}", "σ_s", "σ_d", "verdict"], scenes);
+    let n = checklist::rows(ctx.run).len();
+    let _ = writeln!(
+        out,
+        "<p class=\"note\"><b>Every check:</b> the {n} checks of the scenes and the design, each with its value, limit, margin, verdict, rule and governing case, are in <a href=\"#appendix-tables\">{}</a>, table B.4; the failures and warnings are on page 1, and section 7 gives each check's governing case in full and its values in the other cases.</p>",
+        super::appendix_tables::APPENDIX_B
+    );
+    Ok(())
+}
+
+/// Table B.4, every check of the scenes and the design with its limit and margin.
+pub(super) fn every_check(out: &mut String, ctx: &Context) {
     let rows = checklist::rows(ctx.run).into_iter().map(|r| {
         let c = r.check;
         vec![
@@ -136,14 +159,13 @@ pub fn verdicts(out: &mut String, ctx: &Context) -> io::Result<()> {
             esc(c.governing_case.as_deref().unwrap_or("")),
         ]
     });
-    out.push_str("<h3>Every check</h3>\n<p class=\"note\">Margin: value/limit − 1 for a minimum, 1 − value/limit for a maximum; negative where the limit is violated. Rule: the rule set and clause a limit comes from; <i>sheet</i> a limit the sheet gives, <i>default</i> wrapcalc's default, <i>computed</i> a limit that follows from the design (the checks by hand give each in full).</p>\n");
+    out.push_str("<h3>B.4. Every check (section 6)</h3>\n<p class=\"note\">Margin: value/limit − 1 for a minimum, 1 − value/limit for a maximum; negative where the limit is violated. Rule: the rule set and clause a limit comes from; <i>sheet</i> a limit the sheet gives, <i>default</i> wrapcalc's default, <i>computed</i> a limit that follows from the design (the checks by hand give each in full).</p>\n");
     table(
         out,
         "small verdicts",
         &["scene", "check", "value", "limit", "margin", "verdict", "rule (code: clause)", "governing case"],
         rows,
     );
-    Ok(())
 }
 
 /// The rule of a limit in the verdicts table: a rule set's id and clause; only the kind for the

@@ -25,7 +25,13 @@ pub fn notes(out: &mut String, ctx: &Context) {
         let _ = writeln!(out, "<p class=\"warning\"><b>What would make it pass:</b> {}.</p>", esc(&t));
     }
     let _ = writeln!(out, "<p class=\"note\">{}.</p>", esc(&damping_sentence(&d)));
-    sensitivity_table(out, ctx);
+    if has_sensitivity(ctx) {
+        let _ = writeln!(
+            out,
+            "<p class=\"note\">The checks decided by the ropes' dynamics at the ends of the uncertain inputs' ranges: <a href=\"#appendix-tables\">{}</a>, table B.2.</p>",
+            super::appendix_tables::APPENDIX_B
+        );
+    }
     if let Some(w) = d.warning {
         let _ = writeln!(
             out,
@@ -36,9 +42,14 @@ pub fn notes(out: &mut String, ctx: &Context) {
     out.push_str("</section>\n");
 }
 
+/// Whether a check of the run has a `sensitivity`.
+pub(super) fn has_sensitivity(ctx: &Context) -> bool {
+    ctx.run.scenes.iter().any(|s| s.classical.checks.iter().any(|c| !c.sensitivity.is_empty()))
+}
+
 /// The table of the checks decided by the ropes' dynamics at the ends of the uncertain inputs'
-/// ranges (their `sensitivity`; nothing when no check has one).
-fn sensitivity_table(out: &mut String, ctx: &Context) {
+/// ranges (their `sensitivity`; nothing when no check has one), in Appendix B.
+pub(super) fn sensitivity_table(out: &mut String, ctx: &Context) {
     let rows: Vec<_> = ctx
         .run
         .scenes
@@ -48,7 +59,7 @@ fn sensitivity_table(out: &mut String, ctx: &Context) {
     if rows.is_empty() {
         return;
     }
-    out.push_str("<h3>Sensitivity of the checks decided by the ropes' dynamics</h3>\n<table class=\"sensitivity\">\n");
+    out.push_str("<h3>B.2. Sensitivity of the checks decided by the ropes' dynamics (page 1)</h3>\n<table class=\"sensitivity\">\n");
     out.push_str(
         "<tr><th>scene</th><th>check</th><th>as run</th><th>input</th><th>low</th><th>value, verdict</th>\
          <th>high</th><th>value, verdict</th><th>verdict changes</th><th>range from</th><th>threshold</th></tr>\n",

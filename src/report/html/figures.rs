@@ -12,7 +12,7 @@ use std::fmt::Write;
 use std::io;
 
 /// The figures a scene folder may hold, and what to read in each.
-pub const FIGURES: [(&str, &str); 5] = [
+pub const FIGURES: [(&str, &str); 6] = [
     (
         "distribution.png",
         "Tension T(θ) and friction q(θ) within its Coulomb bounds ±μn over the wrap: read where friction is positive (dark red shade) or reverse (light blue shade) at the Coulomb limit, hatched where the rope slips, and the demarcation point (JDP).",
@@ -29,11 +29,21 @@ pub const FIGURES: [(&str, &str); 5] = [
         "wrap_map.png",
         "Friction utilization |q|/μn over time (across) and the wrap (θ, up), signed by the friction's direction as its colour bar shows (positive dark red, reverse light blue, none near-white; the two apart in greyscale too); the JDP in black, a line where it moves continuously and a short mark per output step where it jumps: read how the pattern moves round the wrap.",
     ),
+    OVERLAY,
     (
         "ropes.png",
         "Each rope's end tensions through the trip (a dash pattern per rope) and the mean rope (the solid line) that the other figures show: read how far the most loaded rope departs from the mean and where its share builds up or is relieved.",
     ),
 ];
+
+/// The overlay of rigid and dynamic tensions, and its caption.
+const OVERLAY: (&str, &str) = (
+    "rigid_dynamic.png",
+    "End tensions T1 (top) and T2 (bottom) per rope with the suspended ropes' dynamics (solid) and on rigid ropes along the same motion (dashed): read how far each change of acceleration makes the ropes ring about the rigid tensions, the dominant frequency (dots: the crossings of T − T_rigid it is measured from, its value in the legend and the title beside the first mode's closed form) and the governing instant of the checks decided by the ropes' dynamics (vertical line).",
+);
+
+/// The checks decided by the ropes' dynamics, whose governing scene's overlay joins the main body.
+const ROPE_CHECKS: [&str; 2] = [crate::model::level4::ROPE_DYNAMICS_CHECK, crate::model::level0::GROSS_SLIP_CHECK];
 
 /// The figure that decides a scene's checks: a time scene's history (its end tensions and its
 /// safety factor over time against the minimum, the governing instant among them); a steady
@@ -64,6 +74,11 @@ fn placement(ctx: &Context) -> (Vec<Figure>, Vec<Figure>) {
         let file = deciding(ctx, *i);
         for (file, caption) in FIGURES.iter().filter(|(f, _)| *f == file && exists(*i, f)) {
             main.push(Figure { scene: *i, file, caption, decides: names.clone() });
+        }
+        // Beside the checks decided by the ropes' dynamics: the rigid and dynamic tensions overlaid.
+        let rope_checks: Vec<&'static str> = names.iter().copied().filter(|n| ROPE_CHECKS.contains(n)).collect();
+        if !rope_checks.is_empty() && exists(*i, OVERLAY.0) {
+            main.push(Figure { scene: *i, file: OVERLAY.0, caption: OVERLAY.1, decides: rope_checks });
         }
     }
     for i in 0..ctx.run.scenes.len() {

@@ -7,7 +7,6 @@
 use super::keys::{self, unit_of};
 use super::{Context, esc, table};
 use crate::design::WrapSource;
-use crate::design::inputs::InputSource;
 use std::collections::BTreeSet;
 use std::fmt::Write;
 use std::io;
@@ -69,7 +68,7 @@ fn meaning_html(section: &str, key: &str) -> String {
 pub fn inputs(out: &mut String, ctx: &Context) -> io::Result<()> {
     let doc: toml::Value = toml::from_str(&ctx.provenance.sheet_text)
         .map_err(|e| io::Error::new(io::ErrorKind::InvalidData, format!("the sheet does not parse again: {e}")))?;
-    out.push_str("<p class=\"note\">The sheet's values by component, as written; SI units, angles in degrees, tensions per rope, masses for all ropes together. The keys not in the sheet whose defaults (or rule-set values) the run used follow the sheet's values, each with its basis.</p>\n");
+    out.push_str("<p class=\"note\">The sheet's values by component, as written; SI units, angles in degrees, tensions per rope, masses for all ropes together. The keys not in the sheet whose defaults (or rule-set values) the run used are listed with their bases in Appendix B.</p>\n");
     let mut shown_sections = vec![];
     for g in &GROUPS {
         let Some(t) = section(&doc, g.section) else { continue };
@@ -82,36 +81,12 @@ pub fn inputs(out: &mut String, ctx: &Context) -> io::Result<()> {
         }
     }
     other_sections(out, &doc, &shown_sections);
-    not_in_sheet(out, ctx);
+    super::appendix_tables::pointer_to_defaults(out, ctx);
     stages(out, &doc);
     scenes(out, &doc);
     out.push_str("<h3>Derived values</h3>\n");
     table(out, "small", &["quantity", "value", "unit", "from"], derived(ctx));
     Ok(())
-}
-
-/// The inputs the sheet does not write: each default and rule-set value the run used, marked
-/// as such, with the basis of its value.
-fn not_in_sheet(out: &mut String, ctx: &Context) {
-    let rows: Vec<Vec<String>> = ctx
-        .design
-        .inputs
-        .iter()
-        .filter(|i| i.source != InputSource::Sheet)
-        .map(|i| {
-            vec![
-                format!("<code>{}</code>", esc(&i.key)),
-                format!("<span class=\"mono\">{}</span>", esc(&i.value)),
-                i.unit.to_string(),
-                format!("<b>{}</b>", i.source.label()),
-                esc(&i.basis),
-            ]
-        })
-        .collect();
-    if !rows.is_empty() {
-        out.push_str("<h3>Not in the sheet: defaults and rule-set values used</h3>\n");
-        table(out, "small inputs", &["key", "value", "unit", "source", "basis"], rows);
-    }
 }
 
 /// A value of its own key: not a sub-section or a list of tables (a requirement's inline

@@ -6,10 +6,12 @@
 //! each check; verdicts (the pass/fail table with margins); the checks with formula, inputs and
 //! intermediate values, each check once; the figures that decide a check; software (version, the
 //! sheet's SHA-256, the command line, and accuracy evidence computed by this build). Then,
-//! unless `[document] appendix_figures = false`, Appendix A: every other figure, two to a page.
+//! unless `[document] appendix_figures = false`, Appendix A: every other figure, two to a page;
+//! then Appendix B: the tables looked up rather than read (the defaults used, the sensitivity).
 //!
 //! Every check is rendered from the same [`crate::check::Check`] records as the terminal table.
 
+mod appendix_tables;
 mod by_hand;
 mod checks;
 mod confirm;
@@ -143,6 +145,9 @@ pub fn render(ctx: &Context) -> std::io::Result<String> {
     if appendix {
         let _ = write!(out, "<p><a href=\"#appendix\">{APPENDIX}</a></p>");
     }
+    if appendix_tables::has_tables(ctx) {
+        let _ = write!(out, "<p><a href=\"#appendix-tables\">{}</a></p>", appendix_tables::APPENDIX_B);
+    }
     out.push_str("</nav>\n");
     for (i, (anchor, name, render)) in SECTIONS.iter().enumerate() {
         let _ = writeln!(out, "<section id=\"{anchor}\"><h2>{}. {}</h2>", i + 1, esc(name));
@@ -155,6 +160,7 @@ pub fn render(ctx: &Context) -> std::io::Result<String> {
         figures::appendix(&mut out, ctx)?;
         out.push_str("</section>\n");
     }
+    appendix_tables::appendix(&mut out, ctx);
     out.push_str("</body></html>\n");
     Ok(out)
 }

@@ -58,7 +58,7 @@ nav ol { columns: 2; }
 @media print {
   body { max-width: none; margin: 0; padding: 0; font-size: 9pt; }
   nav { break-after: page; }
-  section#checks, section#figures, section#appendix { break-before: page; }
+  section#checks, section#figures, section#appendix, section#appendix-tables { break-before: page; }
   section#load-cases table.small { font-size: 7pt; line-height: 1.15; }
   table.verdicts { font-size: 7pt; line-height: 1.15; }
   table.small td, table.small th { padding: 1px 3px; }
