@@ -33,6 +33,8 @@ pub struct RopeDamping {
     pub range_low: f64,
     /// The high end of the plausible range stated with the default.
     pub range_high: f64,
+    /// Where the range comes from: the default bracket, or the sheet's `[sensitivity]` section.
+    pub range_source: InputSource,
     /// [`UNDAMPED_WARNING`] when ζ = 0.
     pub warning: Option<&'static str>,
 }
@@ -46,6 +48,7 @@ impl RopeDamping {
             basis: ROPE_DAMPING_BASIS,
             range_low: ROPE_DAMPING_RANGE.0,
             range_high: ROPE_DAMPING_RANGE.1,
+            range_source: InputSource::Default,
             warning: (ratio == 0.0).then_some(UNDAMPED_WARNING),
         }
     }

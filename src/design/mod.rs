@@ -167,10 +167,15 @@ impl Hoist {
 
 impl Design {
     /// The rope damping the sheet's duty cycles run with, when it has any (`None` without a
-    /// `[hoist]` or without a `duty-cycle` scene: no result depends on it then).
+    /// `[hoist]` or without a `duty-cycle` scene: no result depends on it then), with the range
+    /// of the sheet's `[sensitivity]` section when it gives one.
     pub fn duty_cycle_damping(&self) -> Option<damping::RopeDamping> {
         let cycles = self.scenes.iter().any(|s| matches!(s.kind, SceneKind::DutyCycle(_)));
-        self.hoist.as_ref().filter(|_| cycles).map(Hoist::rope_damping)
+        let mut d = self.hoist.as_ref().filter(|_| cycles).map(Hoist::rope_damping)?;
+        if let Some((low, high, source)) = self.sensitivity.of(sensitivity::Parameter::RopeDamping, self) {
+            (d.range_low, d.range_high, d.range_source) = (low, high, source);
+        }
+        Some(d)
     }
 
     /// Equivalent mass of the guide sheave on each side, `J_g/R_g²` (kg; `[0, 0]` without one).

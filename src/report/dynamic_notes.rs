@@ -16,8 +16,12 @@ pub fn damping_sentence(d: &RopeDamping) -> String {
             format!("{} ([hoist] rope_damping_ratio not in the sheet)", d.source.label())
         }
     };
+    let range = match d.range_source {
+        InputSource::Sheet => "range given in [sensitivity]",
+        InputSource::Default | InputSource::RuleSet => "plausible range",
+    };
     format!(
-        "Rope damping ζ = {} of the first longitudinal mode, {from}; plausible range {}–{}. Basis of the {}",
+        "Rope damping ζ = {} of the first longitudinal mode, {from}; {range} {}–{}. Basis of the {}",
         d.ratio, d.range_low, d.range_high, d.basis
     )
 }
