@@ -220,21 +220,15 @@ fn rows_mirror(p: Params, samples: &[HistorySample], step_s: Option<f64>, tol_de
     Ok(())
 }
 
-/// How closely a demarcation and its mirror's agree (deg). Both are the ends of the same
-/// pieces built from opposite ends, their angles agreeing to the round-off of the pulley's turn
-/// accumulated over the history (a few ulps of 2π per increment); a rule that depends on the
-/// frame (the end of a run at a row or a gap's start) shows as a node spacing or a gap, 0.1°
-/// and more.
+/// How closely a demarcation and its mirror's agree (deg), in every family, the repairs of a
+/// rising m'v² among them. Both are the ends of the same pieces built from opposite ends, their
+/// angles agreeing to the round-off of the pulley's turn accumulated over the history (a few
+/// ulps of 2π per increment); a rule that depends on the frame (the end of a run at a row or a
+/// gap's start) shows as a node spacing or a gap, 0.1° and more, and a repair that reads the
+/// stuck rope's tension on the piece to the left of a zone's end whichever side the zone is on
+/// as 2.0e-9° (t = 1.522 s of one m'v² history, a demarcation at 155.461194535°) and 2.4e-9°
+/// (the reference hoist's trip at μ 0.254 with 13.8 t, t = 5.8 s, at 172.598512481°).
 const MIRROR_DEG: f64 = 1e-9;
-
-/// The same where m'v² rises beside zones at the limit: the repair of stuck rope put beyond the
-/// limit lays its new pieces from the end it works from, and its boundaries agree with the
-/// mirror's only to the repair's residue (measured: 2.0e-9° at t = 1.522 s of one history, a
-/// demarcation at 155.461194535°; and in the reference hoist's duty cycle at μ 0.254 with
-/// 13.8 t, 2.4e-9° at t = 5.8 s, while accelerating, at 172.598512481° — with or without an
-/// emergency stop later in the trip); kept at the arcs' placement, 1e-6°, until the repair
-/// mirrors to round-off.
-const REPAIRED_DEG: f64 = 1e-6;
 
 /// Which of its row's demarcations the JDP is.
 fn jdp_index(row: &HistoryRow) -> Option<usize> {
@@ -273,7 +267,7 @@ proptest! {
     #[test]
     fn changes_of_centrifugal_force_next_to_zones_at_the_limit_mirror((p, samples) in limit_history()) {
         mirror_at_every_sample(p, &samples)?;
-        rows_mirror(p, &samples, None, REPAIRED_DEG)?;
+        rows_mirror(p, &samples, None, MIRROR_DEG)?;
     }
 }
 
@@ -287,7 +281,7 @@ proptest! {
         let (_, samples) = duty_cycle_history(payload, None);
         let p = reference_wrap(mu);
         mirror_at_every_sample(p, &samples)?;
-        rows_mirror(p, &samples, Some(DUTY_ROW_STEP_S), REPAIRED_DEG)?;
+        rows_mirror(p, &samples, Some(DUTY_ROW_STEP_S), MIRROR_DEG)?;
     }
 
     /// The same with an emergency stop at 2–58 s braking at 0.8–4 m/s²: the ropes ring after the
@@ -297,7 +291,7 @@ proptest! {
         let (_, samples) = duty_cycle_history(payload, Some((stop_s, decel)));
         let p = reference_wrap(mu);
         mirror_at_every_sample(p, &samples)?;
-        rows_mirror(p, &samples, Some(DUTY_ROW_STEP_S), REPAIRED_DEG)?;
+        rows_mirror(p, &samples, Some(DUTY_ROW_STEP_S), MIRROR_DEG)?;
     }
 }
 
