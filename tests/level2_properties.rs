@@ -379,7 +379,7 @@ speed_m_s = -6.0
     let scenes: Vec<_> = design.scenes.iter().collect();
     let at = |level: u8| {
         let options = Options {
-            request: wrapcalc::plan::Request::Full { forced_level: wrapcalc::plan::Level::from_number(level) },
+            request: wrapcalc::plan::Request::Full { forced_level: wrapcalc::model::Level::from_number(level) },
             nodes: 360,
             ..Options::default()
         };

@@ -300,7 +300,8 @@ fn sheet_keys_derive_the_lining_and_bending_stiffness() {
 /// and `--level 3` forces it; without one, `--level 3` is an error naming the section.
 #[test]
 fn the_planner_switches_level_3_on_with_the_lining() {
-    use wrapcalc::plan::{Level, PlanError, Request, plan_with_lining, wrap_level};
+    use wrapcalc::model::Level;
+    use wrapcalc::plan::{PlanError, Request, plan_with_lining, wrap_level};
     let design = wrapcalc::sheet::parse("l3.toml", LINING_SHEET).expect("valid sheet");
     let auto = Request::Full { forced_level: None };
     let forced3 = Request::Full { forced_level: Some(Level::Elastic3) };
@@ -326,7 +327,7 @@ fn a_history_scene_runs_at_level_3() {
     let scenes: Vec<_> = design.scenes.iter().take(1).collect();
     let result = run(&design, &scenes, Options { nodes: 90, ..Options::default() }).expect("runs");
     let scene = &result.scenes[0];
-    assert_eq!(scene.plan.level, wrapcalc::plan::Level::Elastic3);
+    assert_eq!(scene.plan.level, wrapcalc::model::Level::Elastic3);
     let wrap = scene.wrap.as_ref().expect("a distribution");
     for d in scene.snapshots.iter().chain([&wrap.distribution]) {
         for s in &d.samples {

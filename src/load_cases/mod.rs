@@ -17,10 +17,10 @@ pub mod rigid;
 
 use crate::check::Check;
 use crate::design::{Design, Direction, Phase};
+use crate::model::Level;
 use crate::model::level0::EndState;
 use crate::model::level4::Level4Error;
 use crate::model::stop::{SlipOnset, StopReport};
-use crate::plan::Level;
 use serde::Serialize;
 use std::time::Instant;
 

@@ -22,7 +22,7 @@ pub const BALANCED: &str = "∞ (balanced)";
 
 /// Whether the case runs the suspended ropes (its dynamic factor is then the rope-dynamics one).
 fn level4(c: &CaseResult) -> bool {
-    c.level == crate::plan::Level::Dynamic4
+    c.level == crate::model::Level::Dynamic4
 }
 
 /// The case's factor with the suspended ropes' dynamics: only level-4 cases have one.

@@ -8,9 +8,10 @@ use super::{Options, RunError, SceneContext, SceneResult};
 use crate::check::{Check, Sensitivity, Verdict};
 use crate::design::damping::ROPE_DAMPING_RANGE;
 use crate::design::{Design, DutyCycleScene, Scene};
+use crate::model::Level;
 use crate::model::level0::GROSS_SLIP_CHECK;
 use crate::model::level4::ROPE_DYNAMICS_CHECK;
-use crate::plan::{Level, Plan};
+use crate::plan::Plan;
 
 /// The sheet's name of the damping ratio, as a sensitivity record names it.
 pub const DAMPING_PARAMETER: &str = "hoist.rope_damping_ratio";

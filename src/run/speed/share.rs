@@ -11,8 +11,9 @@
 //! change nothing of the other's), and each goes on from its state ([`WrapPair`]).
 
 use crate::design::{Design, Scene, SceneKind};
+use crate::model::Level;
 use crate::model::level4::shared::RopePlan;
-use crate::plan::{self, Level};
+use crate::plan;
 use crate::run::Options;
 use crate::run::wrap_run::WrapKeep;
 
