@@ -296,6 +296,12 @@ pub fn run(design: &Design, scenes: &[&Scene], options: Options) -> Result<RunRe
 
 /// The estimated cost of each scene ([`crate::plan::cost`]), refusing one above the limit.
 pub fn estimate(design: &Design, scenes: &[&Scene], options: Options) -> Result<Vec<Estimate>, RunError> {
+    Ok(planned(design, scenes, options)?.into_iter().map(|(_, e)| e).collect())
+}
+
+/// Each scene's plan with its estimated cost ([`estimate`]): the plan is made here, once per
+/// scene, and carried to the scene's run.
+fn planned(design: &Design, scenes: &[&Scene], options: Options) -> Result<Vec<(Plan, Estimate)>, RunError> {
     if options.nodes == 0 || options.nodes > MAX_NODES {
         return Err(RunError::Nodes(options.nodes));
     }
@@ -311,7 +317,7 @@ pub fn estimate(design: &Design, scenes: &[&Scene], options: Options) -> Result<
                     limit_s: options.cost_limit_s,
                 });
             }
-            Ok(e)
+            Ok((plan, e))
         })
         .collect()
 }
@@ -324,7 +330,7 @@ pub fn run_with_progress(
     options: Options,
     progress: &(dyn Fn(f64) + Sync),
 ) -> Result<RunResult, RunError> {
-    let estimates = estimate(design, scenes, options)?;
+    let (plans, estimates): (Vec<Plan>, Vec<Estimate>) = planned(design, scenes, options)?.into_iter().unzip();
     let start = Instant::now();
     // With fewer scenes than threads, a scene steps the two sides of its suspended ropes on two
     // threads; with more, the scenes keep the cores busy and the paired steps are cheaper. A
@@ -337,7 +343,7 @@ pub fn run_with_progress(
     let one = |i: usize, e: Estimate, prefix: Option<&RopePrefix>, wrap: WrapShare| {
         let seconds = e.seconds;
         let context = SceneContext { parallel_sides, prefix, wrap };
-        let (result, kept) = match run_scene(design, scenes[i], options, context) {
+        let (result, kept) = match run_scene(design, scenes[i], &plans[i], options, context) {
             Ok((r, kept, work)) => (Ok((Box::new(SceneResult { cost: Some(e), ..r }), work)), kept),
             Err(e) => (Err(e), Vec::new()),
         };
@@ -350,7 +356,7 @@ pub fn run_with_progress(
     let groups = if parallel_sides || rayon::current_thread_index().is_some() {
         Vec::new()
     } else {
-        speed::share::groups(design, scenes, options)
+        speed::share::groups(design, scenes, &plans)
     };
     let (mut done, shared) = if groups.is_empty() {
         let mut queue: Vec<(usize, Estimate)> = estimates.into_iter().enumerate().collect();
@@ -422,11 +428,12 @@ struct SceneContext<'a> {
 fn run_scene(
     design: &Design,
     scene: &Scene,
+    plan: &Plan,
     options: Options,
     context: SceneContext,
 ) -> Result<(SceneResult, Kept, Work), RunError> {
     let start = Instant::now();
-    let plan = plan::plan_with_lining(scene, options.request, design.lining.is_some())?;
+    let plan = plan.clone();
     let spare_core = context.parallel_sides;
     let (mut result, ropes, kept, mut work) = match &scene.kind {
         SceneKind::Loads(loads) => {
