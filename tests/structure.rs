@@ -246,3 +246,50 @@ fn no_import_runs_back_up() {
         up.iter().map(|(f, s)| format!("{f} imports crate::{s}")).collect::<Vec<_>>().join("\n")
     );
 }
+
+/// The places besides the one history runner (`model/history/`) that step a wrap model through
+/// a history (`.advance_to(`), each with why it is not a second runner.
+const STEPPERS: &[(&str, &str)] = &[
+    ("model/track/mod.rs", "rope tracks: a second pass on their own grid, each element's entry and exit"),
+    ("run/wrap_run.rs", "the elastic lining's rolling start: one step to the end of its steady run-in, no rows"),
+    ("bench/model_time.rs", "the benchmark of the bare model: its steps and summaries timed without the rows"),
+];
+
+/// The files of `files` that step a wrap model outside the runner and the named places, or
+/// define a `run_history` of their own.
+fn second_runners(files: &[(String, String)]) -> Vec<String> {
+    let mut out = Vec::new();
+    for (rel, text) in files {
+        let code: String = text.lines().map(|l| code_of(l) + "\n").collect();
+        let steps = code.contains(".advance_to(") && !rel.starts_with("model/history/");
+        if steps && !STEPPERS.iter().any(|(f, _)| f == rel) {
+            out.push(format!("{rel} steps a wrap model through a history"));
+        }
+        if code.lines().any(|l| opens_fn(l) && (l.contains("fn run_history(") || l.contains("fn run_history<"))) {
+            out.push(format!("{rel} defines a run_history"));
+        }
+    }
+    out
+}
+
+#[test]
+fn one_history_runner() {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut paths = Vec::new();
+    sources(&src, &mut paths);
+    let files: Vec<(String, String)> = paths
+        .iter()
+        .map(|f| {
+            let rel = f.strip_prefix(&src).unwrap_or(f).to_string_lossy().replace('\\', "/");
+            (rel, std::fs::read_to_string(f).expect("a source file"))
+        })
+        .collect();
+    let second = second_runners(&files);
+    assert!(second.is_empty(), "a history runner beside model::history::run:\n{}", second.join("\n"));
+    // The scanner sees a runner of its own and a wrapper by the old name.
+    let made = [
+        ("model/level9.rs".to_string(), "fn go(m: &mut M) {\n    for t in ts { m.advance_to(t)?; }\n}\n".to_string()),
+        ("model/level8.rs".to_string(), "pub fn run_history(p: P) -> R {\n    history::run(p)\n}\n".to_string()),
+    ];
+    assert_eq!(second_runners(&made).len(), 2);
+}
