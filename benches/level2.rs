@@ -4,9 +4,9 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
-use wrapcalc::model::history::{HistorySample, Output};
+use wrapcalc::model::history::{self, HistorySample, Output};
 use wrapcalc::model::level2::envelope::Envelopes;
-use wrapcalc::model::level2::{Params, Profile, Solver, clamp, qp, run_history};
+use wrapcalc::model::level2::{Params, Profile, Simulation, Solver, clamp, qp};
 use wrapcalc::numerics::roots::RootStats;
 
 const MU: f64 = 0.25;
@@ -36,14 +36,11 @@ fn bench(c: &mut Criterion) {
     {
         group.bench_function(name, |b| {
             b.iter(|| {
-                run_history(
-                    params(Solver::Fast),
-                    black_box(&samples),
-                    output,
-                    Profile::uniform(alpha(), 2.0e5, MU),
-                    180,
-                )
-                .expect("runs")
+                let samples = black_box(&samples);
+                let initial = Profile::uniform(alpha(), 2.0e5, MU);
+                history::run(Simulation::new(params(Solver::Fast), samples, initial), samples, output, 180)
+                    .expect("runs")
+                    .0
             })
         });
     }

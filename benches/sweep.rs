@@ -19,7 +19,7 @@ fn bench(c: &mut Criterion) {
     };
     let mut group = c.benchmark_group("sweep_10000_points");
     group.sample_size(10);
-    for (name, level) in [("level0", Some(wrapcalc::plan::Level::Closed0)), ("level1_auto", None)] {
+    for (name, level) in [("level0", Some(wrapcalc::model::Level::Closed0)), ("level1_auto", None)] {
         let spec = spec(level);
         group.bench_function(name, |b| {
             b.iter(|| {

@@ -313,6 +313,6 @@ fn check_only_request_builds_no_distribution() {
     let scenes: Vec<_> = d.scenes.iter().collect();
     let r =
         run::run(&d, &scenes, Options { request: Request::ChecksOnly, nodes: 90, ..Options::default() }).expect("run");
-    assert_eq!(r.scenes[0].plan.level, wrapcalc::plan::Level::Closed0);
+    assert_eq!(r.scenes[0].plan.level, wrapcalc::model::Level::Closed0);
     assert!(r.scenes[0].wrap.is_none());
 }

@@ -13,8 +13,9 @@
 //!   lowering: d = (F_b − 19 620)/M = 40 380/22 806.2832 = 1.770565 m/s².
 
 use wrapcalc::design::{Design, SceneKind};
+use wrapcalc::model::Level;
 use wrapcalc::model::{braking, level4, stop};
-use wrapcalc::plan::{Level, Request};
+use wrapcalc::plan::Request;
 use wrapcalc::run::{self, Options, SceneResult};
 use wrapcalc::sheet;
 

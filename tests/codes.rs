@@ -186,7 +186,10 @@ fn sheet_limit_overrides_the_rule_set() {
     assert_eq!(out.status.code(), Some(2), "{}", String::from_utf8_lossy(&out.stderr));
     let html = std::fs::read_to_string(out_dir.join("report.html")).expect("report.html");
     let basis = &html[html.find("Basis").expect("a Basis section")..];
-    assert!(basis.contains("Rule set `us-va-coal`") && basis.contains(codes::CONFIRM_NOTICE), "Basis heading");
+    assert!(
+        basis.contains("Rule set `us-va-coal`") && basis.contains(wrapcalc::design::CONFIRM_NOTICE),
+        "Basis heading"
+    );
     assert!(basis.contains("Overridden by the sheet: <code>rope_safety_factor_min</code> = 40"), "override named");
     let stdout = String::from_utf8_lossy(&out.stdout);
     assert!(stdout.contains("rule:    sheet: the sheet's own limit"), "{stdout}");

@@ -96,7 +96,7 @@ fn level4_estimate_is_rope_elements_times_the_steps_taken() {
     let e = estimate_of(&design, "duty-MID", Options::default());
     let ropes = e.parts.iter().find(|p| p.unit == "rope element-steps").expect("a rope part");
     assert_eq!(ropes.work, 24.0 * steps as f64, "{e:?}");
-    assert_eq!(e.level, wrapcalc::plan::Level::Dynamic4);
+    assert_eq!(e.level, wrapcalc::model::Level::Dynamic4);
 }
 
 /// A duty cycle that continues from a start shared with other scenes is ordered by what

@@ -15,7 +15,8 @@
 
 use wrapcalc::design::Design;
 use wrapcalc::drive::SceneDrive;
-use wrapcalc::plan::{Level, Request};
+use wrapcalc::model::Level;
+use wrapcalc::plan::Request;
 use wrapcalc::run::{self, Options, SceneResult};
 use wrapcalc::sheet;
 

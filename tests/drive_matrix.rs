@@ -144,7 +144,7 @@ fn drive_columns_by_hand_and_the_checks_they_feed() {
 }
 
 fn window_cases(d: &Design, m: &load_cases::MatrixResult) -> Vec<wrapcalc::drive::checks::WindowCase> {
-    use wrapcalc::drive::cases::{case_direction, in_window};
+    use wrapcalc::load_cases::drive::{case_direction, in_window};
     m.cases
         .iter()
         .filter(|c| in_window(c))

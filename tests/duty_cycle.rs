@@ -225,7 +225,7 @@ fn duty_cycle_reports_the_code_value_and_the_rope_dynamics_value() {
     let level4 = &run_scenes(&d, &["emergency-MID"])[0];
     let scenes: Vec<_> = d.scenes.iter().filter(|s| s.name == "emergency-MID").collect();
     let options = Options {
-        request: wrapcalc::plan::Request::Full { forced_level: Some(wrapcalc::plan::Level::Closed0) },
+        request: wrapcalc::plan::Request::Full { forced_level: Some(wrapcalc::model::Level::Closed0) },
         ..Options::default()
     };
     let level0 = &run::run(&d, &scenes, options).expect("runs").scenes[0];

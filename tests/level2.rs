@@ -7,10 +7,10 @@
 //! accumulated over a few hundred pieces, stays far below both).
 
 use wrapcalc::design::Direction;
-use wrapcalc::model::history::{HistorySample, Output};
+use wrapcalc::model::history::{self, HistorySample, Output};
 use wrapcalc::model::level0::EndState;
 use wrapcalc::model::level1::steady_rolling;
-use wrapcalc::model::level2::{Params, Profile, Simulation, Solver, run_history};
+use wrapcalc::model::level2::{Params, Profile, Simulation, Solver};
 use wrapcalc::wrap::TensionField;
 use wrapcalc::wrap::contact::ContactLaw;
 use wrapcalc::wrap::summary;
@@ -126,7 +126,7 @@ fn steady_rolling_is_reached_from_a_uniform_start_in_both_directions() {
         let p = params(Solver::Fast);
         let entry = if v > 0.0 { t1 } else { t2 };
         let initial = Profile::uniform(alpha(), entry, MU);
-        let run = run_history(p, &samples, Default::default(), initial, 360).expect("run");
+        let run = history::run(Simulation::new(p, &samples, initial), &samples, Output::default(), 360).expect("run").0;
         let end = EndState { t1_n: t1, t2_n: t2, speed_m_s: v, accel_m_s2: 0.0, centrifugal_n: 10.0 * v * v };
         let creep = steady_rolling(MU, alpha(), &end, Direction::of_speed(v).expect("moving"), p.ea_n);
         let law = ContactLaw::new(MU, end.centrifugal_n);
@@ -362,7 +362,8 @@ fn adding_samples_on_the_straight_lines_and_reporting_more_often_change_nothing(
     let (a, _) = final_field(p, &base);
     let (b, _) = final_field(p, &fine);
     let often = Output { snapshots_s: &[2.5, 5.5], step_s: Some(0.007), sample_rows: true, utilization_map: true };
-    let run = run_history(p, &base, often, Profile::uniform(alpha(), T0, MU), 180).expect("run");
+    let run =
+        history::run(Simulation::new(p, &base, Profile::uniform(alpha(), T0, MU)), &base, often, 180).expect("run").0;
     let c = run.last().distribution.samples.clone();
     let law = ContactLaw::new(MU, 40.0);
     for i in 0..=500 {

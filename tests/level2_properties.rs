@@ -7,8 +7,8 @@ mod common;
 
 use proptest::prelude::*;
 use wrapcalc::design::HistorySample;
-use wrapcalc::model::history::Output;
-use wrapcalc::model::level2::{Params, Profile, Simulation, Solver, run_history};
+use wrapcalc::model::history::{self, Output};
+use wrapcalc::model::level2::{Params, Profile, Simulation, Solver};
 use wrapcalc::run::{self, Options};
 use wrapcalc::sheet;
 use wrapcalc::wrap::TensionField;
@@ -88,7 +88,8 @@ proptest! {
         let p = Params { mu, wrap_angle_rad: alpha, radius_m: 2.0, mass_per_m_kg: m_per_m, ea_n: 1e8, solver: Solver::Fast };
         let snapshots: Vec<f64> = samples.iter().map(|s| s.t_s).collect();
         let initial = Profile::uniform(alpha, samples[0].t1_n, mu);
-        let run = run_history(p, &samples, Output { snapshots_s: &snapshots, step_s: None, sample_rows: true, utilization_map: true }, initial, nodes).expect("a valid history runs");
+        let output = Output { snapshots_s: &snapshots, step_s: None, sample_rows: true, utilization_map: true };
+        let run = history::run(Simulation::new(p, &samples, initial), &samples, output, nodes).expect("a valid history runs").0;
         prop_assert_eq!(run.rows.len(), samples.len());
         for snap in &run.snapshots {
             for x in &snap.distribution.samples {
@@ -287,7 +288,9 @@ fn resampling_law(
     let (a, _) = final_state(p, samples, start);
     let (b, _) = final_state(p, &fine, start);
     let output = Output { snapshots_s: &[], step_s: Some(step), sample_rows: true, utilization_map: true };
-    let run = run_history(p, samples, output, Profile::uniform(alpha, start, mu), 90).expect("runs");
+    let run = history::run(Simulation::new(p, samples, Profile::uniform(alpha, start, mu)), samples, output, 90)
+        .expect("runs")
+        .0;
     let law = ContactLaw::new(mu, 0.0);
     for i in 0..=400 {
         let th = alpha * i as f64 / 400.0;
@@ -379,7 +382,7 @@ speed_m_s = -6.0
     let scenes: Vec<_> = design.scenes.iter().collect();
     let at = |level: u8| {
         let options = Options {
-            request: wrapcalc::plan::Request::Full { forced_level: wrapcalc::plan::Level::from_number(level) },
+            request: wrapcalc::plan::Request::Full { forced_level: wrapcalc::model::Level::from_number(level) },
             nodes: 360,
             ..Options::default()
         };

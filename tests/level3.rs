@@ -7,7 +7,7 @@
 mod common;
 
 use common::{COULOMB_ROUNDING, EA_N, R_M, T0_N, assert_coulomb, at_rest};
-use wrapcalc::model::history::{HistorySample, Output};
+use wrapcalc::model::history::{self, HistoryRun, HistorySample, Output};
 use wrapcalc::model::level2::{self, Solver};
 use wrapcalc::model::level3::{self, ClarabelStatus, Level3Error, Params, SolveError, State, summarize};
 use wrapcalc::wrap::contact::ContactLaw;
@@ -185,7 +185,7 @@ fn rolling_keeps_coulomb_and_reports_solver_tallies() {
         HistorySample { t_s: 6.0, t1_n: 2.0e5, t2_n: 2.1e5, speed_m_s: 1.0 },
     ];
     let out = Output { snapshots_s: &[], step_s: Some(0.5), sample_rows: true, utilization_map: true };
-    let (run, stats) = level3::run_history(p, &samples, out, State::uniform(alpha, 180, 2.05e5)).expect("runs");
+    let (run, stats) = run_level3(p, &samples, out, State::uniform(alpha, 180, 2.05e5)).expect("runs");
     assert!(run.stats.qp_solved >= run.stats.increments);
     assert_eq!(stats.clarabel.solved, run.stats.qp_solved, "every clarabel verdict is tallied");
     let last = run.last();
@@ -212,7 +212,7 @@ fn fast_and_clarabel_agree() {
     let run = |solver: Solver| {
         let mut p = params(0.25, alpha, EA_N / (lambda_m * lambda_m));
         p.wrap.solver = solver;
-        level3::run_history(p, &samples, out, State::uniform(alpha, 180, 2.0e5)).expect("runs")
+        run_level3(p, &samples, out, State::uniform(alpha, 180, 2.0e5)).expect("runs")
     };
     let ((fast, fs), (qp, qs)) = (run(Solver::Fast), run(Solver::Clarabel));
     // The fast path met increments inside every bound and increments at the bound, without
@@ -240,7 +240,7 @@ fn an_unsolved_increment_is_an_error() {
     let mut p = params(0.25, alpha, 1e7);
     p.numerics.max_iter = 1;
     let samples = [at_rest(0.0, T0_N, T0_N), at_rest(1.0, 1.1 * T0_N, T0_N)];
-    let err = level3::run_history(p, &samples, Output::default(), State::uniform(alpha, 90, T0_N)).unwrap_err();
+    let err = run_level3(p, &samples, Output::default(), State::uniform(alpha, 90, T0_N)).unwrap_err();
     match err {
         Level3Error::Solve { source: SolveError::Status(status), .. } => {
             assert_eq!(status, ClarabelStatus::MaxIterations)
@@ -300,7 +300,8 @@ fn sheet_keys_derive_the_lining_and_bending_stiffness() {
 /// and `--level 3` forces it; without one, `--level 3` is an error naming the section.
 #[test]
 fn the_planner_switches_level_3_on_with_the_lining() {
-    use wrapcalc::plan::{Level, PlanError, Request, plan_with_lining, wrap_level};
+    use wrapcalc::model::Level;
+    use wrapcalc::plan::{PlanError, Request, plan_with_lining, wrap_level};
     let design = wrapcalc::sheet::parse("l3.toml", LINING_SHEET).expect("valid sheet");
     let auto = Request::Full { forced_level: None };
     let forced3 = Request::Full { forced_level: Some(Level::Elastic3) };
@@ -326,7 +327,7 @@ fn a_history_scene_runs_at_level_3() {
     let scenes: Vec<_> = design.scenes.iter().take(1).collect();
     let result = run(&design, &scenes, Options { nodes: 90, ..Options::default() }).expect("runs");
     let scene = &result.scenes[0];
-    assert_eq!(scene.plan.level, wrapcalc::plan::Level::Elastic3);
+    assert_eq!(scene.plan.level, wrapcalc::model::Level::Elastic3);
     let wrap = scene.wrap.as_ref().expect("a distribution");
     for d in scene.snapshots.iter().chain([&wrap.distribution]) {
         for s in &d.samples {
@@ -354,8 +355,7 @@ fn gross_slip_is_reported_not_an_error() {
     let p = params(0.25, alpha, 1e8);
     // e^{μα} = e^{0.785} = 2.19 < 2.5: the last sample slips grossly.
     let samples = [at_rest(0.0, T0_N, T0_N), at_rest(1.0, 2.5 * T0_N, T0_N)];
-    let (run, stats) =
-        level3::run_history(p, &samples, Output::default(), State::uniform(alpha, 90, T0_N)).expect("runs");
+    let (run, stats) = run_level3(p, &samples, Output::default(), State::uniform(alpha, 90, T0_N)).expect("runs");
     assert!(stats.clarabel.infeasible > 0, "clarabel reported the empty admissible set: {stats:?}");
     let last = run.rows.last().expect("rows");
     assert!(last.gross_slip && run.stats.gross_slip_increments > 0);
@@ -403,4 +403,15 @@ fn the_travel_step_converges_at_first_order() {
     // The run-in from a uniform rope is a transient too; at 12 m of travel it has settled to
     // well within the twins' tolerance (1e-7 of the tension; measured 1.7e-8).
     assert!(gap(&a, &b) < 1e-7 * 2.3e5, "steady rolling depends on the step: {} N", gap(&a, &b));
+}
+
+/// Runs `samples` at level 3 from `initial` through the history runner: its rows and the
+/// level-3 counters.
+fn run_level3(
+    p: Params,
+    samples: &[HistorySample],
+    output: Output,
+    initial: State,
+) -> Result<(HistoryRun, level3::Level3Stats), Level3Error> {
+    history::run(level3::Simulation::new(p, samples, initial)?, samples, output, 0)
 }

@@ -104,7 +104,7 @@ fn run_sheet(text: &str, solver: Solver, scenes: &[&str]) -> RunResult {
     let design = wrapcalc::sheet::parse("near.toml", text).expect("valid sheet");
     let chosen: Vec<_> = design.scenes.iter().filter(|s| scenes.contains(&s.name.as_str())).collect();
     let options = Options {
-        request: Request::Full { forced_level: Some(wrapcalc::plan::Level::Elastic3) },
+        request: Request::Full { forced_level: Some(wrapcalc::model::Level::Elastic3) },
         nodes: 120,
         solver,
         ..Options::default()

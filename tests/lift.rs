@@ -10,11 +10,12 @@ use common::run_wrapcalc;
 use std::f64::consts::PI;
 use std::path::Path;
 use wrapcalc::check::Verdict;
+use wrapcalc::design::groove::{Duty, Groove};
+use wrapcalc::design::lift::Lift;
 use wrapcalc::lift::cases::Case;
 use wrapcalc::lift::checks::{self, Limits};
-use wrapcalc::lift::groove::{Duty, Groove};
 use wrapcalc::lift::output::evaluate;
-use wrapcalc::lift::{Lift, rope, wrap};
+use wrapcalc::lift::{rope, wrap};
 use wrapcalc::sheet::{self, Sheet};
 
 fn example() -> Lift {

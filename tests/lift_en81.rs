@@ -9,9 +9,10 @@ mod common;
 
 use common::run_wrapcalc;
 use wrapcalc::check::{Check, Verdict};
+use wrapcalc::design::lift::{Lift, StalledProtection};
 use wrapcalc::lift::checks::{self, Limits};
 use wrapcalc::lift::output::{LiftSummary, evaluate};
-use wrapcalc::lift::{Lift, StalledProtection, rope};
+use wrapcalc::lift::rope;
 use wrapcalc::sheet::{self, Sheet};
 
 /// A lift sheet with the given roping, groove lines, sheave, rope diameter and extra lines; the

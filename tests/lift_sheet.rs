@@ -6,7 +6,7 @@ mod common;
 
 use common::run_wrapcalc;
 use wrapcalc::design::Side;
-use wrapcalc::lift::groove::Groove;
+use wrapcalc::design::groove::Groove;
 use wrapcalc::sheet::{self, Sheet};
 
 /// A lift sheet, one key a line (the line numbers below count from `[lift]` = line 1).
@@ -29,7 +29,7 @@ groove_angle_deg = 30.0
 n_equiv_t = 5.0
 "#;
 
-fn lift_of(text: &str) -> wrapcalc::lift::Lift {
+fn lift_of(text: &str) -> wrapcalc::design::lift::Lift {
     match sheet::parse_sheet("lift.toml", text) {
         Ok(Sheet::Lift(l)) => *l,
         Ok(Sheet::Hoist(_)) => panic!("read as a hoist sheet"),

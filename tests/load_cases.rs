@@ -16,7 +16,7 @@ use std::ffi::OsStr;
 use wrapcalc::check::{Check, Verdict};
 use wrapcalc::design::{Design, Phase};
 use wrapcalc::load_cases::{self, CaseResult, MatrixResult, Position};
-use wrapcalc::plan::Level;
+use wrapcalc::model::Level;
 use wrapcalc::sheet;
 
 /// The hoist; `mirror`: its sides swapped, the start at the other end of the travel (side 1 of

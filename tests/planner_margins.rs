@@ -7,8 +7,9 @@
 use wrapcalc::design::{Design, Direction, Output, Outputs, Scene};
 use wrapcalc::margins::fit::{FitFriction, creep_fit};
 use wrapcalc::margins::{self, MarginVerdict};
+use wrapcalc::model::Level;
 use wrapcalc::model::level0::EndState;
-use wrapcalc::plan::{self, Level, Request};
+use wrapcalc::plan::{self, Request};
 use wrapcalc::run::{self, Options};
 use wrapcalc::sheet;
 use wrapcalc::wrap::contact::NodeState;

@@ -10,9 +10,10 @@
 
 use std::path::Path;
 use wrapcalc::design::{Design, SceneKind};
+use wrapcalc::model::Level;
 use wrapcalc::model::level0::{DYNAMIC_CHECK, GROSS_SLIP_CHECK};
 use wrapcalc::model::level4::{self, ROPE_DYNAMICS_CHECK};
-use wrapcalc::plan::{Level, Request};
+use wrapcalc::plan::Request;
 use wrapcalc::run::{self, Options, SceneResult};
 use wrapcalc::sheet;
 

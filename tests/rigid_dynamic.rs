@@ -13,8 +13,9 @@
 //! the first mode, stiffness-proportional: the second mode's ratio is ten times larger).
 
 use wrapcalc::design::{Design, Side};
+use wrapcalc::model::Level;
 use wrapcalc::model::level4::ROPE_DYNAMICS_CHECK;
-use wrapcalc::plan::{Level, Request};
+use wrapcalc::plan::Request;
 use wrapcalc::report::rigid_dynamic_out::{kept, panels};
 use wrapcalc::run::rigid_dynamic::RigidDynamic;
 use wrapcalc::run::{self, Options, SceneResult};

@@ -3,8 +3,9 @@
 //! build-up over a short travel, equalising cylinders within and past their stroke, mirror and
 //! permutation symmetry, Coulomb's law per rope.
 
+use wrapcalc::design::{Attachment, RopeSet};
 use wrapcalc::ropes::trip::{RopeState, run, run_trip, tensions};
-use wrapcalc::ropes::{Attachment, Hoisting, MeanRow, RopeSet};
+use wrapcalc::ropes::{Hoisting, MeanRow};
 
 const EA: f64 = 2.634e8;
 const R: f64 = 2.5;

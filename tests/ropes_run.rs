@@ -10,10 +10,11 @@ mod common;
 use common::run_wrapcalc;
 use std::collections::BTreeMap;
 use std::path::Path;
+use wrapcalc::design::{Attachment, RopeSet};
 use wrapcalc::numerics::roots::Holding;
 use wrapcalc::ropes::margin::groove_tolerance_of;
 use wrapcalc::ropes::scene::{SceneRow, share_scene};
-use wrapcalc::ropes::{Attachment, Hoisting, MeanRow, RopeSet};
+use wrapcalc::ropes::{Hoisting, MeanRow};
 
 /// A small hoist of three ropes (D = 4 m, μ = 0.25, α = 180°, 5 kg/m, EA = 1e8 N): a lift of
 /// about 26 m from hanging lengths 120 m and 20 m, 2 s at rest, the way back. `ropes` is added

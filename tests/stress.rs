@@ -12,9 +12,9 @@ mod common;
 
 use proptest::prelude::*;
 use wrapcalc::design::{Design, SceneKind};
-use wrapcalc::model::history::{HistorySample, Output};
+use wrapcalc::model::history::{self, HistorySample, Output};
 use wrapcalc::model::level2::envelope::Envelopes;
-use wrapcalc::model::level2::{Params, Profile, Simulation, Solver, clamp, repair, run_history};
+use wrapcalc::model::level2::{Params, Profile, Simulation, Solver, clamp, repair};
 use wrapcalc::numerics::roots::RootStats;
 use wrapcalc::run::{self, Options, RunResult};
 use wrapcalc::sheet;
@@ -309,7 +309,8 @@ fn check_walk(samples: usize, nodes: usize) {
         solver: Solver::Fast,
     };
     let output = Output { snapshots_s: &[], step_s: Some(1.0), sample_rows: false, utilization_map: true };
-    let run = run_history(p, &history, output, Profile::uniform(alpha, 2e5, 0.25), nodes).expect("runs");
+    let initial = Profile::uniform(alpha, 2e5, 0.25);
+    let run = history::run(Simulation::new(p, &history, initial), &history, output, nodes).expect("runs").0;
     assert!(run.stats.increments as usize >= samples - 1, "{} increments", run.stats.increments);
     // Rows: one per second of the history plus its ends.
     assert!(run.rows.len() <= samples / 100 + 2, "{} rows", run.rows.len());

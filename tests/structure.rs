@@ -1,7 +1,7 @@
-//! The shape of the library, measured: no source file over 500 lines, no function over 80, and
-//! at the top of `src/` only `lib.rs` and `main.rs` beside the stage folders (docs/architecture.md).
-//! Import circles are reviewed with the structure drawings, not here: Rust's module tree lets
-//! files import each other without a compile error, so a test of them would be a parser of its own.
+//! The shape of the library, measured: no source file over 500 lines, no function over 80, at
+//! the top of `src/` only `lib.rs` and `main.rs` beside the stage folders (docs/architecture.md),
+//! and no import that runs back up: each stage imports only the stages it stands on, listed
+//! before it in [`LAYERS`].
 
 use std::path::{Path, PathBuf};
 
@@ -134,4 +134,162 @@ fn only_lib_and_main_at_the_top_of_src() {
         .collect();
     loose.sort();
     assert!(loose.is_empty(), "loose files at the top of src/: {}", loose.join(", "));
+}
+
+/// The stages of `src/`, each standing on those before it: the design's types and the numerical
+/// kernels first, then the models, the answers derived from them, the planner, the sheet's reader
+/// (which checks a design with level 0 and the trip's motion profile), the run, its reports, and
+/// what drives whole runs (the lift's command, sweeps, benchmarks). The data flows the same way
+/// (sheet → design → plan → model → derived answers → checks → report): a stage imports the
+/// types of what it is given, never a stage that is given its results. `cli` (the binary's, over
+/// `wrapcalc::`) stands on all of them.
+const LAYERS: &[&str] = &[
+    "design",
+    "numerics",
+    "wrap",
+    "dynamics",
+    "codes",
+    "check",
+    "model",
+    "ropes",
+    "drive",
+    "margins",
+    "load_cases",
+    "plan",
+    "sheet",
+    "run",
+    "report",
+    "lift",
+    "sweep",
+    "bench",
+];
+
+/// The one import that still runs back up, with why: the tail-rope check of the friction-hoist
+/// rule sets (`check/codes.rs`) measures the tail's longest hanging length over the trip from
+/// level 4's motion profile, while the models build their check records with `check`'s types.
+const BACK_UP: &[(&str, &str)] = &[("check/codes.rs", "model")];
+
+/// The stages a source file imports (`crate::<stage>` outside comments and strings, also inside
+/// `use crate::{…}` groups).
+fn stages_imported(text: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    for line in text.lines() {
+        let code = code_of(line);
+        for (i, _) in code.match_indices("crate::") {
+            let rest = &code[i + "crate::".len()..];
+            let names: Vec<&str> = match rest.strip_prefix('{') {
+                Some(group) => group.split([',', '}']).map(|g| g.trim().split("::").next().unwrap_or("")).collect(),
+                None => vec![rest.split(|c: char| !(c.is_alphanumeric() || c == '_')).next().unwrap_or("")],
+            };
+            out.extend(names.into_iter().filter(|n| !n.is_empty()).map(str::to_string));
+        }
+    }
+    out
+}
+
+/// Every import of `files` (path relative to `src/`, text) that runs back up: (file, stage).
+fn imports_back_up(files: &[(String, String)]) -> Vec<(String, String)> {
+    let rank = |stage: &str| LAYERS.iter().position(|s| *s == stage);
+    let mut out = Vec::new();
+    for (rel, text) in files {
+        let Some(own) = rel.split('/').next().filter(|_| rel.contains('/')) else { continue };
+        let Some(own_rank) = rank(own) else { continue };
+        for stage in stages_imported(text) {
+            let up = rank(&stage).is_some_and(|r| r > own_rank);
+            if up && !BACK_UP.contains(&(rel.as_str(), stage.as_str())) && !out.contains(&(rel.clone(), stage.clone()))
+            {
+                out.push((rel.clone(), stage));
+            }
+        }
+    }
+    out
+}
+
+#[test]
+fn the_import_scanner_finds_a_stage_above() {
+    let files = [
+        ("model/a.rs".to_string(), "use crate::wrap::Piece;\nuse crate::{design::Hoist, plan::Plan};\n".to_string()),
+        (
+            "wrap/b.rs".to_string(),
+            "// crate::model in a comment\nlet s = \"crate::run\";\nfn f(x: crate::numerics::X) {}\n".to_string(),
+        ),
+        ("design/c.rs".to_string(), "pub ropes: Option<crate::ropes::RopeSet>,\n".to_string()),
+    ];
+    let found = imports_back_up(&files);
+    let want = [("model/a.rs", "plan"), ("design/c.rs", "ropes")].map(|(f, s)| (f.to_string(), s.to_string()));
+    assert_eq!(found, want.to_vec());
+}
+
+#[test]
+fn no_import_runs_back_up() {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut paths = Vec::new();
+    sources(&src, &mut paths);
+    let files: Vec<(String, String)> = paths
+        .iter()
+        .map(|f| {
+            let rel = f.strip_prefix(&src).unwrap_or(f).to_string_lossy().replace('\\', "/");
+            (rel, std::fs::read_to_string(f).expect("a source file"))
+        })
+        .collect();
+    // Every stage folder of src/ is placed (a new one must be given its place).
+    let mut stages: Vec<String> =
+        files.iter().filter_map(|(rel, _)| rel.split_once('/').map(|(s, _)| s.to_string())).collect();
+    stages.sort();
+    stages.dedup();
+    let unplaced: Vec<&String> = stages.iter().filter(|s| *s != "cli" && !LAYERS.contains(&s.as_str())).collect();
+    assert!(unplaced.is_empty(), "stages not in LAYERS: {unplaced:?}");
+    let up = imports_back_up(&files);
+    assert!(
+        up.is_empty(),
+        "imports that run back up (a stage imports one listed after it in LAYERS):\n{}",
+        up.iter().map(|(f, s)| format!("{f} imports crate::{s}")).collect::<Vec<_>>().join("\n")
+    );
+}
+
+/// The places besides the one history runner (`model/history/`) that step a wrap model through
+/// a history (`.advance_to(`), each with why it is not a second runner.
+const STEPPERS: &[(&str, &str)] = &[
+    ("model/track/mod.rs", "rope tracks: a second pass on their own grid, each element's entry and exit"),
+    ("run/wrap_run.rs", "the elastic lining's rolling start: one step to the end of its steady run-in, no rows"),
+    ("bench/model_time.rs", "the benchmark of the bare model: its steps and summaries timed without the rows"),
+];
+
+/// The files of `files` that step a wrap model outside the runner and the named places, or
+/// define a `run_history` of their own.
+fn second_runners(files: &[(String, String)]) -> Vec<String> {
+    let mut out = Vec::new();
+    for (rel, text) in files {
+        let code: String = text.lines().map(|l| code_of(l) + "\n").collect();
+        let steps = code.contains(".advance_to(") && !rel.starts_with("model/history/");
+        if steps && !STEPPERS.iter().any(|(f, _)| f == rel) {
+            out.push(format!("{rel} steps a wrap model through a history"));
+        }
+        if code.lines().any(|l| opens_fn(l) && (l.contains("fn run_history(") || l.contains("fn run_history<"))) {
+            out.push(format!("{rel} defines a run_history"));
+        }
+    }
+    out
+}
+
+#[test]
+fn one_history_runner() {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut paths = Vec::new();
+    sources(&src, &mut paths);
+    let files: Vec<(String, String)> = paths
+        .iter()
+        .map(|f| {
+            let rel = f.strip_prefix(&src).unwrap_or(f).to_string_lossy().replace('\\', "/");
+            (rel, std::fs::read_to_string(f).expect("a source file"))
+        })
+        .collect();
+    let second = second_runners(&files);
+    assert!(second.is_empty(), "a history runner beside model::history::run:\n{}", second.join("\n"));
+    // The scanner sees a runner of its own and a wrapper by the old name.
+    let made = [
+        ("model/level9.rs".to_string(), "fn go(m: &mut M) {\n    for t in ts { m.advance_to(t)?; }\n}\n".to_string()),
+        ("model/level8.rs".to_string(), "pub fn run_history(p: P) -> R {\n    history::run(p)\n}\n".to_string()),
+    ];
+    assert_eq!(second_runners(&made).len(), 2);
 }

@@ -95,7 +95,7 @@ fn one_thread_and_all_threads_give_the_same_bytes() {
         assert_eq!(*point, (i / 3) as u64);
         assert_eq!(*scene, ["rest", "accelerating", "steps"][i % 3]);
     }
-    assert!(single.rows.iter().any(|r| r.level == wrapcalc::plan::Level::Rigid2), "the history scene runs level 2");
+    assert!(single.rows.iter().any(|r| r.level == wrapcalc::model::Level::Rigid2), "the history scene runs level 2");
     let bytes = csv_bytes(&single);
     assert_eq!(bytes, csv_bytes(&parallel));
     assert_eq!(bytes, csv_bytes(&default));
@@ -422,7 +422,7 @@ fn lining_keys_sweep_at_level_3_and_need_a_lining() {
     let file = run_sweep(&path, &s).expect("sweep");
     for g in [2e6, 8e6] {
         let r = row(&file, "steps", g);
-        assert_eq!(r.level, wrapcalc::plan::Level::Elastic3, "level 3 on a lining");
+        assert_eq!(r.level, wrapcalc::model::Level::Elastic3, "level 3 on a lining");
         let typed = text.replace("shear_modulus_pa = 5.0e6", &format!("shear_modulus_pa = {g:e}"));
         let design = wrapcalc::sheet::parse("hoist.toml", &typed).expect("sheet");
         let scenes: Vec<_> = design.scenes.iter().filter(|s| s.name == "steps").collect();

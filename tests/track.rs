@@ -266,6 +266,6 @@ fn tracks_refuse_a_scene_that_runs_below_the_wrap_model() {
     // A scene that asks for its checks only runs at level 0 and says that it skipped the
     // followed elements, which need the wrap model (`wrapcalc check` runs every bundled sheet so).
     let r = run_one(&d).expect("runs at level 0");
-    assert_eq!(r.plan.level, wrapcalc::plan::Level::Closed0);
+    assert_eq!(r.plan.level, wrapcalc::model::Level::Closed0);
     assert!(r.plan.reason.contains("skipped: track_*") && r.tracks.is_none(), "{}", r.plan.reason);
 }

@@ -42,7 +42,7 @@ fn run_one(d: &Design, nodes: usize) -> SceneResult {
 
 fn tracks(d: &Design) -> Vec<Track> {
     let scene = run_one(d, 180);
-    assert_eq!(scene.plan.level, wrapcalc::plan::Level::Elastic3, "the scene runs on the elastic lining");
+    assert_eq!(scene.plan.level, wrapcalc::model::Level::Elastic3, "the scene runs on the elastic lining");
     scene.tracks.expect("the scene follows elements").tracks
 }
 

@@ -4,8 +4,8 @@
 //! its error against its closed form ([`crate::report::accuracy::Evidence`]).
 
 use super::cases::{self, Case};
+use crate::model::Level;
 use crate::model::level2::Solver;
-use crate::plan::Level;
 use crate::report::accuracy::{Evidence, NODES};
 use crate::run::RunError;
 

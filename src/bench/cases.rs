@@ -36,10 +36,11 @@ use crate::design::{
     Design, Direction, EndLoads, HistoryScene, LoadsScene, Output, Outputs, Pulley, Requirements, Rope, Scene,
     SceneKind, WrapSource,
 };
+use crate::model::Level;
 pub use crate::model::history::HistoryRow;
 use crate::model::history::HistorySample;
 use crate::model::level2::Solver;
-use crate::plan::{Level, Request};
+use crate::plan::Request;
 use crate::run::{self, Options, RunError, RunResult};
 use crate::wrap::Distribution;
 use std::path::Path;

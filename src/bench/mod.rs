@@ -18,8 +18,8 @@ pub mod scaling;
 pub mod table;
 pub mod walk;
 
+use crate::model::Level;
 use crate::model::level2::{Level2Error, Solver};
-use crate::plan::Level;
 use crate::run::RunError;
 use crate::sheet::SheetError;
 use cases::{Case, Outcome};

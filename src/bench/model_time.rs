@@ -93,8 +93,8 @@ mod tests {
         for case in [Case::StandstillStep, Case::NestedUnloading, Case::SteadyRolling] {
             let (increments, profile) =
                 ModelRun::of(case, Solver::Fast).expect("a level-2 closed form").run().expect("runs");
-            let full =
-                super::super::cases::run_closed_form(case, crate::plan::Level::Rigid2, Solver::Fast, 64).expect("runs");
+            let full = super::super::cases::run_closed_form(case, crate::model::Level::Rigid2, Solver::Fast, 64)
+                .expect("runs");
             if let Some(steps) = full.steps {
                 assert_eq!(increments, steps, "{case:?}");
             }

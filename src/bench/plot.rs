@@ -2,8 +2,8 @@
 //! case (marker), the end points of each curve labelled with their node count or time step.
 
 use super::BenchRow;
+use crate::model::Level;
 use crate::model::level2::Solver;
-use crate::plan::Level;
 use crate::report::plot::{PlotError, draw_legend, font, render};
 use plotters::prelude::*;
 use std::path::Path;

@@ -1,8 +1,8 @@
 //! The measured scaling of the bench's sweeps: log–log slopes of run time and peak memory.
 
 use super::{BenchRow, Sweep, TABLE};
+use crate::model::Level;
 use crate::model::level2::Solver;
-use crate::plan::Level;
 use serde::Serialize;
 
 /// The measured scaling of one sweep: log–log slopes of run time and of peak memory (above the

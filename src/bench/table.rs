@@ -1,8 +1,8 @@
 //! The case × level table of the bench: what each line runs and what it sweeps.
 
 use super::cases::Case;
+use crate::model::Level;
 use crate::model::level2::Solver;
-use crate::plan::Level;
 
 /// What a point varies along its sweep.
 #[derive(Debug, Clone, Copy, PartialEq)]

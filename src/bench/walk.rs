@@ -2,7 +2,7 @@
 //! and solver tests.
 
 use super::cases::{DIAMETER_M, EA_N, MASS_PER_M_KG, MU, Outcome, alpha_rad};
-use crate::model::history::{HistorySample, Output};
+use crate::model::history::{self, HistorySample, Output};
 use crate::model::level2::{self, Level2Error, Params, Profile, Solver};
 
 /// `samples` history samples 10 ms apart, rolling at 1 m/s, both end tensions a bounded random
@@ -46,6 +46,6 @@ pub fn run_walk(samples: &[HistorySample], nodes: usize) -> Result<Outcome, Leve
     };
     let output = Output { snapshots_s: &[], step_s: Some(1.0), sample_rows: false, utilization_map: true };
     let initial = Profile::uniform(alpha_rad(), samples[0].t1_n, MU);
-    let run = level2::run_history(params, samples, output, initial, nodes)?;
+    let run = history::run(level2::Simulation::new(params, samples, initial), samples, output, nodes)?.0;
     Ok(Outcome { error: None, steps: Some(run.stats.increments), duty: None })
 }

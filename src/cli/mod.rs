@@ -3,7 +3,7 @@
 
 use clap::{Parser, Subcommand, ValueEnum};
 use std::path::PathBuf;
-use wrapcalc::plan::Level;
+use wrapcalc::model::Level;
 use wrapcalc::run;
 
 #[derive(Parser)]

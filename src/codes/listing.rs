@@ -71,7 +71,7 @@ pub fn show(set: &RuleSet) -> String {
         set.code,
         set.edition,
         set.covers,
-        super::CONFIRM_NOTICE
+        crate::design::CONFIRM_NOTICE
     );
     let _ = writeln!(out, "\nLimits ({}):", set.limits.len());
     if set.limits.is_empty() {

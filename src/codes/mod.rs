@@ -6,12 +6,12 @@
 //! `[requirements] code = "<id>"` selects a rule set; a limit the sheet gives itself overrides the
 //! rule set's (the report lists the overrides).
 
-pub mod basis;
 pub mod formula;
+pub mod lift;
 pub mod listing;
 
+use crate::design::Missing;
 use crate::design::requirements::{Limit, Rule};
-pub use basis::{CONFIRM_NOTICE, CodeBasis, Missing, Override};
 use formula::{Formula, FormulaOutcome, Quantities};
 use serde::Deserialize;
 

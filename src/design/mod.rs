@@ -1,10 +1,16 @@
 //! The validated design: what a sheet describes once every value has been checked.
 //! All quantities are SI; angles are stored in radians (`_rad`) and reported in degrees.
 
+mod code_basis;
 pub mod drive;
 pub mod geometry;
+pub mod groove;
+pub mod lift;
 pub mod plausible;
 pub mod requirements;
+pub use code_basis::{CONFIRM_NOTICE, CodeBasis, Missing, Override};
+mod rope_set;
+pub use rope_set::{Attachment, DEFAULT_DEVIATION_LIMIT_PCT, DEFAULT_DEVIATION_SOURCE, RopeSet};
 
 pub use drive::Drive;
 
@@ -59,7 +65,7 @@ pub struct Design {
     pub compare: Vec<Compare>,
     /// The ropes' deviations and attachments of a multi-rope hoist (`[ropes]`), when the sheet
     /// has the section: duty cycles then share their load among the ropes ([`crate::ropes`]).
-    pub ropes: Option<crate::ropes::RopeSet>,
+    pub ropes: Option<RopeSet>,
     /// The ranges of the uncertain inputs the sheet's `[sensitivity]` section gives (empty: the
     /// default ranges).
     pub sensitivity: sensitivity::Ranges,

@@ -82,7 +82,7 @@ pub struct Requirements {
     /// The rule behind the dynamic minimum.
     pub dynamic_safety_factor_rule: Rule,
     /// The rule set the limits come from (`[requirements] code`), with the overrides.
-    pub code: Option<crate::codes::basis::CodeBasis>,
+    pub code: Option<crate::design::CodeBasis>,
     /// Which dynamic safety factor of a duty cycle the minimum is checked on.
     pub dynamic_safety_factor_basis: SafetyFactorBasis,
     /// n·F_min over the largest static load of the rope set.

@@ -15,7 +15,6 @@
 //! (no motion, no loss). The profile's own stages at rest are held by the motor; the rest between
 //! trips (`[drive] rest_time_s`) by the brake, with no motor torque: it counts in the RMS as zero.
 
-pub mod cases;
 pub mod checks;
 pub mod energy;
 mod series;

@@ -18,9 +18,9 @@
 //! so the car carries m_t·H/2 at the top and nothing at the bottom. The centrifugal term m'v² of
 //! the wrap is left out, as EN 81-50's ratio leaves it out.
 
-use super::Lift;
-use super::groove::Duty;
 use crate::design::Side;
+use crate::design::groove::Duty;
+use crate::design::lift::Lift;
 
 /// EN 81-50's traction cases, the emergency braking and the stalled one each in two positions.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -6,10 +6,10 @@
 
 use super::cases::{Case, Loading, Tensions, tensions};
 use super::rope_checks::{d_ratio, rope_diameter, rope_minimum, rope_safety_factor};
-use super::{Lift, RULE_SET, StalledProtection};
 use crate::check::{Check, Quantity, Relation, Verdict, q};
 use crate::codes::{self, formula::Quantities};
 use crate::design::Limit;
+use crate::design::lift::{Lift, RULE_SET, StalledProtection};
 
 /// Name of the car-loading traction check.
 pub const LOADING_CHECK: &str = "traction: car loading";

@@ -2,9 +2,9 @@
 //! level-1 wrap when a report is written), write the report, print the table or the summary
 //! JSON, and tell whether every binding check passes (exit status 0, else 2).
 
-use super::Lift;
 use super::files::{WriteOptions, write};
 use super::output::{LiftSummary, evaluate, table};
+use crate::design::lift::Lift;
 use crate::report::ReportError;
 use std::path::Path;
 

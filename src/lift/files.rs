@@ -1,8 +1,8 @@
 //! A lift run's report directory: summary.json and summary.csv, each case's distribution (CSV
 //! and figure), report.html and checks.xlsx, put in place whole or not at all.
 
-use super::Lift;
 use super::output::{LiftRun, LiftSummary};
+use crate::design::lift::Lift;
 use crate::report::{self, ReportError, csv_out, io, plot_distribution, target::ReportKind};
 use std::fs::{self, File};
 use std::io::BufWriter;

@@ -4,8 +4,9 @@
 //! and their figures.
 
 use super::output::{LiftRun, LiftSummary};
-use super::{Lift, RULE_SET, verdict, workbook};
+use super::{verdict, workbook};
 use crate::check::Check;
+use crate::design::lift::{Lift, RULE_SET};
 use crate::report::html::{esc, style::CSS, verdict_html};
 use crate::report::verdict::Entry;
 use std::fmt::Write as _;
@@ -109,7 +110,7 @@ fn basis(out: &mut String, s: &LiftSummary) {
             "<p>Rule set <code>{RULE_SET}</code>: {}, edition {}. {}</p>",
             esc(&code.code),
             esc(&code.edition),
-            esc(crate::codes::CONFIRM_NOTICE)
+            esc(crate::design::CONFIRM_NOTICE)
         );
     }
     let _ = writeln!(

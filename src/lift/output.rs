@@ -6,9 +6,10 @@
 use super::cases::Case;
 use super::checks::{self, Limits, Traction};
 use super::rope::{self, SheaveSource};
+use super::verdict;
 use super::wrap::{CaseWrap, Margins, case_wrap, margins};
-use super::{Lift, RULE_SET, verdict};
 use crate::check::Check;
+use crate::design::lift::{Lift, RULE_SET};
 use crate::report::checklist::headline;
 use crate::report::verdict::Overview;
 use serde::Serialize;

@@ -17,8 +17,8 @@
 //! Table 2, the range and Annex E as transcribed in a public note of TS EN 81-50:2021
 //! (docs/lifts.md, §Sources).
 
-use super::groove::Groove;
-use super::{Bend, Lift, WrapKind};
+use crate::design::groove::Groove;
+use crate::design::lift::{Bend, Lift, WrapKind};
 
 /// Table 2, V grooves (hardened or not): (γ in degrees, N_equiv(t)).
 pub const TABLE_V: &[(f64, f64)] =

@@ -7,9 +7,9 @@
 use super::cases::rated_load_at_bottom;
 use super::checks::Limits;
 use super::rope::{self, Equivalent, SheaveSource, TABLE_SOURCE};
-use super::{Lift, RULE_SET};
 use crate::check::{Check, Quantity, Relation, q};
 use crate::design::Limit;
+use crate::design::lift::{Lift, RULE_SET};
 use crate::design::requirements::Rule;
 
 /// Name of the check of the ropes' safety factor against Sf (EN 81-50 5.12).

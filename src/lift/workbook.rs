@@ -5,9 +5,10 @@
 //! reader that does not recalculate shows the same numbers.
 
 use super::checks::Traction;
-use super::groove::{Duty, Groove};
 use super::output::LiftRun;
-use super::{Lift, rope};
+use super::rope;
+use crate::design::groove::{Duty, Groove};
+use crate::design::lift::Lift;
 use rust_xlsxwriter::{Format, Formula, Workbook, Worksheet, XlsxError};
 use std::path::Path;
 

@@ -4,10 +4,10 @@
 //! ([`crate::numerics::roots`]), the critical friction coefficient of the case and the car load at which
 //! traction is lost.
 
-use super::Lift;
 use super::cases::{Case, Loading, tensions};
 use super::checks::Traction;
-use super::groove::Duty;
+use crate::design::groove::Duty;
+use crate::design::lift::Lift;
 use crate::design::{Direction, Side};
 use crate::model::level0::EndState;
 use crate::model::level1::steady_rolling;

@@ -12,10 +12,10 @@ use super::{CaseResult, Position};
 use crate::check::{Relation, all_pass};
 use crate::design::{Design, Direction, Hoist, LoadCases, Phase, SafetyFactorBasis};
 use crate::dynamics::{self, DynSample, HoistParams, MotionProfile, SimOptions};
+use crate::model::Level;
 use crate::model::level0::{DYNAMIC_CHECK, EndState, euler_limit, safety_factor};
 use crate::model::level4::{self, ELEMENTS_PER_SIDE, Level4Error, ROPE_DYNAMICS_CHECK, WRAP_SAMPLE_S};
 use crate::model::stop::{self, StopMode};
-use crate::plan::Level;
 
 /// Every level-4 case, the number of rope-dynamics runs it took and the time steps they
 /// integrated (their work).

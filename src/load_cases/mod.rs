@@ -10,6 +10,7 @@
 //! * [`dynamic`]: the level-4 cases;
 //! * [`govern`]: the governing case of each check.
 
+pub mod drive;
 pub mod dynamic;
 pub mod govern;
 pub mod profile;
@@ -17,10 +18,10 @@ pub mod rigid;
 
 use crate::check::Check;
 use crate::design::{Design, Direction, Phase};
+use crate::model::Level;
 use crate::model::level0::EndState;
 use crate::model::level4::Level4Error;
 use crate::model::stop::{SlipOnset, StopReport};
-use crate::plan::Level;
 use serde::Serialize;
 use std::time::Instant;
 
@@ -106,8 +107,8 @@ pub struct CaseResult {
     /// Whether every check of the case passes.
     pub checks_pass: bool,
     /// The drive and the brake at the case (shaft torque, static out-of-balance torque, holding
-    /// factor, the brake window's torques): [`crate::drive::cases`].
-    pub drive: Option<crate::drive::cases::CaseDrive>,
+    /// factor, the brake window's torques): [`crate::load_cases::drive`].
+    pub drive: Option<crate::load_cases::drive::CaseDrive>,
 }
 
 /// A case's checks in summary.json: `{name, value, limit, verdict}` each.
@@ -177,7 +178,7 @@ pub fn evaluate(design: &Design, rope_dynamics: bool) -> Option<Result<MatrixRes
             (runs, steps) = (n, integrated);
         }
         for c in &mut results {
-            c.drive = Some(crate::drive::cases::case_drive(design, c));
+            c.drive = Some(crate::load_cases::drive::case_drive(design, c));
         }
         let checks = govern::governing(&results);
         let checks_pass = crate::check::all_pass(&checks);

@@ -7,12 +7,12 @@ use super::{CaseResult, Position, direction_word};
 use crate::check::{self, Check};
 use crate::design::{Brake, Design, Direction, Hoist, LoadCases, Phase};
 use crate::dynamics::{self, HoistParams, Kinematics, MotionProfile};
+use crate::model::Level;
 use crate::model::braking::{StopMasses, brake_decel_m_s2, slip_limited_decel_m_s2};
 use crate::model::braking_checks as braking;
 use crate::model::level0::{self, DYNAMIC_CHECK, EndState, euler_limit, safety_factor};
 use crate::model::level4::{self, Level4Error};
 use crate::model::stop::{self, SlipOnset, StopMode, StopReport};
-use crate::plan::Level;
 
 /// Speeds below this are a profile at rest (m/s): the round-off of its stages' integrals.
 pub const MOVING_M_S: f64 = 1e-9;

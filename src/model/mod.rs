@@ -8,6 +8,8 @@
 pub mod braking;
 pub mod braking_checks;
 pub mod history;
+mod level;
+pub use level::Level;
 pub mod level0;
 pub mod level1;
 pub mod level2;

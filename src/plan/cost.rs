@@ -17,10 +17,11 @@
 
 use crate::design::{Design, HistorySample, Output, Scene, SceneKind};
 use crate::dynamics::{self, Side};
+use crate::model::Level;
 use crate::model::level2::Solver;
 use crate::model::level4;
 use crate::model::numerics::Numerics;
-use crate::plan::{self, Level, Plan};
+use crate::plan::{self, Plan};
 use serde::Serialize;
 
 /// Largest estimated run time of one scene accepted by default (s): ten minutes. Every sheet in

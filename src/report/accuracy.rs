@@ -3,7 +3,7 @@
 //! [`crate::run::run`] as a sheet's scenes, each with its error against its closed form. A
 //! report thus states what *this* binary reproduces, not what an earlier one did.
 
-use crate::plan::Level;
+use crate::model::Level;
 
 /// The output grid the cases run on (the default).
 pub const NODES: usize = crate::run::DEFAULT_NODES;

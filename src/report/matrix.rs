@@ -3,7 +3,7 @@
 
 use super::check_text::{Style, render_check};
 use crate::check::Verdict;
-use crate::drive::cases::CaseDrive;
+use crate::load_cases::drive::CaseDrive;
 use crate::load_cases::{CaseResult, MatrixResult, Position};
 use crate::run::DesignResult;
 use std::fmt::Write;
@@ -23,7 +23,7 @@ pub const BALANCED: &str = "∞ (balanced)";
 
 /// Whether the case runs the suspended ropes (its dynamic factor is then the rope-dynamics one).
 fn level4(c: &CaseResult) -> bool {
-    c.level == crate::plan::Level::Dynamic4
+    c.level == crate::model::Level::Dynamic4
 }
 
 /// The case's factor with the suspended ropes' dynamics: only level-4 cases have one.
@@ -210,11 +210,11 @@ pub const CASE_COLUMNS: &[CaseColumn] = &[
     CaseColumn { header: "brake_torque_max_n_m", field: |c| drive_field(c, 4, |d| d.brake_torque_max_n_m) },
 ];
 
-/// A drive column of a case ([`crate::drive::cases`]): its value with the workbook's formula
-/// `which` of [`crate::drive::cases::formulas`]; empty where it does not apply.
+/// A drive column of a case ([`crate::load_cases::drive`]): its value with the workbook's formula
+/// `which` of [`crate::load_cases::drive::formulas`]; empty where it does not apply.
 fn drive_field(c: &CaseResult, which: usize, value: fn(&CaseDrive) -> Option<f64>) -> Field {
     let Some(d) = &c.drive else { return Field::Missing };
-    match (value(d), crate::drive::cases::formulas(d)[which].clone()) {
+    match (value(d), crate::load_cases::drive::formulas(d)[which].clone()) {
         (Some(v), Some(f)) => Field::Live(v, f),
         (Some(v), None) => Field::Number(v),
         (None, _) => Field::Missing,

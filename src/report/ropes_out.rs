@@ -182,9 +182,9 @@ impl RopesJson {
         let worst = |w: Option<crate::ropes::scene::WorstRope>| {
             w.map(|w| WorstJson { rope: w.rope, t_s: Some(w.t_s), safety_factor: w.safety_factor })
         };
-        let half = |a: crate::ropes::Attachment| match a {
-            crate::ropes::Attachment::Rigid => None,
-            crate::ropes::Attachment::Equalising { stroke_m, .. } => Some(0.5 * stroke_m),
+        let half = |a: crate::design::Attachment| match a {
+            crate::design::Attachment::Rigid => None,
+            crate::design::Attachment::Equalising { stroke_m, .. } => Some(0.5 * stroke_m),
         };
         let fold = |i: usize, f: &dyn Fn(&crate::ropes::trip::RopeTotals) -> f64| {
             trips.iter().map(|t| f(&t.ropes[i])).fold(0.0, f64::max)

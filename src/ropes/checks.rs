@@ -5,9 +5,9 @@
 //! tolerance found by root finding against the sheet's groove deviation.
 
 use super::scene::{SceneRopes, WorstRope};
-use super::{Attachment, DEFAULT_DEVIATION_SOURCE};
 use crate::check::{Check, Relation, q};
 use crate::design::requirements::Rule;
+use crate::design::{Attachment, DEFAULT_DEVIATION_SOURCE};
 use crate::design::{Design, Limit};
 use crate::numerics::roots::Holding;
 

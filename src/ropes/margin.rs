@@ -3,7 +3,8 @@
 //! anti-slip minimum is reached, by root finding on the whole sharing run.
 
 use super::trip::run;
-use super::{Hoisting, MeanRow, RopeSet};
+use super::{Hoisting, MeanRow};
+use crate::design::RopeSet;
 use crate::numerics::roots::{Holding, RootStats, largest_holding_among};
 
 /// Largest groove diameter difference searched (m): 20 mm, far past any turning tolerance.

@@ -5,7 +5,8 @@
 
 use super::margin::groove_tolerance_of;
 use super::trip::{Sharing, creep_arc_deg, run, safety_factor};
-use super::{Hoisting, MeanRow, RopeSet};
+use super::{Hoisting, MeanRow};
+use crate::design::RopeSet;
 use crate::numerics::roots::Holding;
 
 /// One instant of the scene: the mean rope and whether the hoist is at rest (v = 0, a = 0).

@@ -3,21 +3,7 @@
 //! sharing one pressure (equal forces while every piston is within its stroke, rigid again at a
 //! stroke end). Linear in the ropes' length deviations; docs/physics.md §13.2.
 
-/// How the ropes hang from a conveyance.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Attachment {
-    /// Every rope end is fixed to the conveyance.
-    Rigid,
-    /// Each rope hangs from a hydraulic cylinder; all cylinders share one oil volume (one
-    /// pressure). The pistons start at mid-stroke and travel ±stroke/2.
-    Equalising {
-        /// Full stroke of one cylinder (m).
-        stroke_m: f64,
-        /// Stiffness of one cylinder in series with its rope (oil column, hose; N/m);
-        /// `f64::INFINITY` for an incompressible cylinder.
-        stiffness_n_per_m: f64,
-    },
-}
+use crate::design::Attachment;
 
 /// One side's state for the sharing: the mean rope and each rope's deviations.
 #[derive(Debug, Clone, Copy)]

@@ -5,7 +5,8 @@
 //! settles. docs/physics.md §13.3–13.5.
 
 use super::share::{Shared, SideLoad, share};
-use super::{Hoisting, MeanRow, RopeSet};
+use super::{Hoisting, MeanRow};
+use crate::design::RopeSet;
 
 /// Each rope's unstretched length on side 1 and side 2 minus the reference rope's (m).
 #[derive(Debug, Clone, PartialEq)]

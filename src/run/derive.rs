@@ -5,9 +5,9 @@ use super::{RunError, SceneResult, Work};
 use crate::design::{Design, Direction, Output, Scene, SceneKind};
 use crate::margins;
 use crate::margins::fit;
+use crate::model::Level;
 use crate::model::level0::EndState;
 use crate::model::level4::{self, RopeRun, StopTrials};
-use crate::plan::Level;
 
 /// The answers derived from a scene's result that it asks for: margins from its state (a time
 /// scene's worst instant), the creep-theory fit of its reported distribution.

@@ -111,7 +111,7 @@ fn window_cases(design: &Design, matrix: Option<&MatrixResult>) -> Vec<crate::dr
     m.cases
         .iter()
         .filter(|c| c.phase == crate::design::Phase::Emergency && matches!(c.position, Position::Travel { .. }))
-        .filter(|c| c.level == crate::plan::Level::Closed0)
+        .filter(|c| c.level == crate::model::Level::Closed0)
         .map(|c| crate::drive::checks::WindowCase {
             case: c.label.clone(),
             direction: if c.direction == load_cases::direction_word(Direction::Lift) {

@@ -3,9 +3,10 @@
 use super::wrap_run::{Initial, steady_run, wrap_history};
 use super::{Options, RunError, SceneResult, Work, WrapResult, empty};
 use crate::design::{Design, EndLoads, LoadsScene, Scene};
+use crate::model::Level;
 use crate::model::level0;
 use crate::model::level1;
-use crate::plan::{Level, Plan};
+use crate::plan::Plan;
 use crate::wrap::Distribution;
 use crate::wrap::summary;
 

@@ -7,6 +7,7 @@
 
 mod derive;
 mod design_checks;
+mod error;
 mod loads;
 pub mod rigid_beside;
 pub mod rigid_dynamic;
@@ -23,6 +24,7 @@ pub use design_checks::DesignResult;
 pub use trip::ROPE_DYNAMICS_CHECK;
 
 use derive::{derive_answers, ensure_finite};
+pub use error::RunError;
 use loads::run_loads;
 use speed::shared_run::run_shared;
 use time::{run_duty_cycle, run_history_scene};
@@ -30,17 +32,16 @@ use wrap_run::{Kept, WrapShare};
 
 use crate::design::{Design, Scene, SceneKind};
 use crate::margins::Margins;
-use crate::margins::fit::{CreepFit, FitError};
+use crate::margins::fit::CreepFit;
+use crate::model::Level;
 use crate::model::history::{HistoryRow, SolverReport};
 use crate::model::level0::{Classical, EndState};
-use crate::model::level2::{Level2Error, Params, Solver};
-use crate::model::level3::{Level3Error, Level3Stats};
-use crate::model::level4::Level4Error;
+use crate::model::level2::{Params, Solver};
+use crate::model::level3::Level3Stats;
 use crate::model::level4::shared::RopePrefix;
 use crate::model::stop::{SlipOnset, StopReport};
-use crate::numerics::roots::RootError;
 use crate::plan::cost::{self, Estimate};
-use crate::plan::{self, Level, Plan, PlanError, Request};
+use crate::plan::{self, Plan, Request};
 use crate::wrap::Distribution;
 use crate::wrap::summary::WrapSummary;
 use rayon::prelude::*;
@@ -79,97 +80,6 @@ impl Default for Options {
             utilization_map: true,
         }
     }
-}
-
-#[derive(Debug, thiserror::Error)]
-/// Why a run fails.
-pub enum RunError {
-    #[error(transparent)]
-    /// The scene cannot run at the level asked for.
-    Plan(#[from] PlanError),
-    #[error("scene \"{scene}\": {source}")]
-    /// Root finding on a scene's distribution failed.
-    Roots {
-        /// The scene's name.
-        scene: String,
-        /// The root finder's error.
-        source: RootError,
-    },
-    #[error("scene \"{scene}\": non-finite result for {field}; the inputs are outside what the model can represent")]
-    /// A result came out non-finite.
-    NonFinite {
-        /// The scene's name.
-        scene: String,
-        /// The result that came out non-finite.
-        field: &'static str,
-    },
-    #[error("--nodes {0}: expected a node count from 1 to {MAX_NODES}")]
-    /// `--nodes` outside 1 ..= [`MAX_NODES`].
-    Nodes(usize),
-    #[error("scene \"{scene}\": {source}")]
-    /// The level-2 simulation of a scene failed.
-    Level2 {
-        /// The scene's name.
-        scene: String,
-        /// What failed in the level-2 simulation.
-        source: Level2Error,
-    },
-    #[error("scene \"{scene}\": {source}")]
-    /// The level-4 rope dynamics of a scene failed.
-    Level4 {
-        /// The scene's name.
-        scene: String,
-        /// What failed in the rope dynamics.
-        source: Level4Error,
-    },
-    #[error(
-        "scene \"{scene}\": track_*: rope elements are followed by the wrap model (level 2 or more); this scene runs at \
-         level {level}. Ask for \"history\" or \"distribution\" in its outputs, or do not force --level {level}"
-    )]
-    /// Rope elements are asked for in a scene that runs below the wrap model (level 0 or 1).
-    TracksBelowLevel2 {
-        /// The scene's name.
-        scene: String,
-        /// The level the scene runs at.
-        level: Level,
-    },
-    #[error("scene \"{scene}\": level 3: {source}")]
-    /// The level-3 simulation of a scene failed.
-    Level3 {
-        /// The scene's name.
-        scene: String,
-        /// What failed in the level-3 simulation.
-        source: Level3Error,
-    },
-    #[error("scene \"{scene}\": {source}")]
-    /// The creep-theory fit of a scene failed.
-    Fit {
-        /// The scene's name.
-        scene: String,
-        /// What failed in the fit.
-        source: FitError,
-    },
-    /// A scene's estimated cost exceeds the limit; refused before anything runs.
-    #[error(
-        "scene \"{scene}\": refused before running: it would take about {time} on one core (limit {limit_s} s, \
-         --cost-limit-s) and keep {rows:.0} history rows, about {memory:.2} GB (limit {memory_limit:.1} GB). \
-         Estimated work: {work}. It grows with {drivers}: change those, or raise --cost-limit-s if the scene is \
-         meant to run that long",
-        time = cost::human_duration(estimate.seconds),
-        rows = estimate.rows,
-        memory = estimate.memory_bytes / 1e9,
-        memory_limit = cost::MEMORY_LIMIT_BYTES / 1e9,
-        work = estimate.describe(),
-        drivers = estimate.drivers.join(", ")
-    )]
-    Costly {
-        /// The scene's name.
-        scene: String,
-        /// The cost estimated before the scene ran.
-        estimate: Box<Estimate>,
-        /// The limit on one core's run time, `--cost-limit-s` (s).
-        limit_s: u64,
-    },
 }
 
 /// The wrap distribution of a scene (levels ≥ 1).
@@ -299,6 +209,12 @@ pub fn run(design: &Design, scenes: &[&Scene], options: Options) -> Result<RunRe
 
 /// The estimated cost of each scene ([`crate::plan::cost`]), refusing one above the limit.
 pub fn estimate(design: &Design, scenes: &[&Scene], options: Options) -> Result<Vec<Estimate>, RunError> {
+    Ok(planned(design, scenes, options)?.into_iter().map(|(_, e)| e).collect())
+}
+
+/// Each scene's plan with its estimated cost ([`estimate`]): the plan is made here, once per
+/// scene, and carried to the scene's run.
+fn planned(design: &Design, scenes: &[&Scene], options: Options) -> Result<Vec<(Plan, Estimate)>, RunError> {
     if options.nodes == 0 || options.nodes > MAX_NODES {
         return Err(RunError::Nodes(options.nodes));
     }
@@ -314,7 +230,7 @@ pub fn estimate(design: &Design, scenes: &[&Scene], options: Options) -> Result<
                     limit_s: options.cost_limit_s,
                 });
             }
-            Ok(e)
+            Ok((plan, e))
         })
         .collect()
 }
@@ -327,7 +243,7 @@ pub fn run_with_progress(
     options: Options,
     progress: &(dyn Fn(f64) + Sync),
 ) -> Result<RunResult, RunError> {
-    let estimates = estimate(design, scenes, options)?;
+    let (plans, estimates): (Vec<Plan>, Vec<Estimate>) = planned(design, scenes, options)?.into_iter().unzip();
     let start = Instant::now();
     // With fewer scenes than threads, a scene steps the two sides of its suspended ropes on two
     // threads; with more, the scenes keep the cores busy and the paired steps are cheaper. A
@@ -340,7 +256,7 @@ pub fn run_with_progress(
     let one = |i: usize, e: Estimate, prefix: Option<&RopePrefix>, wrap: WrapShare| {
         let seconds = e.seconds;
         let context = SceneContext { parallel_sides, prefix, wrap };
-        let (result, kept) = match run_scene(design, scenes[i], options, context) {
+        let (result, kept) = match run_scene(design, scenes[i], &plans[i], options, context) {
             Ok((r, kept, work)) => (Ok((Box::new(SceneResult { cost: Some(e), ..r }), work)), kept),
             Err(e) => (Err(e), Vec::new()),
         };
@@ -353,7 +269,7 @@ pub fn run_with_progress(
     let groups = if parallel_sides || rayon::current_thread_index().is_some() {
         Vec::new()
     } else {
-        speed::share::groups(design, scenes, options)
+        speed::share::groups(design, scenes, &plans)
     };
     let (mut done, shared) = if groups.is_empty() {
         let mut queue: Vec<(usize, Estimate)> = estimates.into_iter().enumerate().collect();
@@ -425,11 +341,12 @@ struct SceneContext<'a> {
 fn run_scene(
     design: &Design,
     scene: &Scene,
+    plan: &Plan,
     options: Options,
     context: SceneContext,
 ) -> Result<(SceneResult, Kept, Work), RunError> {
     let start = Instant::now();
-    let plan = plan::plan_with_lining(scene, options.request, design.lining.is_some())?;
+    let plan = plan.clone();
     let spare_core = context.parallel_sides;
     let (mut result, ropes, kept, mut work) = match &scene.kind {
         SceneKind::Loads(loads) => {

@@ -4,10 +4,11 @@
 //! travel; its checks join the scene's.
 
 use super::{RunError, SceneResult};
+use crate::design::RopeSet;
 use crate::design::{Design, HistorySample, Side};
 use crate::dynamics::{HoistParams, Kinematics};
 use crate::ropes::scene::{SceneRow, share_scene};
-use crate::ropes::{Hoisting, MeanRow, RopeSet, checks};
+use crate::ropes::{Hoisting, MeanRow, checks};
 
 /// The hoist's constants of the sharing (per rope, SI).
 pub(crate) fn hoisting(design: &Design) -> Hoisting {
@@ -126,7 +127,7 @@ pub(super) fn share(
             "ropes: a rope's tension at or below m'v² (a slack rope; smaller deviations in [ropes])",
         ));
     }
-    let rope_dynamics = result.plan.level == crate::plan::Level::Dynamic4;
+    let rope_dynamics = result.plan.level == crate::model::Level::Dynamic4;
     result.classical.checks.extend(checks::checks(design, &out, rope_dynamics, &result.name));
     result.ropes = Some(Box::new(out));
     Ok(())

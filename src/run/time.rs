@@ -10,12 +10,13 @@ use super::{HistoryOutput, Options, RunError, SceneContext, SceneResult, Work, W
 use crate::check;
 use crate::design::{Design, Direction, DutyCycleScene, HistorySample, HistoryScene, Hoist, Scene};
 use crate::dynamics::Kinematics;
+use crate::model::Level;
 use crate::model::history;
 use crate::model::level0::{self, EndState};
 use crate::model::level2::lattice;
 use crate::model::level4::{self, Level4Error, RopeRun};
 use crate::model::stop;
-use crate::plan::{Level, Plan};
+use crate::plan::Plan;
 
 /// What a level-0 run of a scene with `track_*` keys leaves out, appended to its level reason.
 pub const SKIPPED_TRACKS: &str = "; skipped: track_* (rope elements followed through the wrap need the wrap \

@@ -5,13 +5,14 @@
 
 use super::{Options, RunError, params};
 use crate::design::{Design, Direction, HistorySample, Scene};
+use crate::model::Level;
 use crate::model::history::{self, HistoryRun, Output};
 use crate::model::level0::EndState;
 use crate::model::level1;
 use crate::model::level2::{self, Profile};
 use crate::model::level3;
 use crate::model::numerics::Numerics;
-use crate::plan::{self, Level, Plan, PlanError};
+use crate::plan::{self, Plan, PlanError};
 
 /// Creep speed used to reach the state "after the rope last ran" for a scene at rest (m/s):
 /// slow enough that its m'v² (1e-6 m²/s² times m') is negligible against the tension, as the

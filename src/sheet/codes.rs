@@ -4,7 +4,8 @@
 
 use super::diag::Collector;
 use super::raw::RawRequirements;
-use crate::codes::{self, CodeBasis, Override, RuleSet, formula::Quantities};
+use crate::codes::{self, RuleSet, formula::Quantities};
+use crate::design::{CodeBasis, Override};
 use crate::design::{Hoist, Limit, Requirements, Rope};
 use toml::Spanned;
 

@@ -5,9 +5,9 @@
 
 use super::diag::Collector;
 use super::rules::{At, NON_NEGATIVE, POSITIVE, Rule, checked, in_range, optional, required};
+use crate::design::groove::{Groove, GrooveError};
+use crate::design::lift::{Bend, CompensationKind, Lift, LiftRope, Pulley, StalledProtection, WrapKind};
 use crate::design::{STANDARD_GRAVITY_M_S2, Side};
-use crate::lift::groove::{Groove, GrooveError};
-use crate::lift::{Bend, CompensationKind, Lift, LiftRope, Pulley, StalledProtection, WrapKind};
 use serde::Deserialize;
 use toml::Spanned;
 use toml::de::DeTable;
@@ -343,7 +343,7 @@ fn compensation(c: &mut Collector, at: At, r: &RawLift) -> Option<(CompensationK
 /// The groove: its kind, the angles its formulas need (and no other), in the formulas' range
 /// and in the standard's (the rule set's β ≤ 105°, V γ ≥ 35°), each refused at its value.
 fn groove(c: &mut Collector, at: At, r: &RawLift) -> Option<Groove> {
-    let kind = word(c, at, "groove", &r.groove, crate::lift::groove::KINDS, None)?;
+    let kind = word(c, at, "groove", &r.groove, crate::design::groove::KINDS, None)?;
     let (needs_beta, needs_gamma) = match kind {
         "semicircular" | "v-hardened" => (false, true),
         _ => (true, true),
@@ -382,7 +382,7 @@ fn groove(c: &mut Collector, at: At, r: &RawLift) -> Option<Groove> {
 
 /// The standard's ranges of the groove angles (rule set en81-50), each refused at its value.
 fn groove_in_code_range(c: &mut Collector, at: At, r: &RawLift, kind: &str, g: Groove) -> Option<Groove> {
-    let (beta_max, gamma_min) = crate::lift::groove::code_ranges(kind);
+    let (beta_max, gamma_min) = crate::codes::lift::code_ranges(kind);
     let mut ok = true;
     // The values as written (degrees), so that a bound itself is not refused by rounding.
     if let (Some(l), Some(v)) = (beta_max, &r.groove_undercut_angle_deg)

@@ -71,7 +71,7 @@ pub enum Sheet {
     /// A friction hoist (`[pulley]`, `[rope]`, `[[scene]]`, …).
     Hoist(Box<Design>),
     /// A traction lift (`[lift]`).
-    Lift(Box<crate::lift::Lift>),
+    Lift(Box<crate::design::lift::Lift>),
 }
 
 /// Reads and validates a sheet file of either kind: a sheet with `[lift]` is a lift sheet.

@@ -9,7 +9,7 @@ use super::diag::Collector;
 use super::requirements::{Allowed, parse_limit_at};
 use super::rules::{At, in_range};
 use crate::design::Rope;
-use crate::ropes::{Attachment, DEFAULT_DEVIATION_LIMIT_PCT, DEFAULT_DEVIATION_SOURCE, RopeSet};
+use crate::design::{Attachment, DEFAULT_DEVIATION_LIMIT_PCT, DEFAULT_DEVIATION_SOURCE, RopeSet};
 use serde::Deserialize;
 use toml::Spanned;
 

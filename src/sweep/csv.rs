@@ -8,7 +8,7 @@
 
 use super::grid::KEYS;
 use crate::design::Requirements;
-use crate::plan::Level;
+use crate::model::Level;
 use crate::report::summary::SceneSummary;
 use std::io::Write;
 use std::path::Path;

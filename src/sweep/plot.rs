@@ -228,7 +228,7 @@ mod tests {
             values: values.to_vec(),
             scene: scene.into(),
             kind: "loads".into(),
-            level: crate::plan::Level::Capstan1,
+            level: crate::model::Level::Capstan1,
             cells: vec![Cell::Num(None); RESULT_COLUMNS.len()],
         };
         let mut set = |name: &str, v: Option<f64>| {

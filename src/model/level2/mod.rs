@@ -20,9 +20,7 @@ pub mod schedule;
 pub mod simulate;
 pub mod stats;
 
-use crate::model::history::{
-    self, HistoryRun, HistorySample, Local, MAP_COLUMNS, Output, SolverReport, Wrap, WrapModel,
-};
+use crate::model::history::{self, HistorySample, Local, MAP_COLUMNS, SolverReport, Wrap, WrapModel};
 use crate::numerics::roots::{RootError, RootStats};
 use crate::wrap::Distribution;
 use crate::wrap::contact::ContactLaw;
@@ -145,19 +143,6 @@ impl history::Growing for Simulation<'_> {
     fn extend_samples(&mut self, more: &[HistorySample]) {
         Simulation::extend_samples(self, more);
     }
-}
-
-/// Runs a history from `initial` on the rigid lining through [`history::run`], reporting at
-/// every sample and snapshot time (and every output step); distributions on `output_nodes`
-/// pitches (plus every breakpoint).
-pub fn run_history(
-    params: Params,
-    samples: &[HistorySample],
-    output: Output,
-    initial: Profile,
-    output_nodes: usize,
-) -> Result<HistoryRun, Level2Error> {
-    history::run(Simulation::new(params, samples, initial), samples, output, output_nodes).map(|(run, _)| run)
 }
 
 /// Signed utilization at `MAP_COLUMNS` equally spaced angles (one sweep over the pieces).

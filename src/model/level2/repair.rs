@@ -146,7 +146,7 @@ impl Zone {
         let (left_ok, right_ok) = (left_stuck || left_inside, right_stuck || right_inside);
         if left_ok && right_ok {
             if let Some(zone) = self.compatible(profile) {
-                return self.piece(profile, zone, false);
+                return self.piece(profile, zone, self.kappa > 0.0);
             }
             if let Some(zone) = self.compatible_bracketed(profile, stats) {
                 return self.piece(profile, zone, self.kappa > 0.0);
@@ -167,14 +167,14 @@ impl Zone {
     }
 
     /// The zone over `[a, b]` at the limit, through the stuck rope's tension at its pinned end
-    /// (b if `pin_right`, else a): a zone that runs from its pin to an end of the wrap meets
-    /// the old profile only there.
+    /// (b if `pin_right`, else a), read on the rope outside the zone: a zone that runs from its
+    /// pin to an end of the wrap meets the old profile only there.
     fn piece(&self, profile: &Profile, (a, b): (f64, f64), pin_right: bool) -> Piece {
         let km = self.kappa * self.mu;
         let n0 = if pin_right {
-            (profile.tension_n(b) - self.c) * (km * (a - b)).exp()
+            (outside(profile, b, true) - self.c) * (km * (a - b)).exp()
         } else {
-            profile.tension_n(a) - self.c
+            outside(profile, a, false) - self.c
         };
         Piece::exponential(a, b, self.c, n0, km)
     }
@@ -187,12 +187,13 @@ impl Zone {
         let km = kappa * mu;
         let (mut a, mut b) = (p, r);
         for _ in 0..MAX_NEWTON {
-            let na = profile.tension_n(a) - c;
+            let (ta, tb) = (outside(profile, a, false), outside(profile, b, true));
+            let na = ta - c;
             // Slopes of the stuck rope outside the zone: left of a, right of b.
             let (ta_slope, tb_slope) = (slope(profile, a, false), slope(profile, b, true));
             let e = (km * (b - a)).exp();
             let tz_b = c + na * e;
-            let f1 = tz_b - profile.tension_n(b);
+            let f1 = tz_b - tb;
             let f2 = c * (b - a) + na * (e - 1.0) / km - integral(profile, a, b);
             let g = ta_slope - km * na;
             let (j11, j12) = (e * g, km * (tz_b - c) - tb_slope);
@@ -213,7 +214,7 @@ impl Zone {
             if done {
                 // A step clamped at the stretch can stall without solving the equations:
                 // accept only a solution of both (to 1e-11 of the tension and of its integral).
-                let scale = profile.tension_n(a).abs().max(profile.tension_n(b).abs());
+                let scale = ta.abs().max(tb.abs());
                 let solved = f1.abs() <= RESIDUAL_REL * scale && f2.abs() <= RESIDUAL_REL * scale * (b - a);
                 return solved.then_some((a, b));
             }
@@ -236,14 +237,20 @@ impl Zone {
         let Zone { p, r, kappa, mu, c } = *self;
         let alpha = profile.wrap_angle_rad();
         let km = kappa * mu;
-        let n_pin = profile.tension_n(pin) - c;
-        // T_z − T_o, signed so that it is positive inside the zone.
+        let n_pin = outside(profile, pin, !from_left) - c;
+        // T_z − T_o on piece k (each piece read over its own span, so that a breakpoint where
+        // the stuck rope's tension jumps by round-off reads the same in both frames), signed so
+        // that it is positive inside the zone.
         let sign = if from_left { -kappa } else { kappa };
-        let gap = |t: f64| sign * (c + n_pin * (km * (t - pin)).exp() - profile.tension_n(t));
+        let gap_on = |k: usize| {
+            let piece = profile.piece(k);
+            move |t: f64| sign * (c + n_pin * (km * (t - pin)).exp() - piece.tension_n(t))
+        };
         let m = profile.len();
         if from_left {
             let mut lo = r;
             for k in profile_index(profile, r)..m {
+                let gap = gap_on(k);
                 let hi = profile.piece(k).theta1_rad.min(alpha);
                 if hi > lo && gap(hi) <= 0.0 {
                     let b = if gap(lo) > 0.0 { bracketed(gap, lo, hi, 1e-15, stats).unwrap_or(hi) } else { lo };
@@ -254,7 +261,8 @@ impl Zone {
             (pin, alpha)
         } else {
             let mut hi = p;
-            for k in (0..=profile_index(profile, p)).rev() {
+            for k in (0..=index_right(profile, p)).rev() {
+                let gap = gap_on(k);
                 let lo = profile.piece(k).theta0_rad.max(0.0);
                 if hi > lo && gap(lo) <= 0.0 {
                     let a = if gap(hi) > 0.0 { bracketed(gap, lo, hi, 1e-15, stats).unwrap_or(lo) } else { hi };
@@ -349,10 +357,7 @@ fn violated_end(piece: &Piece, law: &ContactLaw, stats: &mut RootStats) -> Optio
 
 /// dT/dθ of the profile at θ, from the piece to its right (`right`) or left at a breakpoint.
 fn slope(profile: &Profile, theta: f64, right: bool) -> f64 {
-    let mut i = profile_index(profile, theta);
-    if right && i + 1 < profile.len() && profile.piece(i).theta1_rad <= theta {
-        i += 1;
-    }
+    let i = if right { index_right(profile, theta) } else { profile_index(profile, theta) };
     -profile.piece(i).friction_n_per_rad(theta)
 }
 
@@ -367,7 +372,22 @@ fn integral(profile: &Profile, a: f64, b: f64) -> f64 {
         .sum()
 }
 
-/// Index of the piece holding θ.
+/// Index of the piece holding θ, the one to its right at a breakpoint.
+fn index_right(profile: &Profile, theta: f64) -> usize {
+    let i = profile_index(profile, theta);
+    if i + 1 < profile.len() && profile.piece(i).theta1_rad <= theta { i + 1 } else { i }
+}
+
+/// The stuck rope's tension at θ read from the piece on the given side of it (`right`) where θ
+/// is a breakpoint: a zone's end reads the rope outside the zone, the same physical side in a
+/// profile and in its mirror image (its two pieces may disagree there by the round-off of the
+/// step that made them, a few 1e-11 of the tension).
+fn outside(profile: &Profile, theta: f64, right: bool) -> f64 {
+    let i = if right { index_right(profile, theta) } else { profile_index(profile, theta) };
+    profile.piece(i).tension_n(theta)
+}
+
+/// Index of the piece holding θ (the one to its left at a breakpoint).
 fn profile_index(profile: &Profile, theta: f64) -> usize {
     let m = profile.len();
     let (mut lo, mut hi) = (0, m - 1);

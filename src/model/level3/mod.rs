@@ -66,7 +66,7 @@ pub mod state;
 pub mod stats;
 
 pub use bending::Bending;
-pub use output::{distribution, run_history, summarize};
+pub use output::{distribution, summarize};
 pub use qp::{ClarabelStatus, Loads, Program, SolveError, Verdict};
 pub use simulate::Simulation;
 pub use state::State;

@@ -1,11 +1,9 @@
 //! What a level-3 run reports: the level-3 state as the history runner's [`WrapModel`] (history
 //! rows, snapshots and the utilization map as level 2 reports them), from its segments.
 
-use super::{Level3Error, Level3Stats, Params, Simulation, State};
+use super::{Level3Error, Level3Stats, Simulation, State};
 use crate::model::history::sample::interpolate;
-use crate::model::history::{
-    self, HistoryRun, HistorySample, Local, MAP_COLUMNS, Output, SolverReport, Wrap, WrapModel,
-};
+use crate::model::history::{Local, MAP_COLUMNS, SolverReport, Wrap, WrapModel};
 use crate::numerics::roots::{RootError, RootStats, brent};
 use crate::wrap::arcs::{ArcTally, Demarcation};
 use crate::wrap::contact::{ARC_THRESHOLD, ContactLaw, SLIP_UTILIZATION};
@@ -102,18 +100,6 @@ impl WrapModel for Simulation<'_> {
 /// The segment holding θ (the last one at θ = α).
 fn segment_of(state: &State, theta_rad: f64) -> usize {
     ((theta_rad / state.pitch_rad).max(0.0) as usize).min(state.segments() - 1)
-}
-
-/// Runs a history at level 3 from `initial` through [`history::run`], reporting as level 2 does
-/// (rows, snapshots, utilization map), with the level-3 solver counters.
-pub fn run_history(
-    params: Params,
-    samples: &[HistorySample],
-    output: Output,
-    initial: State,
-) -> Result<(HistoryRun, Level3Stats), Level3Error> {
-    let sim = Simulation::new(params, samples, initial)?;
-    history::run(sim, samples, output, 0)
 }
 
 /// Arcs, JDP, peak utilization (and, when `zones`, the contact zones) of a level-3 state.

@@ -21,8 +21,8 @@ use crate::dynamics::{
     self, AT_REST_M_S, Checkpoint, DynSample, DynamicsError, HoistParams, Kinematics, MotionProfile, SimOptions,
     Streamed,
 };
+use crate::model::Level;
 use crate::model::braking::{self, BrakeError};
-use crate::plan::Level;
 use shared::{RopePlan, RopePrefix};
 use std::cell::{Cell, RefCell};
 

@@ -4,8 +4,8 @@
 use super::StopTrials;
 use crate::design::{Design, DutyCycleScene, HistorySample, Hoist};
 use crate::dynamics::{DynSample, Side};
+use crate::model::Level;
 use crate::numerics::roots::{self, Holding, RootStats};
-use crate::plan::Level;
 
 /// A rope leaving the pulley: at a tangent point the tension per rope no longer exceeds m'v²,
 /// so the contact force n = T − m'v² (docs/physics.md §2) is gone.

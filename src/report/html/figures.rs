@@ -5,7 +5,7 @@
 //! appendix, two to a printed page, which `[document] appendix_figures = false` leaves out.
 
 use super::{Context, by_hand, esc};
-use crate::plan::Level;
+use crate::model::Level;
 use crate::report::figure_size::FigureKind;
 use base64::Engine;
 use std::fmt::Write;

@@ -2,10 +2,10 @@
 //! assumptions and limits of the model levels the run used.
 
 use super::{Context, esc, table};
-use crate::codes::CodeBasis;
+use crate::design::CodeBasis;
 use crate::design::Limit;
 use crate::design::requirements::{Rule, SafetyFactorBasis};
-use crate::plan::Level;
+use crate::model::Level;
 use std::collections::BTreeSet;
 use std::fmt::Write;
 use std::io;

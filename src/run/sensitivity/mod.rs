@@ -14,9 +14,10 @@ use super::{RunError, SceneResult};
 use crate::check::{Check, Sensitivity, Verdict};
 use crate::design::sensitivity::Parameter;
 use crate::design::{Design, DutyCycleScene};
+use crate::model::Level;
 use crate::model::level0::GROSS_SLIP_CHECK;
 use crate::model::level4::{ROPE_DYNAMICS_CHECK, RopeRun};
-use crate::plan::{Level, Plan};
+use crate::plan::Plan;
 use rayon::prelude::*;
 
 /// The sheet's name of the damping ratio, as a sensitivity record names it.

@@ -66,7 +66,7 @@ fn run(design: &Design, cycle: &DutyCycleScene, shared: Shared) -> Result<Vec<Ch
     let kin = samples.iter().map(|s| Kinematics { x_m: s.x_m, speed_m_s: s.speed_m_s, accel_m_s2: s.accel_m_s2 });
     let trip = Trip::valid_part(design, level4::end_history(samples), kin.collect());
     if let Some(slack) = level4::first_slack(&trip.samples, design.rope.mass_per_m_kg) {
-        let level = crate::plan::Level::Dynamic4;
+        let level = crate::model::Level::Dynamic4;
         let advice = level4::slack_advice(design, hoist, cycle, &slack, level);
         return Err(Level4Error::SlackRope { slack: Box::new(slack), level, advice });
     }

@@ -14,12 +14,13 @@
 
 use crate::design::{Design, Direction, DutyCycleScene, HistorySample, Hoist, Scene};
 use crate::dynamics::{self, DynSample, MotionProfile, SimOptions};
+use crate::model::Level;
 use crate::model::history::{self, HistoryRun, Output};
 use crate::model::level0::EndState;
 use crate::model::level2::{Simulation, lattice};
 use crate::model::level4::{self, Level4Error, RopeRun};
 use crate::model::numerics::Numerics;
-use crate::plan::{self, Level, Plan};
+use crate::plan::{self, Plan};
 use crate::run::wrap_run::{Initial, level2_initial, rolling_initial};
 use crate::run::{Options, params};
 use std::sync::mpsc;

@@ -11,9 +11,9 @@
 //! change nothing of the other's), and each goes on from its state ([`WrapPair`]).
 
 use crate::design::{Design, Scene, SceneKind};
+use crate::model::Level;
 use crate::model::level4::shared::RopePlan;
-use crate::plan::{self, Level};
-use crate::run::Options;
+use crate::plan::{self, Plan};
 use crate::run::wrap_run::WrapKeep;
 
 /// Scenes that share the start of their trip with the group's leader.
@@ -54,11 +54,12 @@ pub(in crate::run) struct WrapPair {
     pub keep: WrapKeep,
 }
 
-/// The groups of `scenes`; a scene in none runs alone.
-pub(in crate::run) fn groups(design: &Design, scenes: &[&Scene], options: Options) -> Vec<Group> {
-    let mut candidates: Vec<(usize, RopePlan)> =
-        scenes.iter().enumerate().filter_map(|(i, scene)| Some((i, rope_plan(design, scene, options)?))).collect();
-    let plans = candidates.clone();
+/// The groups of `scenes` (each scene's plan in `plans`); a scene in none runs alone.
+pub(in crate::run) fn groups(design: &Design, scenes: &[&Scene], plans: &[Plan]) -> Vec<Group> {
+    let mut candidates: Vec<(usize, RopePlan)> = (scenes.iter().zip(plans).enumerate())
+        .filter_map(|(i, (scene, plan))| Some((i, rope_plan(design, scene, plan)?)))
+        .collect();
+    let rope_plans = candidates.clone();
     let mut out = Vec::new();
     while !candidates.is_empty() {
         // The longest trip leads (the first of equal ones).
@@ -79,7 +80,7 @@ pub(in crate::run) fn groups(design: &Design, scenes: &[&Scene], options: Option
             let shared_fraction = last as f64 / leader.steps() as f64;
             members.push(Member { index: leader_index, fork_step: last, shared_fraction });
             members.sort_unstable_by_key(|m| m.index);
-            let wraps = wrap_pairs(design, scenes, options, &plans, &members);
+            let wraps = wrap_pairs(design, (scenes, plans), &rope_plans, &members);
             out.push(Group { leader, members, wraps });
         }
     }
@@ -87,9 +88,8 @@ pub(in crate::run) fn groups(design: &Design, scenes: &[&Scene], options: Option
 }
 
 /// The ropes of a scene that runs them (a duty cycle above level 0 on a sheet with a hoist).
-fn rope_plan(design: &Design, scene: &Scene, options: Options) -> Option<RopePlan> {
+fn rope_plan(design: &Design, scene: &Scene, plan: &Plan) -> Option<RopePlan> {
     let SceneKind::DutyCycle(cycle) = &scene.kind else { return None };
-    let plan = plan::plan_with_lining(scene, options.request, design.lining.is_some()).ok()?;
     (plan.level != Level::Closed0).then_some(())?;
     RopePlan::of(design, design.hoist.as_ref()?, cycle).ok()
 }
@@ -100,15 +100,14 @@ fn rope_plan(design: &Design, scene: &Scene, options: Options) -> Option<RopePla
 /// it and asks for no snapshot before they part that the provider does not make.
 fn wrap_pairs(
     design: &Design,
-    scenes: &[&Scene],
-    options: Options,
+    (scenes, scene_plans): (&[&Scene], &[Plan]),
     plans: &[(usize, RopePlan)],
     members: &[Member],
 ) -> Vec<WrapPair> {
     let plan_of = |i: usize| plans.iter().find(|(j, _)| *j == i).map(|(_, p)| p);
     let eligible: Vec<(usize, &RopePlan, Rows)> = members
         .iter()
-        .filter_map(|m| Some((m.index, plan_of(m.index)?, wrap_rows(design, scenes[m.index], options)?)))
+        .filter_map(|m| Some((m.index, plan_of(m.index)?, wrap_rows(design, scenes[m.index], &scene_plans[m.index])?)))
         .collect();
     let parts_at = |p: &RopePlan, c: &RopePlan| p.fork_step(c).map(|k| k as f64 * c.options.dt_s);
     // The pairs with `provider` as the provider.
@@ -143,10 +142,9 @@ struct Rows {
 
 /// When a duty cycle's wrap reports, if it runs at level 2 with no rope elements to follow
 /// (those whose wrap can go on from another's).
-fn wrap_rows(design: &Design, scene: &Scene, options: Options) -> Option<Rows> {
+fn wrap_rows(design: &Design, scene: &Scene, plan: &Plan) -> Option<Rows> {
     let SceneKind::DutyCycle(cycle) = &scene.kind else { return None };
-    let plan = plan::plan_with_lining(scene, options.request, design.lining.is_some()).ok()?;
-    let rigid = design.lining.is_none() && plan::wrap_level(&plan, false) == Level::Rigid2;
+    let rigid = design.lining.is_none() && plan::wrap_level(plan, false) == Level::Rigid2;
     let rows = Rows { step_s: cycle.output_step_s, snapshots_s: cycle.snapshots_s.clone() };
     (rigid && scene.tracks.is_none()).then_some(rows)
 }

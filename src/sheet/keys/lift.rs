@@ -2,7 +2,7 @@
 
 use super::Type::{Integer, Number, Tables, Text};
 use super::{Default as D, Key, Table};
-use crate::lift::groove::KINDS;
+use crate::design::groove::KINDS;
 use crate::sheet::lift::{
     DEFAULT_EMERGENCY_DECEL_M_S2, LIFT_ROPE_COUNT_MAX, LIFT_WRAP_MAX_DEG, MAX_PULLEYS, PROTECTIONS,
     RATED_SPEED_MAX_M_S, ROPINGS, WRAPS,

@@ -3,7 +3,7 @@
 
 use super::Type::{Integer, Limit, Number, Numbers, Table as Sub, Text};
 use super::{Default as D, Key, Table};
-use crate::ropes::{DEFAULT_DEVIATION_LIMIT_PCT, DEFAULT_DEVIATION_SOURCE};
+use crate::design::{DEFAULT_DEVIATION_LIMIT_PCT, DEFAULT_DEVIATION_SOURCE};
 use crate::sheet::ropes::{
     DEVIATION_LIMIT_MAX_PCT, GROOVE_DEVIATION_MAX_M, LENGTH_DEVIATION_MAX_M, ROUND_TRIPS_MAX, STROKE_MAX_M,
 };

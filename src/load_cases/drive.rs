@@ -2,15 +2,15 @@
 //! load-case matrix"): the shaft torque of the case's state, the static out-of-balance torque of
 //! its masses at rest and the brake's holding factor over it, and for the emergency cases on
 //! rigid ropes the brake torque each end of the deceleration window asks. The design's checks
-//! take the worst of these rows ([`super::checks::holding_check`],
-//! [`super::checks::window_checks`]); matrix.csv and the workbook show every row, the workbook
+//! take the worst of these rows ([`crate::drive::checks::holding_check`],
+//! [`crate::drive::checks::window_checks`]); matrix.csv and the workbook show every row, the workbook
 //! as live formulas over the row's own cells.
 
-use super::checks::force_for_decel_n;
+use super::{CaseResult, Position, direction_word};
 use crate::design::{Design, Direction, Phase};
-use crate::load_cases::{CaseResult, Position, direction_word};
+use crate::drive::checks::force_for_decel_n;
+use crate::model::Level;
 use crate::model::braking::StopMasses;
-use crate::plan::Level;
 use serde::Serialize;
 
 /// The machine's values the formulas of a case's drive use.
