@@ -366,8 +366,9 @@ fn a_run_with_warnings_never_says_all_checks_pass() {
 
 /// Nothing moved out of the main body is lost: Appendix B of the reference report holds a row
 /// for every input not in the sheet (B.1), every sensitivity end pair (B.2), every load case
-/// (B.3) and every check of the scenes and the design (B.4), counted from summary.json; the main
-/// body keeps a line pointing to each table.
+/// (B.3), every check of the scenes and the design (B.4) and the drive and the brake at every case
+/// that has them (B.5, the same values as summary.json's `drive` of the case), counted from
+/// summary.json; the main body keeps a line pointing to each table.
 #[test]
 fn appendix_b_holds_every_row_moved_out_of_the_main_body() {
     let dir = reference_report();
@@ -397,7 +398,10 @@ fn appendix_b_holds_every_row_moved_out_of_the_main_body() {
     assert_eq!(rows("B.2. Sensitivity"), sensitivity, "B.2: every sensitivity record");
     assert_eq!(rows("B.3. Load-case matrix"), cases, "B.3: every load case");
     assert_eq!(rows("B.4. Every check"), checks, "B.4: every check");
-    for table in ["table B.1", "table B.2", "table B.3", "table B.4"] {
+    let with_drive = arr(&summary["load_cases"]["cases"]).iter().filter(|c| !c["drive"].is_null()).count();
+    assert!(with_drive > 0, "the reference sheet's cases carry the drive's values");
+    assert_eq!(rows("B.5. The drive and the brake"), with_drive, "B.5: every case's drive");
+    for table in ["table B.1", "table B.2", "table B.3", "table B.4", "table B.5"] {
         assert!(before.contains(table), "the main body points to {table}");
     }
 }

@@ -155,6 +155,24 @@ fn the_sheets_ranges_are_the_ones_used() {
         assert_eq!((mu.low, mu.high, mu.range_source), (0.2, 0.3, InputSource::Sheet));
         assert_eq!(ea.range_source, InputSource::Default);
     }
+    // The sentence stating ζ gives the sheet's range, not the default bracket 0.005–0.02.
+    let design =
+        sheet::parse(concat!(env!("CARGO_MANIFEST_DIR"), "/tables/guo2020-variant.toml"), &text).expect("parses");
+    let d = design.duty_cycle_damping().expect("the sheet has duty cycles");
+    assert_eq!((d.range_low, d.range_high, d.range_source), (0.008, 0.012, InputSource::Sheet));
+    let sentence = wrapcalc::report::dynamic_notes::damping_sentence(&d);
+    assert!(sentence.contains("range given in [sensitivity] 0.008–0.012"), "{sentence}");
+    let plain =
+        sheet::parse(concat!(env!("CARGO_MANIFEST_DIR"), "/tables/guo2020-variant.toml"), &sheet_text(None, ""))
+            .expect("parses")
+            .duty_cycle_damping()
+            .expect("duty cycles");
+    assert_eq!((plain.range_low, plain.range_high), ROPE_DAMPING_RANGE);
+    assert!(damping_default_words(&plain), "{}", wrapcalc::report::dynamic_notes::damping_sentence(&plain));
+}
+
+fn damping_default_words(d: &wrapcalc::design::damping::RopeDamping) -> bool {
+    wrapcalc::report::dynamic_notes::damping_sentence(d).contains("plausible range 0.005–0.02")
 }
 
 /// Bad `[sensitivity]` input: each error at the value's line:column, naming the sheet's key and

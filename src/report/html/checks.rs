@@ -53,10 +53,11 @@ pub fn load_cases(out: &mut String, ctx: &Context) -> io::Result<()> {
     };
     let _ = writeln!(
         out,
-        "<p class=\"note\"><b>Load-case matrix:</b> {} cases, {} with the ropes' dynamics; each case's tensions, safety factors and verdict are in <a href=\"#appendix-tables\">{}</a>, table B.3.</p>",
+        "<p class=\"note\"><b>Load-case matrix:</b> {} cases, {} with the ropes' dynamics; each case's tensions, safety factors and verdict are in <a href=\"#appendix-tables\">{}</a>, table B.3{}.</p>",
         m.cases.len(),
         m.rope_dynamics_runs,
-        super::appendix_tables::APPENDIX_B
+        super::appendix_tables::APPENDIX_B,
+        if m.cases.iter().any(|c| c.drive.is_some()) { ", its drive and brake values in table B.5" } else { "" }
     );
     Ok(())
 }
