@@ -250,7 +250,6 @@ fn no_import_runs_back_up() {
 /// a history (`.advance_to(`), each with why it is not a second runner.
 const STEPPERS: &[(&str, &str)] = &[
     ("model/track/mod.rs", "rope tracks: a second pass on their own grid, each element's entry and exit"),
-    ("run/wrap_run.rs", "the elastic lining's rolling start: one step to the end of its steady run-in, no rows"),
     ("bench/model_time.rs", "the benchmark of the bare model: its steps and summaries timed without the rows"),
 ];
 
