@@ -164,10 +164,9 @@ const LAYERS: &[&str] = &[
     "bench",
 ];
 
-/// The one import that still runs back up, with why: the tail-rope check of the friction-hoist
-/// rule sets (`check/codes.rs`) measures the tail's longest hanging length over the trip from
-/// level 4's motion profile, while the models build their check records with `check`'s types.
-const BACK_UP: &[(&str, &str)] = &[("check/codes.rs", "model")];
+/// The imports that may still run back up, each with why (none today: the tail-rope check
+/// measures the trip's travel with `dynamics`, beneath it).
+const BACK_UP: &[(&str, &str)] = &[];
 
 /// The stages a source file imports (`crate::<stage>` outside comments and strings, also inside
 /// `use crate::{…}` groups).
@@ -251,7 +250,6 @@ fn no_import_runs_back_up() {
 /// a history (`.advance_to(`), each with why it is not a second runner.
 const STEPPERS: &[(&str, &str)] = &[
     ("model/track/mod.rs", "rope tracks: a second pass on their own grid, each element's entry and exit"),
-    ("run/wrap_run.rs", "the elastic lining's rolling start: one step to the end of its steady run-in, no rows"),
     ("bench/model_time.rs", "the benchmark of the bare model: its steps and summaries timed without the rows"),
 ];
 

@@ -71,7 +71,7 @@ fn lining_mu_wet(design: &Design) -> Check {
 /// The longest tail rope hanging below a conveyance over the `[hoist]` trip (m): side 1 is lifted
 /// by the travel s, so its tail lengthens to tail1 + s while side 2's shortens from tail2.
 pub fn longest_tail_m(hoist: &Hoist) -> (f64, f64) {
-    let travel = crate::model::level4::lift_travel_m(hoist);
+    let travel = crate::dynamics::lift_travel_m(hoist);
     ((hoist.tail1_length_m + travel).max(hoist.tail2_length_m), travel)
 }
 

@@ -67,7 +67,7 @@ mod state;
 mod sweep;
 
 pub use braked::{PulleyBody, braked_stop};
-pub use profile::{AT_REST_M_S, Kinematics, MotionProfile, Stage};
+pub use profile::{AT_REST_M_S, Kinematics, MotionProfile, Stage, lift_travel_m, stages};
 pub use simulate::{
     LedgerRow, Prefix, STREAM_CHUNK, Streamed, energy_ledger, recorded_times, simulate, simulate_prefix,
     simulate_resumable, simulate_streamed, simulate_with,

@@ -1,9 +1,10 @@
 //! The prescribed motion of the pulley surface: stages of piecewise-linear (jerk-limited)
-//! acceleration, integrated exactly.
+//! acceleration, integrated exactly; the `[hoist]` trip as such stages.
 
 use serde::{Deserialize, Serialize};
 
 use super::DynamicsError;
+use crate::design::{Direction, Hoist};
 
 /// One stage of a motion profile.
 ///
@@ -291,6 +292,24 @@ impl Cursor<'_> {
         }
         p.in_segment(self.segment, t_s)
     }
+}
+
+// The `[hoist]` trip as stages: the pulley surface's travel over it sets the ropes' and the
+// tail's hanging lengths.
+
+/// Travel of the pulley surface over the `[hoist]` profile as given (a lift), m.
+pub fn lift_travel_m(hoist: &Hoist) -> f64 {
+    MotionProfile::new(&stages(hoist, Direction::Lift)).map_or(0.0, |p| p.at(p.duration_s()).x_m)
+}
+
+/// The hoist's stages for a direction of travel (mirrored when lowering side 1).
+pub fn stages(hoist: &Hoist, direction: Direction) -> Vec<Stage> {
+    let sign = direction.sign();
+    hoist
+        .stages
+        .iter()
+        .map(|s| Stage { duration_s: s.duration_s, accel_end_m_s2: sign * s.accel_m_s2, step: s.step })
+        .collect()
 }
 
 #[cfg(test)]

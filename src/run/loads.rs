@@ -64,7 +64,7 @@ pub(super) fn run_loads(
                 initial,
                 options,
             )?;
-            work = Work::increments(run.stats.increments);
+            work = run.work();
             result.level3 = level3;
             let last = run.snapshots.into_iter().last();
             result.wrap = last

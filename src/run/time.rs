@@ -305,7 +305,7 @@ fn run_samples(
     let rolling = rolling_initial(design, &first, direction);
     let initial = Initial::of(&rolling, first, direction);
     let (done, for_tracks) = match made_beside {
-        Some(run) => (ModelRun { run, level3: None, kept: Vec::new(), reused_increments: 0 }, None),
+        Some(run) => (ModelRun { work: run.work(), run, level3: None, kept: Vec::new() }, None),
         None => {
             let model = match (wrap_model(design, scene, &result.plan, samples, initial, options)?, centrifugal_max_n) {
                 (Model::Rigid(sim), Some(c)) => {
@@ -319,8 +319,7 @@ fn run_samples(
             (run_model(model, scene, samples, (output, options, spare_core), share)?, for_tracks)
         }
     };
-    let ModelRun { run, level3, kept, reused_increments } = done;
-    let work = Work::increments(run.stats.increments - reused_increments);
+    let ModelRun { run, level3, kept, work } = done;
     result.level3 = level3;
     take_run(design, &mut result, run, options);
     if let (Some(tracks), Some(model)) = (&scene.tracks, for_tracks) {

@@ -3,7 +3,7 @@
 //! (level 2 on a rigid lining, level 3 on an elastic one) and the state it starts from; the
 //! rope elements of a time scene follow the same model ([`super::track`]).
 
-use super::{Options, RunError, params};
+use super::{Options, RunError, Work, params};
 use crate::design::{Design, Direction, HistorySample, Scene};
 use crate::model::Level;
 use crate::model::history::{self, HistoryRun, Output};
@@ -114,8 +114,7 @@ pub(super) fn wrap_model<'a>(
                     let entry = if run_in[0].speed_m_s >= 0.0 { first.t1_n } else { first.t2_n };
                     let start = level3::State::uniform(alpha, options.nodes, entry);
                     let mut sim = level3::Simulation::new(params, &run_in, start).map_err(err)?;
-                    sim.settle().map_err(err)?;
-                    sim.advance_to(run_in.last().map_or(0.0, |s| s.t_s)).map_err(err)?;
+                    history::run_in(&mut sim, run_in.last().map_or(0.0, |s| s.t_s)).map_err(err)?;
                     stats = sim.level3;
                     sim.state
                 }
@@ -180,12 +179,12 @@ pub(super) struct WrapShare<'a> {
 }
 
 /// A wrap run's result: its history, level 3's counters, the states kept on the way and the
-/// increments not computed because the run went on from another's state.
+/// work the run did (the history runner's tally: not the increments of a state it went on from).
 pub(super) struct ModelRun {
     pub run: HistoryRun,
     pub level3: Option<level3::Level3Stats>,
     pub kept: Kept,
-    pub reused_increments: u64,
+    pub work: Work,
 }
 
 /// Runs `model` through `samples` with the one history runner ([`history::run_with`]; with
@@ -198,7 +197,7 @@ pub(super) fn run_model(
     (output, options, parallel_rows): (Output, Options, bool),
     share: WrapShare,
 ) -> Result<ModelRun, RunError> {
-    let done = |run, level3| ModelRun { run, level3, kept: Vec::new(), reused_increments: 0 };
+    let done = |run: HistoryRun, level3| ModelRun { work: run.work(), run, level3, kept: Vec::new() };
     let sim = match model {
         Model::Elastic(sim, mut stats) => {
             let (run, run_stats) = history::run_with(*sim, samples, output, options.nodes, parallel_rows)
@@ -213,7 +212,7 @@ pub(super) fn run_model(
     if let Some(from) = share.from.filter(|cp| cp.start.starts_as(&sim) && cp.fits(samples, &output)) {
         let model = from.model.clone().attached(samples);
         let (run, _) = history::run_from(from, model, samples, layout, parallel_rows).map_err(err)?;
-        return Ok(ModelRun { reused_increments: from.model.stats.increments, ..done(run, None) });
+        return Ok(ModelRun { work: from.work_of(&run), ..done(run, None) });
     }
     if share.keep.is_empty() {
         return history::run_with(sim, samples, output, options.nodes, parallel_rows)

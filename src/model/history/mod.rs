@@ -129,6 +129,13 @@ pub fn run_with<M: WrapModel>(
     Ok(finished(&model, runs.into_iter().next().expect("the run's rows")))
 }
 
+/// Settles `model` and steps it to `t_end_s` with no rows: a run-in whose end state alone is
+/// wanted (the elastic lining's steady rolling start, from which a history then runs).
+pub fn run_in<M: WrapModel>(model: &mut M, t_end_s: f64) -> Result<(), M::Error> {
+    model.settle()?;
+    model.advance_to(t_end_s)
+}
+
 /// The run with the model's solver report and root searches, and the model's counters.
 fn finished<M: WrapModel>(model: &M, mut run: HistoryRun) -> (HistoryRun, M::Counters) {
     run.stats = model.solver_report();

@@ -5,6 +5,7 @@ use super::report::SolverReport;
 use super::sample::HistorySample;
 use crate::model::level0::{EndState, safety_factor};
 use crate::numerics::roots::RootStats;
+use crate::numerics::work::Work;
 use crate::wrap::Distribution;
 use crate::wrap::summary::WrapSummary;
 use serde::Serialize;
@@ -80,6 +81,12 @@ impl HistoryRun {
             roots: RootStats::default(),
             map: Vec::with_capacity(rows),
         }
+    }
+
+    /// The work the run did: the increments its model stepped (a run that went on from a kept
+    /// state: [`super::Checkpoint::work_of`]).
+    pub fn work(&self) -> Work {
+        Work::increments(self.stats.increments)
     }
 
     /// The wrap at the last sample.

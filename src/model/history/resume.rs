@@ -10,6 +10,7 @@
 
 use super::rows;
 use super::{HistoryRun, HistorySample, Output, WrapModel, finished};
+use crate::numerics::work::Work;
 
 /// The state of a run at the instant of one of its samples, and what the run had reported up
 /// to then.
@@ -158,6 +159,14 @@ fn union(own: &[f64], theirs: &[&[f64]]) -> (Vec<f64>, Vec<u32>) {
         })
         .collect();
     (times, targets)
+}
+
+impl<K: WrapModel> Checkpoint<K> {
+    /// The work of `run`, which went on from this state ([`run_from`]): the increments its
+    /// model stepped less those the keeping run had stepped up to here.
+    pub fn work_of(&self, run: &HistoryRun) -> Work {
+        Work::increments(run.stats.increments - self.model.solver_report().increments)
+    }
 }
 
 impl<K> Checkpoint<K> {

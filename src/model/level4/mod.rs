@@ -13,7 +13,8 @@ pub mod shared;
 mod slack;
 pub mod stop;
 
-pub use profile::{imposed_stop_profile, lift_travel_m, motion_profile, profile_until, stages, trip_stages};
+pub use crate::dynamics::{lift_travel_m, stages};
+pub use profile::{imposed_stop_profile, motion_profile, profile_until, trip_stages};
 pub use slack::{SlackRope, first_slack, slack_advice};
 
 use crate::design::{Design, Direction, DutyCycleScene, EmergencyStop, HistorySample, Hoist};

@@ -4,12 +4,7 @@
 
 use super::Level4Error;
 use crate::design::{Direction, DutyCycleScene, Hoist};
-use crate::dynamics::{AT_REST_M_S, MotionProfile, Stage};
-
-/// Travel of the pulley surface over the `[hoist]` profile as given (a lift), m.
-pub fn lift_travel_m(hoist: &Hoist) -> f64 {
-    MotionProfile::new(&stages(hoist, Direction::Lift)).map_or(0.0, |p| p.at(p.duration_s()).x_m)
-}
+use crate::dynamics::{AT_REST_M_S, MotionProfile, Stage, stages};
 
 /// The stages of a scene's trip: the hoist's stages in its direction, and for a round trip
 /// (`return_after_s`) a rest of that long and the same trip back the other way.
@@ -26,16 +21,6 @@ pub fn trip_stages(hoist: &Hoist, direction: Direction, return_after_s: Option<f
         out.extend(stages(hoist, back));
     }
     out
-}
-
-/// The hoist's stages for a direction of travel (mirrored when lowering side 1).
-pub fn stages(hoist: &Hoist, direction: Direction) -> Vec<Stage> {
-    let sign = direction.sign();
-    hoist
-        .stages
-        .iter()
-        .map(|s| Stage { duration_s: s.duration_s, accel_end_m_s2: sign * s.accel_m_s2, step: s.step })
-        .collect()
 }
 
 /// The profile of `stages` up to the trip instant `at_s` (`stages_until`). The hoist must be
