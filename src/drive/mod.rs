@@ -121,7 +121,7 @@ pub fn scene_drive(
     let mut thinning = Thinning::new(cycle.output_step_s);
     for (i, (s, k)) in samples.iter().zip(kinematics).enumerate() {
         let keep = thinning.keep(s.t_s, i + 1 == kinematics.len());
-        let tensions = rigid_tensions_n(params, guide, k);
+        let tensions = crate::model::level4::stop::rigid_tensions_of_checked_n(params, guide, k);
         rigid.push(drive_row(&inputs, n, s.t_s, tensions, k), keep);
         if let Some(sum) = ropes.as_mut() {
             sum.push(drive_row(&inputs, n, s.t_s, (s.t1_n, s.t2_n), k), keep);
@@ -130,19 +130,4 @@ pub fn scene_drive(
     let (rest, payload) = (inputs.rest_time_s, payload_kg);
     let (rigid, dynamic) = (rigid.finish(rest, payload), ropes.map(|s| s.finish(rest, payload)));
     Ok(SceneDrive { inputs, dynamic, rigid, payload_kg, output_step_s: cycle.output_step_s })
-}
-
-/// [`crate::model::stop::rigid_tensions_n`] at a sample of a run of `params` (validated, its
-/// lengths checked by the run), without checking them again: the same operations in the same
-/// order, `T_s = (M_s + ρL_s)·g/n` at rest, then `T1 = T1s(g + a)/g + m_g1·a/n`,
-/// `T2 = T2s(g − a)/g − m_g2·a/n`.
-fn rigid_tensions_n(
-    p: &crate::dynamics::HoistParams,
-    [g1, g2]: [f64; 2],
-    k: &crate::dynamics::Kinematics,
-) -> (f64, f64) {
-    let (g, n, a) = (p.g_m_s2, p.ropes as f64, k.accel_m_s2);
-    let at_rest = |side| (p.end_mass_kg(side, k.x_m) + p.rho_kg_m() * p.hanging_length_m(side, k.x_m)) * g / n;
-    let (t1s, t2s) = (at_rest(crate::design::Side::One), at_rest(crate::design::Side::Two));
-    (t1s * (g + a) / g + g1 * a / n, t2s * (g - a) / g - g2 * a / n)
 }

@@ -8,7 +8,7 @@
 use super::trip::Trip;
 use crate::check::Check;
 use crate::design::{Design, Side};
-use crate::dynamics::{self, HoistParams, Kinematics};
+use crate::dynamics::{self, HoistParams};
 use crate::model::level0::{Classical, GROSS_SLIP_CHECK};
 use crate::model::level4::ROPE_DYNAMICS_CHECK;
 use crate::model::stop;
@@ -74,10 +74,16 @@ pub(super) fn overlay(
 ) -> Option<RigidDynamic> {
     let check = governing_check(classical)?;
     let governing_t_s = check.inputs.iter().find(|q| q.name == "t")?.value;
-    let kin: Vec<(f64, Kinematics)> = trip.samples.iter().zip(&trip.kinematics).map(|(s, k)| (s.t_s, *k)).collect();
-    let rigid_samples = stop::rigid_samples(design, params, &kin).ok()?;
+    // The trip's kinematics were checked by its run: its parameters once, not every sample.
+    params.validate().ok()?;
+    let guide = design.guide_mass_kg();
     let dynamic: Vec<[f64; 3]> = trip.samples.iter().map(|s| [s.t_s, s.t1_n, s.t2_n]).collect();
-    let rigid: Vec<[f64; 3]> = rigid_samples.iter().map(|s| [s.t_s, s.t1_n, s.t2_n]).collect();
+    let rigid: Vec<[f64; 3]> = (trip.samples.iter().zip(&trip.kinematics))
+        .map(|(s, k)| {
+            let (t1, t2) = stop::rigid_tensions_of_checked_n(params, guide, k);
+            [s.t_s, t1, t2]
+        })
+        .collect();
     let i = trip.samples.iter().position(|s| s.t_s >= governing_t_s).unwrap_or(trip.samples.len().saturating_sub(1));
     let x_m = trip.kinematics.get(i)?.x_m;
     let closed = |side| dynamics::continuous_rope_frequency_hz(params, side, x_m).ok();

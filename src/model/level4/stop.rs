@@ -60,6 +60,19 @@ pub fn rigid_tensions_n(design: &Design, params: &HoistParams, k: &Kinematics) -
     Ok((t1s * (g + a) / g + g1 * a / n, t2s * (g - a) / g - g2 * a / n))
 }
 
+/// [`rigid_tensions_n`] at kinematics a run of `p` has already checked (`p` validated, the
+/// lengths at `k.x_m` in range), without checking them again: the same operations in the same
+/// order, `T_s = (M_s + ρL_s)·g/n` at rest, then `T1 = T1s(g + a)/g + m_g1·a/n`,
+/// `T2 = T2s(g − a)/g − m_g2·a/n`, with `[g1, g2]` the guide sheaves' `J_g/R_g²`
+/// ([`Design::guide_mass_kg`]). For a whole trip's samples, where checking every sample would
+/// cost more than the tensions.
+pub fn rigid_tensions_of_checked_n(p: &HoistParams, [g1, g2]: [f64; 2], k: &Kinematics) -> (f64, f64) {
+    let (g, n, a) = (p.g_m_s2, p.ropes as f64, k.accel_m_s2);
+    let at_rest = |side| (p.end_mass_kg(side, k.x_m) + p.rho_kg_m() * p.hanging_length_m(side, k.x_m)) * g / n;
+    let (t1s, t2s) = (at_rest(crate::design::Side::One), at_rest(crate::design::Side::Two));
+    (t1s * (g + a) / g + g1 * a / n, t2s * (g - a) / g - g2 * a / n)
+}
+
 /// The level-0 (rigid-rope) kinematics of a trip whose brake trips at `at_s`: the profile up to
 /// the trip, then [`braking::rigid_stop`] to standstill.
 pub fn rigid_braked_kinematics(
