@@ -248,10 +248,8 @@ fn no_import_runs_back_up() {
 
 /// The places besides the one history runner (`model/history/`) that step a wrap model through
 /// a history (`.advance_to(`), each with why it is not a second runner.
-const STEPPERS: &[(&str, &str)] = &[
-    ("model/track/mod.rs", "rope tracks: a second pass on their own grid, each element's entry and exit"),
-    ("bench/model_time.rs", "the benchmark of the bare model: its steps and summaries timed without the rows"),
-];
+const STEPPERS: &[(&str, &str)] =
+    &[("bench/model_time.rs", "the benchmark of the bare model: its steps and summaries timed without the rows")];
 
 /// The files of `files` that step a wrap model outside the runner and the named places, or
 /// define a `run_history` of their own.

@@ -3,12 +3,14 @@
 //! through the history and reports it ([`run`]: rows, snapshots, the utilization map and the
 //! solver's counters).
 
+pub mod follow;
 pub mod output;
 pub mod report;
 mod resume;
 mod rows;
 pub mod sample;
 
+pub use follow::follow;
 pub use output::{HistoryRow, HistoryRun, MAP_COLUMNS, Output, Snapshot};
 pub use report::SolverReport;
 pub use resume::{Checkpoint, KeepFor, run_from, run_keeping};

@@ -26,11 +26,14 @@
 //! beyond 0.001·μN either way (the paper's reading of the demarcation point on an element): that
 //! instant is found by Brent's method on `F(t)` between the two rows that bracket it, each trial
 //! advancing a copy of the model from the earlier row (at level 3 the copy plans its own
-//! increments to the trial time, so `F(t)` between rows carries their discretisation).
+//! increments to the trial time, so `F(t)` between rows carries their discretisation). The
+//! history runner steps the model, the copies too ([`history::follow`]); the tracks only read
+//! its states.
 
 pub mod turn;
 
-use crate::model::history::{HistorySample, WrapModel};
+use crate::model::history::follow::{Instant, Kept};
+use crate::model::history::{self, HistorySample, WrapModel};
 use crate::numerics::roots::{self, RootStats};
 use crate::wrap::contact::NodeState;
 use turn::PulleyTurn;
@@ -110,7 +113,7 @@ impl Track {
 /// history's first sample, not yet settled), with a row every `step_s` (and at every sample,
 /// every entry and exit of an element).
 pub fn run_tracks<M: WrapModel + Clone>(
-    mut model: M,
+    model: M,
     samples: &[HistorySample],
     elements: &[Element],
     element_length_m: f64,
@@ -121,16 +124,13 @@ pub fn run_tracks<M: WrapModel + Clone>(
     let half = 0.5 * element_length_m / wrap.radius_m;
     let alpha = wrap.wrap_angle_rad;
     let times = grid(samples, &turn, elements, half, alpha, step_s);
-    model.settle()?;
     let mut tracks: Vec<Track> =
         elements.iter().map(|e| Track { label: e.label.clone(), rows: Vec::new(), turn_down: None }).collect();
     let mut roots = RootStats::default();
     // Tolerance of "on the pulley" at an entry or exit instant (round-off of φ).
     let slack = 1e-9 * (1.0 + alpha);
-    let mut before: Option<(f64, M)> = None;
     let mut watch: Vec<Watch<M>> = elements.iter().map(|_| Watch::default()).collect();
-    for &t in &times {
-        model.advance_to(t)?;
+    history::follow(model, &times, |Instant { t_s: t, model, before }| {
         let phi = turn.at(t);
         let mut any = false;
         for ((e, track), w) in elements.iter().zip(tracks.iter_mut()).zip(watch.iter_mut()) {
@@ -139,7 +139,7 @@ pub fn run_tracks<M: WrapModel + Clone>(
                 continue;
             }
             any = true;
-            let row = row_at(&model, t, centre, half, track.rows.last());
+            let row = row_at(model, t, centre, half, track.rows.last());
             if track.turn_down.is_none() {
                 let on = centre >= half && centre <= alpha - half;
                 let sign = if turn.omega_per_s(0.5 * (track.rows.last().map_or(t, |p| p.t_s) + t)) >= 0.0 {
@@ -147,20 +147,17 @@ pub fn run_tracks<M: WrapModel + Clone>(
                 } else {
                     -1.0
                 };
-                let earlier =
-                    before.as_ref().filter(|(t_before, _)| track.rows.last().is_some_and(|p| p.t_s == *t_before));
-                if let Some((prev, next, start)) =
-                    w.step(track.rows.last(), &row, on, sign, wrap.mu, earlier.map(|b| &b.1))
-                {
-                    let probe = Probe { model: &start, turn: &turn, element: e, half };
+                let earlier = before.filter(|b| track.rows.last().is_some_and(|p| p.t_s == b.t_s()));
+                if let Some((prev, next, start)) = w.step(track.rows.last(), &row, on, sign, wrap.mu, earlier) {
+                    let probe = Probe { start: &start, turn: &turn, element: e, half };
                     track.turn_down = Some(probe.turn_down(&prev, &next, &mut roots)?);
                 }
             }
             track.rows.push(row);
         }
         // The state a turn-down search starts from (only needed while an element is on the pulley).
-        before = any.then(|| (t, model.clone()));
-    }
+        Ok(any)
+    })?;
     Ok((tracks, roots))
 }
 
@@ -177,8 +174,8 @@ pub fn run_tracks<M: WrapModel + Clone>(
 struct Watch<M> {
     /// A row since the last reversal candidate had the force along the motion.
     armed: bool,
-    /// The rows bracketing the zero and the state at the earlier one.
-    candidate: Option<(TrackRow, TrackRow, M)>,
+    /// The rows bracketing the zero and the state kept at the earlier one.
+    candidate: Option<(TrackRow, TrackRow, Kept<M>)>,
 }
 
 impl<M> Default for Watch<M> {
@@ -187,7 +184,7 @@ impl<M> Default for Watch<M> {
     }
 }
 
-impl<M: Clone> Watch<M> {
+impl<M: WrapModel + Clone> Watch<M> {
     /// Takes the next row `b` after `a` (`sign`: the direction of motion between them, `earlier`:
     /// the state at `a` when kept); returns the bracket of a confirmed turn-down.
     fn step(
@@ -197,8 +194,8 @@ impl<M: Clone> Watch<M> {
         on: bool,
         sign: f64,
         mu: f64,
-        earlier: Option<&M>,
-    ) -> Option<(TrackRow, TrackRow, M)> {
+        earlier: Option<&Kept<M>>,
+    ) -> Option<(TrackRow, TrackRow, Kept<M>)> {
         let band = |r: &TrackRow| ARC_THRESHOLD * mu * r.contact_force_n;
         if sign * b.friction_force_n > band(b) {
             self.armed = true;
@@ -281,9 +278,10 @@ fn row_at<M: WrapModel>(model: &M, t: f64, centre: f64, half: f64, prev: Option<
     }
 }
 
-/// Evaluates an element's friction force between two rows by advancing a copy of the state.
+/// Evaluates an element's friction force between two rows on copies of the state kept at the
+/// earlier one, stepped on by the runner ([`Kept::at`]).
 struct Probe<'a, M> {
-    model: &'a M,
+    start: &'a Kept<M>,
     turn: &'a PulleyTurn,
     element: &'a Element,
     half: f64,
@@ -292,9 +290,8 @@ struct Probe<'a, M> {
 impl<M: WrapModel + Clone> Probe<'_, M> {
     /// The friction force at `t` (≥ the copy's time); NaN where the model fails.
     fn force_n(&self, t: f64) -> f64 {
-        let mut model = self.model.clone();
-        match model.advance_to(t) {
-            Ok(()) => friction_force_n(&model, self.turn.at(t) - self.element.phi_rad, self.half),
+        match self.start.at(t) {
+            Ok(model) => friction_force_n(&model, self.turn.at(t) - self.element.phi_rad, self.half),
             Err(_) => f64::NAN,
         }
     }
