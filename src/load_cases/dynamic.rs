@@ -16,15 +16,44 @@ use crate::model::Level;
 use crate::model::level0::{DYNAMIC_CHECK, EndState, euler_limit, safety_factor};
 use crate::model::level4::{self, ELEMENTS_PER_SIDE, Level4Error, ROPE_DYNAMICS_CHECK, WRAP_SAMPLE_S};
 use crate::model::stop::{self, StopMode};
+use rayon::prelude::*;
 
 /// Every level-4 case, the number of rope-dynamics runs it took and the time steps they
-/// integrated (their work).
+/// integrated (their work). Each payload and direction is independent: they run on the free
+/// cores, their cases in the matrix's order (payload, then direction).
 pub fn cases(
     design: &Design,
     hoist: &Hoist,
     lc: &LoadCases,
     prof: &Characteristics,
 ) -> Result<(Vec<CaseResult>, usize, u64), Level4Error> {
+    let pairs: Vec<(f64, Direction)> =
+        lc.payloads_kg.iter().flat_map(|&p| lc.directions.iter().map(move |&d| (p, d))).collect();
+    let each: Vec<Result<Group, Level4Error>> =
+        pairs.par_iter().map(|&pair| pair_cases(design, hoist, lc, prof, pair)).collect();
+    // The first failure in the matrix's order is the one reported, as one after the other.
+    let (mut out, mut runs, mut steps) = (Vec::new(), 0, 0);
+    for group in each {
+        let (cases, n, integrated) = group?;
+        out.extend(cases);
+        runs += n;
+        steps += integrated;
+    }
+    Ok((out, runs, steps))
+}
+
+/// The cases of one payload and direction, the runs they took and the steps integrated.
+type Group = (Vec<CaseResult>, usize, u64);
+
+/// The level-4 cases of `payload` in direction `dir`: the marked phases of the normal trip, then
+/// the emergency stops.
+fn pair_cases(
+    design: &Design,
+    hoist: &Hoist,
+    lc: &LoadCases,
+    prof: &Characteristics,
+    (payload, dir): (f64, Direction),
+) -> Result<Group, Level4Error> {
     let emergency = emergency_mode(design, lc);
     let record_every = ((WRAP_SAMPLE_S / lc.time_step_s).round() as usize).max(1);
     let options = SimOptions { record_every, energy: false, ..SimOptions::new(lc.time_step_s, ELEMENTS_PER_SIDE) };
@@ -32,53 +61,48 @@ pub fn cases(
     let stops = lc.rope_dynamics.contains(&Phase::Emergency) && emergency != Emergency::None;
     let mut out = Vec::new();
     let (mut runs, mut steps) = (0, 0);
-    for &payload in &lc.payloads_kg {
-        for &dir in &lc.directions {
-            let (params, x0) = trip_params(design, hoist, payload, dir, prof.travel_m);
-            let stages = level4::stages(hoist, dir);
-            if !normal.is_empty() {
-                let profile = dynamics::MotionProfile::new(&stages)?;
+    let (params, x0) = trip_params(design, hoist, payload, dir, prof.travel_m);
+    let stages = level4::stages(hoist, dir);
+    if !normal.is_empty() {
+        let profile = dynamics::MotionProfile::new(&stages)?;
+        let samples = guided_ropes(design, &params, &profile, &options, &mut steps)?;
+        runs += 1;
+        out.extend(phase_cases(design, &params, payload, dir, x0, &normal, &samples)?);
+    }
+    if !stops {
+        return Ok((out, runs, steps));
+    }
+    let mut fractions = lc.rope_dynamics_stops.clone();
+    fractions.sort_by(f64::total_cmp);
+    let times: Vec<f64> = fractions.iter().map(|f| prof.stop_time_s(*f)).collect();
+    let (trips, after_s, mode) = match emergency {
+        Emergency::Brake(b) => {
+            runs += 1;
+            let trip = stop::BrakedTrip { stages: &stages, trips_s: &times, time_step_s: lc.time_step_s, from: None };
+            let braked = stop::braked_ropes(design, &params, trip, &b)?;
+            steps += braked.steps;
+            (braked.trips, b.idle_time_s + b.build_up_s, StopMode::Brake)
+        }
+        Emergency::Imposed(d) => {
+            let mut trips = Vec::new();
+            for &t in &times {
+                let profile = level4::imposed_stop_profile(&stages, t, d)?;
                 let samples = guided_ropes(design, &params, &profile, &options, &mut steps)?;
                 runs += 1;
-                out.extend(phase_cases(design, &params, payload, dir, x0, &normal, &samples)?);
+                trips.push(samples);
             }
-            if !stops {
-                continue;
-            }
-            let mut fractions = lc.rope_dynamics_stops.clone();
-            fractions.sort_by(f64::total_cmp);
-            let times: Vec<f64> = fractions.iter().map(|f| prof.stop_time_s(*f)).collect();
-            let (trips, after_s, mode) = match emergency {
-                Emergency::Brake(b) => {
-                    runs += 1;
-                    let trip =
-                        stop::BrakedTrip { stages: &stages, trips_s: &times, time_step_s: lc.time_step_s, from: None };
-                    let braked = stop::braked_ropes(design, &params, trip, &b)?;
-                    steps += braked.steps;
-                    (braked.trips, b.idle_time_s + b.build_up_s, StopMode::Brake)
-                }
-                Emergency::Imposed(d) => {
-                    let mut trips = Vec::new();
-                    for &t in &times {
-                        let profile = level4::imposed_stop_profile(&stages, t, d)?;
-                        let samples = guided_ropes(design, &params, &profile, &options, &mut steps)?;
-                        runs += 1;
-                        trips.push(samples);
-                    }
-                    (trips, 0.0, StopMode::Imposed)
-                }
-                Emergency::None => continue,
-            };
-            for ((samples, &t), &f) in trips.iter().zip(&times).zip(&fractions) {
-                let states = states_of(design, samples);
-                let kin = stop::kinematics_from(samples, t);
-                let report = stop::stop_report(design, &params, &kin, after_s, mode)?;
-                let onset = stop::slip_onset(design, &states);
-                let position = Position::Stop { fraction: f, t_s: t };
-                let case = stop_case(design, payload, dir, position, x0, Level::Dynamic4, &states, report, onset);
-                out.push(rope_dynamics_labels(design, case));
-            }
+            (trips, 0.0, StopMode::Imposed)
         }
+        Emergency::None => return Ok((out, runs, steps)),
+    };
+    for ((samples, &t), &f) in trips.iter().zip(&times).zip(&fractions) {
+        let states = states_of(design, samples);
+        let kin = stop::kinematics_from(samples, t);
+        let report = stop::stop_report(design, &params, &kin, after_s, mode)?;
+        let onset = stop::slip_onset(design, &states);
+        let position = Position::Stop { fraction: f, t_s: t };
+        let case = stop_case(design, payload, dir, position, x0, Level::Dynamic4, &states, report, onset);
+        out.push(rope_dynamics_labels(design, case));
     }
     Ok((out, runs, steps))
 }

@@ -149,30 +149,28 @@ fn write_into(dir: &Path, summary: &Summary, run: &RunResult, options: ReportOpt
         run.scenes.par_iter().try_for_each(|scene| write_scene(dir, summary, scene, options))?;
         compare::write(dir, options.compare, &run.scenes, options.plots)
     };
-    let document =
-        || options.document.map_or(Ok(()), |(design, provenance)| write_document(dir, design, provenance, run));
-    if options.plots {
-        // The document embeds the figures the scenes draw.
-        scenes()?;
-        document()
+    let html = || {
+        options.document.map_or(Ok(()), |(design, provenance)| {
+            let path = dir.join("report.html");
+            html::write(&path, &html::Context { design, run, provenance, dir }).map_err(io(&path))
+        })
+    };
+    let workbook = || {
+        options.document.map_or(Ok(()), |(design, _)| {
+            let path = dir.join("checks.xlsx");
+            xlsx::write_checks(&path, &design.title, run, &design.inputs)
+                .map_err(|source| ReportError::Xlsx { path: path.display().to_string(), source })
+        })
+    };
+    // The calculation report embeds the figures the scenes draw: it follows them; the checks'
+    // workbook needs none and is written beside them.
+    let (figures_and_html, workbook) = if options.plots {
+        rayon::join(|| scenes().and_then(|()| html()), workbook)
     } else {
-        let (scenes, document) = rayon::join(scenes, document);
-        scenes.and(document)
-    }
-}
-
-/// The calculation report (after the figures it embeds) and the checks' workbook.
-fn write_document(
-    dir: &Path,
-    design: &crate::design::Design,
-    provenance: &html::Provenance,
-    run: &RunResult,
-) -> Result<(), ReportError> {
-    let path = dir.join("report.html");
-    html::write(&path, &html::Context { design, run, provenance, dir }).map_err(io(&path))?;
-    let path = dir.join("checks.xlsx");
-    xlsx::write_checks(&path, &design.title, run, &design.inputs)
-        .map_err(|source| ReportError::Xlsx { path: path.display().to_string(), source })
+        let (scenes, (html, workbook)) = rayon::join(scenes, || rayon::join(html, workbook));
+        (scenes.and(html), workbook)
+    };
+    figures_and_html.and(workbook)
 }
 
 /// A scene's folder: distribution (and history) CSV and plots.

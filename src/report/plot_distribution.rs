@@ -7,7 +7,7 @@
 use super::figure_size::FigureKind;
 use super::friction_colour::{HATCH, hatch_segments};
 use super::plot::Y_LABEL_AREA;
-use super::plot::{Area, Chart, PlotError, font, font_ready, padded_range, tick_format};
+use super::plot::{Area, Chart, PlotError, font, padded_range, render_bare, tick_format};
 use super::plot_series::{HATCH_SPACING, legend_strip};
 use super::plot_zones::{LegendEntry, Swatch, ZoneShade, shade_legend, zone_shades};
 use crate::wrap::{Distribution, Sample};
@@ -29,13 +29,7 @@ const JDP: RGBColor = RGBColor(20, 130, 60);
 
 /// Draws T(θ) and q(θ) with ±μn bounds, stick/slip shading and the JDP to a PNG file.
 pub fn plot_distribution(path: &Path, title: &str, dist: &Distribution) -> Result<(), PlotError> {
-    let fail = |message: String| PlotError { path: path.display().to_string(), message };
-    if !font_ready() {
-        return Err(fail("the embedded font cannot be loaded".to_string()));
-    }
-    let root = BitMapBackend::new(path, (WIDTH, HEIGHT)).into_drawing_area();
-    draw(&root, title, dist).map_err(fail)?;
-    root.present().map_err(|e| fail(e.to_string()))
+    render_bare(path, (WIDTH, HEIGHT), |root| draw(root, title, dist))
 }
 
 /// What distribution.png shows: the series (kN, kN/rad over θ in degrees), the shaded zones,

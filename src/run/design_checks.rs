@@ -26,13 +26,15 @@ impl DesignResult {
     }
 }
 
-/// Evaluates the matrix (`rope_dynamics`: with its level-4 cases) and the design checks over the
-/// matrix's and the scenes' static states; the peak contact force comes from the scenes'
-/// distributions.
-pub fn evaluate(design: &Design, scenes: &[SceneResult], rope_dynamics: bool) -> Result<DesignResult, RunError> {
-    let matrix = load_cases::evaluate(design, rope_dynamics)
-        .transpose()
-        .map_err(|source| RunError::Level4 { scene: "[load_cases]".into(), source })?;
+/// The design checks over the load-case matrix's (as [`load_cases::evaluate`] made it: it needs
+/// the design alone, so it runs beside the scenes) and the scenes' static states; the peak
+/// contact force comes from the scenes' distributions.
+pub fn evaluate(
+    design: &Design,
+    scenes: &[SceneResult],
+    matrix: Option<Result<MatrixResult, level4::Level4Error>>,
+) -> Result<DesignResult, RunError> {
+    let matrix = matrix.transpose().map_err(|source| RunError::Level4 { scene: "[load_cases]".into(), source })?;
     let mut statics = Vec::new();
     if let Some(m) = &matrix {
         for c in m.cases.iter().filter(|c| matches!(c.position, Position::Travel { .. })) {

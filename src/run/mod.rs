@@ -311,12 +311,20 @@ pub fn run_all_with_progress(
     progress: &(dyn Fn(f64) + Sync),
 ) -> Result<RunResult, RunError> {
     let start = Instant::now();
-    let mut result = run_with_progress(design, scenes, options, progress)?;
     let rope_dynamics = !matches!(
         options.request,
         plan::Request::ChecksOnly | plan::Request::Full { forced_level: Some(Level::Closed0) }
     );
-    let checks = design_checks::evaluate(design, &result.scenes, rope_dynamics)?;
+    // The load-case matrix needs the design alone: it runs on a thread of its own beside the
+    // scenes (its level-4 cases on the pool's free cores), not after them.
+    let (scenes_run, matrix) = std::thread::scope(|s| {
+        let matrix = s.spawn(|| crate::load_cases::evaluate(design, rope_dynamics));
+        let scenes_run = run_with_progress(design, scenes, options, progress);
+        (scenes_run, matrix.join())
+    });
+    let mut result = scenes_run?;
+    let matrix = matrix.unwrap_or_else(|panic| std::panic::resume_unwind(panic));
+    let checks = design_checks::evaluate(design, &result.scenes, matrix)?;
     result.work += Work::increments(checks.matrix.as_ref().map_or(0, |m| m.rope_dynamics_steps));
     result.design = Some(checks);
     result.runtime_ms = start.elapsed().as_secs_f64() * 1e3;
