@@ -138,6 +138,51 @@ fn reordering_the_ropes_reorders_ropes_csv() {
             }
         }
     }
+    // The sensitivity of the rope-dynamics checks (their reruns at the ends of ζ, μ and EA, and
+    // the thresholds) and the rigid/dynamic overlay take the ropes as a set: the same records
+    // whichever rope is listed first, either way round (sums in another order: 1e-9 relative).
+    let (ja, jb) = (summary(&a), summary(&b));
+    let (sa, sb) = (&ja["scenes"][0], &jb["scenes"][0]);
+    let records = |s: &serde_json::Value| -> Vec<serde_json::Value> {
+        let checks = s["checks"].as_array().expect("checks");
+        let with = checks.iter().filter(|c| c["sensitivity"].as_array().is_some_and(|r| !r.is_empty()));
+        with.map(|c| serde_json::json!([c["name"], c["sensitivity"], c["thresholds"]])).collect()
+    };
+    assert!(!records(sa).is_empty(), "the trip's rope-dynamics checks carry sensitivity records");
+    assert!(sa["rigid_dynamic"].is_object(), "the trip has its rigid/dynamic overlay");
+    for (x, y) in [(sa, sb), (sb, sa)] {
+        same("sensitivity", &serde_json::json!(records(x)), &serde_json::json!(records(y)));
+        same("rigid_dynamic", &x["rigid_dynamic"], &y["rigid_dynamic"]);
+    }
+}
+
+fn summary(out: &Path) -> serde_json::Value {
+    serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).expect("summary.json")).expect("JSON")
+}
+
+/// `a` and `b` hold the same keys, strings and flags, and numbers within 1e-9 of each other
+/// relative (1e-12 absolute near 0).
+fn same(at: &str, a: &serde_json::Value, b: &serde_json::Value) {
+    use serde_json::Value;
+    match (a, b) {
+        (Value::Number(x), Value::Number(y)) => {
+            let (x, y) = (x.as_f64().expect("a number"), y.as_f64().expect("a number"));
+            assert!((x - y).abs() <= 1e-9 * x.abs().max(y.abs()) + 1e-12, "{at}: {x} against {y}");
+        }
+        (Value::Array(x), Value::Array(y)) => {
+            assert_eq!(x.len(), y.len(), "{at}: lengths");
+            for (i, (p, q)) in x.iter().zip(y).enumerate() {
+                same(&format!("{at}[{i}]"), p, q);
+            }
+        }
+        (Value::Object(x), Value::Object(y)) => {
+            assert_eq!(x.keys().collect::<Vec<_>>(), y.keys().collect::<Vec<_>>(), "{at}: keys");
+            for (k, p) in x {
+                same(&format!("{at}.{k}"), p, &y[k]);
+            }
+        }
+        _ => assert_eq!(a, b, "{at}"),
+    }
 }
 
 #[test]

@@ -99,8 +99,9 @@ pub(crate) fn render_bare(
 }
 
 /// Writes the RGB `pixels` of a `size` figure to `path` as an 8-bit PNG with the fast deflate
-/// and one row filter for every row (Paeth): the adaptive choice per row costs five filters a
-/// row for files about 5 % smaller (docs/performance.md, "Figures").
+/// and one row filter for every row (Paeth): the adaptive choice per row tries five filters a
+/// row for files about 5 % smaller, a third of the report's CPU time (docs/performance.md, "The
+/// sensitivity of the rope-dynamics checks").
 fn write_png(path: &Path, pixels: &[u8], size: (u32, u32)) -> Result<(), PlotError> {
     let fail = fail_at(path);
     let file = std::fs::File::create(path).map_err(|x| fail(x.to_string()))?;

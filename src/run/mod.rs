@@ -218,21 +218,22 @@ fn planned(design: &Design, scenes: &[&Scene], options: Options) -> Result<Vec<(
     if options.nodes == 0 || options.nodes > MAX_NODES {
         return Err(RunError::Nodes(options.nodes));
     }
-    scenes
-        .iter()
-        .map(|scene| {
-            let plan = plan::plan_with_lining(scene, options.request, design.lining.is_some())?;
-            let e = cost::estimate(design, scene, &plan, options.nodes, options.solver);
-            if e.seconds > options.cost_limit_s as f64 || e.memory_bytes > cost::MEMORY_LIMIT_BYTES {
-                return Err(RunError::Costly {
-                    scene: scene.name.clone(),
-                    estimate: Box::new(e),
-                    limit_s: options.cost_limit_s,
-                });
-            }
-            Ok((plan, e))
-        })
-        .collect()
+    // Filled in place: a plan and its estimate are large, and a collect through `?` would grow
+    // the vector (and copy them) step by step.
+    let mut out = Vec::with_capacity(scenes.len());
+    for scene in scenes {
+        let plan = plan::plan_with_lining(scene, options.request, design.lining.is_some())?;
+        let e = cost::estimate(design, scene, &plan, options.nodes, options.solver);
+        if e.seconds > options.cost_limit_s as f64 || e.memory_bytes > cost::MEMORY_LIMIT_BYTES {
+            return Err(RunError::Costly {
+                scene: scene.name.clone(),
+                estimate: Box::new(e),
+                limit_s: options.cost_limit_s,
+            });
+        }
+        out.push((plan, e));
+    }
+    Ok(out)
 }
 
 /// [`run`], calling `progress` with each scene's estimated seconds when it is done. Every
@@ -243,7 +244,12 @@ pub fn run_with_progress(
     options: Options,
     progress: &(dyn Fn(f64) + Sync),
 ) -> Result<RunResult, RunError> {
-    let (plans, estimates): (Vec<Plan>, Vec<Estimate>) = planned(design, scenes, options)?.into_iter().unzip();
+    let planned = planned(design, scenes, options)?;
+    let (mut plans, mut estimates) = (Vec::with_capacity(planned.len()), Vec::with_capacity(planned.len()));
+    for (plan, estimate) in planned {
+        plans.push(plan);
+        estimates.push(estimate);
+    }
     let start = Instant::now();
     // With fewer scenes than threads, a scene steps the two sides of its suspended ropes on two
     // threads; with more, the scenes keep the cores busy and the paired steps are cheaper. A

@@ -62,8 +62,11 @@ pub trait WrapModel {
     /// Applies the first sample's end tensions without motion (the state before the first row).
     fn settle(&mut self) -> Result<(), Self::Error>;
     /// Steps the state to `t_s` (at or after its current time) under the history's end tensions
-    /// and speed.
+    /// and speed: one increment of the run, within one sample interval (the runner steps to the
+    /// instant of every sample it passes).
     fn advance_to(&mut self, t_s: f64) -> Result<(), Self::Error>;
+    /// The instant the state stands at (s).
+    fn time_s(&self) -> f64;
     /// Arcs, JDP and peak utilization of the current state (and its stick/creep zones when
     /// `zones`).
     fn summary(&self, zones: bool) -> Result<WrapSummary, RootError>;

@@ -1,5 +1,6 @@
-//! The rows of a history run: the model stepped from row to row, each row's end state and
-//! summary (made in place, or by a job on another thread), the map rows and the snapshots.
+//! The rows of a history run: the model stepped from row to row, one sample interval at a time
+//! ([`step_to`]), each row's end state and summary (made in place, or by a job on another
+//! thread), the map rows and the snapshots.
 
 use super::sample::{interpolate, speed_slope};
 use super::{HistoryRun, HistorySample, Output, Snapshot, WrapModel};
@@ -13,6 +14,25 @@ pub(super) trait RowSamples<M> {
     /// The history interpolated at `t_s`, the speed's slope there, and whether `t_s` is the last
     /// sample's time; a growing history is first made to reach past `t_s` (or to its end).
     fn at(&mut self, model: &mut M, t_s: f64) -> (HistorySample, f64, bool);
+    /// The instants of the samples strictly between `from_s` and `to_s` (the history made to
+    /// reach past `to_s` first).
+    fn between(&mut self, model: &mut M, from_s: f64, to_s: f64) -> Vec<f64>;
+}
+
+/// The instants of `samples` strictly between `from_s` and `to_s`.
+fn instants(samples: &[HistorySample], from_s: f64, to_s: f64) -> Vec<f64> {
+    let (a, b) = (samples.partition_point(|s| s.t_s <= from_s), samples.partition_point(|s| s.t_s < to_s));
+    samples[a..b.max(a)].iter().map(|s| s.t_s).collect()
+}
+
+/// Steps `model` to `t_s` one sample interval at a time: to the instant of each sample it
+/// passes on the way, then to `t_s` (stepping to a sample's instant and on from it is stepping
+/// past it: the same state to the last bit).
+fn step_to<M: WrapModel, S: RowSamples<M>>(model: &mut M, source: &mut S, t_s: f64) -> Result<(), M::Error> {
+    for at in source.between(model, model.time_s(), t_s) {
+        model.advance_to(at)?;
+    }
+    model.advance_to(t_s)
 }
 
 /// A whole history, given.
@@ -21,6 +41,10 @@ pub(super) struct Whole<'s>(pub &'s [HistorySample]);
 impl<M> RowSamples<M> for Whole<'_> {
     fn at(&mut self, _: &mut M, t_s: f64) -> (HistorySample, f64, bool) {
         inputs(self.0, t_s)
+    }
+
+    fn between(&mut self, _: &mut M, from_s: f64, to_s: f64) -> Vec<f64> {
+        instants(self.0, from_s, to_s)
     }
 }
 
@@ -32,13 +56,25 @@ pub(super) struct Fed<'f> {
 
 impl<M: super::Growing> RowSamples<M> for Fed<'_> {
     fn at(&mut self, model: &mut M, t_s: f64) -> (HistorySample, f64, bool) {
+        self.reach(model, t_s);
+        inputs(model.samples(), t_s)
+    }
+
+    fn between(&mut self, model: &mut M, from_s: f64, to_s: f64) -> Vec<f64> {
+        self.reach(model, to_s);
+        instants(model.samples(), from_s, to_s)
+    }
+}
+
+impl Fed<'_> {
+    /// Makes the history reach past `t_s` (or to its end).
+    fn reach<M: super::Growing>(&mut self, model: &mut M, t_s: f64) {
         while !self.done && !model.samples().last().is_some_and(|s| s.t_s > t_s) {
             match (self.next)() {
                 Some(more) => model.extend_samples(&more),
                 None => self.done = true,
             }
         }
-        inputs(model.samples(), t_s)
     }
 }
 
@@ -149,11 +185,11 @@ fn step_rows<'s, M: WrapModel, S: RowSamples<M>>(
         while let Some(k) = keeps.pop_if(|k| t > k.at_s) {
             // The state at a sample's instant: stepping there and on is stepping past it.
             source.at(model, k.at_s);
-            model.advance_to(k.at_s)?;
+            step_to(model, source, k.at_s)?;
             (k.keep)(model);
         }
         let (sample, slope, last) = source.at(model, t);
-        model.advance_to(t)?;
+        step_to(model, source, t)?;
         let end = EndState::of_sample(&sample, slope, mass_per_m_kg);
         let snapshot = output.is_snapshot(t, last);
         if output.utilization_map {

@@ -63,6 +63,10 @@ impl WrapModel for Simulation<'_> {
         Ok(Simulation::advance_to(self, t_s)?)
     }
 
+    fn time_s(&self) -> f64 {
+        self.t_s
+    }
+
     fn summary(&self, zones: bool) -> Result<WrapSummary, RootError> {
         let (held, carried) = self.profile.screened();
         summary::summarize_screened(&held, carried, &self.law(), zones)

@@ -30,6 +30,10 @@ impl WrapModel for Simulation<'_> {
         Simulation::advance_to(self, t_s)
     }
 
+    fn time_s(&self) -> f64 {
+        self.t_s
+    }
+
     fn summary(&self, zones: bool) -> Result<WrapSummary, RootError> {
         summarize(&self.state, self.params.wrap.mu, zones)
     }
