@@ -114,7 +114,7 @@ pub(super) fn wrap_model<'a>(
                     let entry = if run_in[0].speed_m_s >= 0.0 { first.t1_n } else { first.t2_n };
                     let start = level3::State::uniform(alpha, options.nodes, entry);
                     let mut sim = level3::Simulation::new(params, &run_in, start).map_err(err)?;
-                    history::run_in(&mut sim, run_in.last().map_or(0.0, |s| s.t_s)).map_err(err)?;
+                    history::run_in(&mut sim, &run_in).map_err(err)?;
                     stats = sim.level3;
                     sim.state
                 }

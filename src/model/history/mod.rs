@@ -134,11 +134,15 @@ pub fn run_with<M: WrapModel>(
     Ok(finished(&model, runs.into_iter().next().expect("the run's rows")))
 }
 
-/// Settles `model` and steps it to `t_end_s` with no rows: a run-in whose end state alone is
-/// wanted (the elastic lining's steady rolling start, from which a history then runs).
-pub fn run_in<M: WrapModel>(model: &mut M, t_end_s: f64) -> Result<(), M::Error> {
+/// Settles `model` and steps it through `samples` (the history it was made with) to the last,
+/// one sample interval at a time, with no rows: a run-in whose end state alone is wanted (the
+/// elastic lining's steady rolling start, from which a history then runs).
+pub fn run_in<M: WrapModel>(model: &mut M, samples: &[HistorySample]) -> Result<(), M::Error> {
     model.settle()?;
-    model.advance_to(t_end_s)
+    for s in samples.iter().skip(1) {
+        model.advance_to(s.t_s)?;
+    }
+    Ok(())
 }
 
 /// The run with the model's solver report and root searches, and the model's counters.
