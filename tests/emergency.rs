@@ -4,6 +4,8 @@
 //! a brake that slackens a rope is an error saying which side, when, the tension it would need
 //! and what to change.
 
+mod common;
+
 use std::path::Path;
 use wrapcalc::design::{Design, DutyCycleScene, HistorySample, SceneKind};
 use wrapcalc::dynamics::Side;
@@ -30,19 +32,7 @@ fn sheet_text_mu(stop_s: f64, decel_m_s2: f64, mirror: bool, outputs: &str, mu: 
     let (payload, direction) = if mirror {
         let plain = sheet::load(&path).expect("the bundled sheet loads");
         let d = level4::lift_travel_m(plain.hoist.as_ref().expect("a hoist"));
-        for (from, to) in [
-            ("conveyance1_kg = 65000.0", "conveyance1_kg = 95000.0".to_string()),
-            ("conveyance2_kg = 95000.0", "conveyance2_kg = 95000.0".to_string()),
-            // The guide sheave (and its inertia) goes with the counterweight's rope.
-            ("side = 2 ", "side = 1 ".to_string()),
-            ("side1_length_m = 463.56", format!("side1_length_m = {:?}", 51.34 + d)),
-            ("side2_length_m = 51.34", format!("side2_length_m = {:?}", 463.56 - d)),
-            ("tail1_length_m = 28.25", format!("tail1_length_m = {:?}", 453.25 - d)),
-            ("tail2_length_m = 453.25", format!("tail2_length_m = {:?}", 28.25 + d)),
-        ] {
-            assert!(head.contains(from), "{from} in the bundled sheet");
-            head = head.replacen(from, &to, 1);
-        }
+        head = common::sheets::mirrored_guo2020_head(&head, d);
         (0.0, "lower")
     } else {
         (30000.0, "lift")

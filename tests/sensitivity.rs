@@ -311,17 +311,7 @@ fn stop_sheet(direction: &str, mirror: bool) -> String {
     let mut direction = direction.to_string();
     let mut payload = 30000.0;
     if mirror {
-        for (from, to) in [
-            ("conveyance1_kg = 65000.0", "conveyance1_kg = 95000.0".to_string()),
-            ("conveyance2_kg = 95000.0", "conveyance2_kg = 95000.0".to_string()),
-            ("side = 2 ", "side = 1 ".to_string()),
-            ("side1_length_m = 463.56", format!("side1_length_m = {:?}", 51.34 + d)),
-            ("side2_length_m = 51.34", format!("side2_length_m = {:?}", 463.56 - d)),
-            ("tail1_length_m = 28.25", format!("tail1_length_m = {:?}", 453.25 - d)),
-            ("tail2_length_m = 453.25", format!("tail2_length_m = {:?}", 28.25 + d)),
-        ] {
-            head = with(&head, from, &to);
-        }
+        head = common::sheets::mirrored_guo2020_head(&head, d);
         payload = 0.0;
         direction = if direction == "lift" { "lower".into() } else { "lift".into() };
     }

@@ -219,18 +219,23 @@ fn the_import_scanner_finds_a_stage_above() {
     assert_eq!(found, want.to_vec());
 }
 
-#[test]
-fn no_import_runs_back_up() {
+/// Every source file under src/ with its path relative to src/ (`/`-separated) and its text.
+fn source_texts() -> Vec<(String, String)> {
     let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
     let mut paths = Vec::new();
     sources(&src, &mut paths);
-    let files: Vec<(String, String)> = paths
+    paths
         .iter()
         .map(|f| {
             let rel = f.strip_prefix(&src).unwrap_or(f).to_string_lossy().replace('\\', "/");
             (rel, std::fs::read_to_string(f).expect("a source file"))
         })
-        .collect();
+        .collect()
+}
+
+#[test]
+fn no_import_runs_back_up() {
+    let files = source_texts();
     // Every stage folder of src/ is placed (a new one must be given its place).
     let mut stages: Vec<String> =
         files.iter().filter_map(|(rel, _)| rel.split_once('/').map(|(s, _)| s.to_string())).collect();
@@ -270,16 +275,7 @@ fn second_runners(files: &[(String, String)]) -> Vec<String> {
 
 #[test]
 fn one_history_runner() {
-    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
-    let mut paths = Vec::new();
-    sources(&src, &mut paths);
-    let files: Vec<(String, String)> = paths
-        .iter()
-        .map(|f| {
-            let rel = f.strip_prefix(&src).unwrap_or(f).to_string_lossy().replace('\\', "/");
-            (rel, std::fs::read_to_string(f).expect("a source file"))
-        })
-        .collect();
+    let files = source_texts();
     let second = second_runners(&files);
     assert!(second.is_empty(), "a history runner beside model::history::run:\n{}", second.join("\n"));
     // The scanner sees a runner of its own and a wrapper by the old name.

@@ -31,3 +31,27 @@ pub fn run_sheet(file: &str, text: &str) -> wrapcalc::run::RunResult {
     let scenes: Vec<_> = d.scenes.iter().collect();
     wrapcalc::run::run_all(&d, &scenes, wrapcalc::run::Options::default()).expect("runs")
 }
+
+/// The head of the reference sheet `tables/guo2020.toml` (`head`: its text before the first
+/// `[[scene]]`) mirrored: the 95 t counterweight on side 1 and the 65 t cage on side 2, the
+/// guide sheave (and its inertia) with the counterweight's rope, and the hanging lengths and
+/// tail ropes swapped at the start of a lift of the hoist's travel `travel_m`, which is where
+/// the plain sheet's lowering starts. A scene loads the cage's payload on side 2 and reverses
+/// the direction, so that each side moves as the other does in the plain sheet.
+pub fn mirrored_guo2020_head(head: &str, travel_m: f64) -> String {
+    let d = travel_m;
+    let mut head = head.to_string();
+    for (from, to) in [
+        ("conveyance1_kg = 65000.0", "conveyance1_kg = 95000.0".to_string()),
+        ("conveyance2_kg = 95000.0", "conveyance2_kg = 95000.0".to_string()),
+        ("side = 2 ", "side = 1 ".to_string()),
+        ("side1_length_m = 463.56", format!("side1_length_m = {:?}", 51.34 + d)),
+        ("side2_length_m = 51.34", format!("side2_length_m = {:?}", 463.56 - d)),
+        ("tail1_length_m = 28.25", format!("tail1_length_m = {:?}", 453.25 - d)),
+        ("tail2_length_m = 453.25", format!("tail2_length_m = {:?}", 28.25 + d)),
+    ] {
+        assert_eq!(head.matches(from).count(), 1, "{from:?} once in the bundled sheet");
+        head = head.replacen(from, &to, 1);
+    }
+    head
+}
