@@ -68,10 +68,7 @@ pub(super) fn mark(
         .any(|(p, _)| matches!(p, Parameter::BrakeIdle | Parameter::BrakeBuildUp))
         .then(|| rerun::shared_start(design, cycle, cycle))
         .flatten();
-    let shared = |p: Parameter| rerun::Shared {
-        ropes: if p == Parameter::Friction { ropes } else { None },
-        start: if matches!(p, Parameter::BrakeIdle | Parameter::BrakeBuildUp) { brake_start.as_ref() } else { None },
-    };
+    let shared = |p: Parameter| rerun::Shared::for_parameter(p, ropes, brake_start.as_ref());
     let ends: Vec<End> =
         jobs.par_iter().map(|(p, x)| (*x, rerun::rope_checks(&p.with(design, *x), cycle, shared(*p)))).collect();
     for ((parameter, (low, high, source)), pair) in ranges.iter().zip(ends.chunks(2)) {

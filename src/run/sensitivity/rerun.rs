@@ -9,6 +9,7 @@
 use super::super::rigid_beside::code_beside;
 use super::super::trip::{self, Trip};
 use crate::check::Check;
+use crate::design::sensitivity::Parameter;
 use crate::design::{Design, DutyCycleScene};
 use crate::dynamics::Kinematics;
 use crate::model::level0;
@@ -29,6 +30,22 @@ pub struct Shared<'a> {
     pub ropes: Option<&'a RopeRun>,
     /// The trip's start, integrated once, that the rerun's ropes continue from.
     pub start: Option<&'a RopePrefix>,
+}
+
+impl<'a> Shared<'a> {
+    /// What a rerun with `parameter` changed takes over of the run as made: the suspended ropes
+    /// (`ropes`) where the input leaves them as they are (μ), the trip's start up to the brake's
+    /// trip (`brake_start`) for the brake's times, nothing for the rest.
+    pub fn for_parameter(
+        parameter: Parameter,
+        ropes: Option<&'a RopeRun>,
+        brake_start: Option<&'a RopePrefix>,
+    ) -> Self {
+        Self {
+            ropes: if parameter == Parameter::Friction { ropes } else { None },
+            start: if matches!(parameter, Parameter::BrakeIdle | Parameter::BrakeBuildUp) { brake_start } else { None },
+        }
+    }
 }
 
 /// The start of `cycle`'s trip that a rerun of `other` (the same hoist and inputs, a motion

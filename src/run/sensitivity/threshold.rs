@@ -57,14 +57,7 @@ impl Case<'_> {
 
     /// The check's margin with `parameter` at `x`, by a rerun.
     pub fn margin_at(&self, parameter: Parameter, x: f64) -> Result<f64, NotRun> {
-        let shared = rerun::Shared {
-            ropes: if parameter == Parameter::Friction { self.ropes } else { None },
-            start: if matches!(parameter, Parameter::BrakeIdle | Parameter::BrakeBuildUp) {
-                self.brake_start
-            } else {
-                None
-            },
-        };
+        let shared = rerun::Shared::for_parameter(parameter, self.ropes, self.brake_start);
         let checks = rerun::rope_checks(&parameter.with(self.design, x), self.cycle, shared);
         self.margin_in(checks, &format!("{} = {x}", parameter.name()))
     }
