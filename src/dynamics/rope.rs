@@ -76,6 +76,29 @@ impl Coeffs {
         self.energy_of(&Forms::new(q, v))
     }
 
+    /// `E = ½q̇ᵀMq̇ + ½qᵀKq − g·μᵀq + V·μᵀq̇`, the side's energy relative to the rigid motion
+    /// (the energy ledger's, [`super::energy_ledger`]): μ the column sums of the mass matrix with
+    /// the tangent point's row (`6m_e` at an inner node, `3m_e + M_s` at the end), `speed_down` V
+    /// the side's rigid downward speed, g the gravity, J.
+    pub fn relative_energy_j(&self, g: f64, speed_down: f64, q: &[f64], v: &[f64]) -> f64 {
+        self.relative_energy_of(&Forms::new(q, v), g, speed_down)
+    }
+
+    /// [`Self::relative_energy_j`] of one state with these coefficients less with `before`'s:
+    /// the work a change of coefficients does on the state, with one pass over the nodes.
+    pub fn relative_energy_change_j(&self, before: &Coeffs, g: f64, speed_down: f64, q: &[f64], v: &[f64]) -> f64 {
+        let f = Forms::new(q, v);
+        self.relative_energy_of(&f, g, speed_down) - before.relative_energy_of(&f, g, speed_down)
+    }
+
+    fn relative_energy_of(&self, f: &Forms, g: f64, speed_down: f64) -> f64 {
+        let (inner, end) = (6.0 * self.me, 3.0 * self.me + self.end_mass_kg);
+        let mu_q = inner * (f.q_sum - f.q_end) + end * f.q_end;
+        let mu_v = inner * (f.v_sum - f.v_end) + end * f.v_end;
+        self.me * f.mass + 0.5 * self.end_mass_kg * f.v_end * f.v_end + 0.5 * self.ke * f.strain - g * mu_q
+            + speed_down * mu_v
+    }
+
     /// The energy from the coefficient-free forms of a state.
     fn energy_of(&self, f: &Forms) -> f64 {
         self.me * f.mass + 0.5 * self.end_mass_kg * f.v_end * f.v_end + 0.5 * self.ke * f.strain
@@ -96,6 +119,8 @@ struct Forms {
     strain_rate: f64,
     /// `Σ_{i=1..n} q_i`.
     q_sum: f64,
+    /// `Σ_{i=1..n} v_i`.
+    v_sum: f64,
     q_end: f64,
     v_end: f64,
 }
@@ -109,6 +134,7 @@ impl Forms {
             f.strain += (qi - q_prev) * (qi - q_prev);
             f.strain_rate += (vi - v_prev) * (vi - v_prev);
             f.q_sum += qi;
+            f.v_sum += vi;
             (q_prev, v_prev) = (qi, vi);
         }
         (f.q_end, f.v_end) = (q_prev, v_prev);

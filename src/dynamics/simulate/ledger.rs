@@ -79,8 +79,7 @@ pub fn energy_ledger(
             let q: Vec<f64> = q0.iter().zip(&s.state.q).map(|(a, b)| 0.5 * (a + b)).collect();
             let v: Vec<f64> = v0.iter().zip(&s.state.v).map(|(a, b)| 0.5 * (a + b)).collect();
             let speed = s.side.down_sign() * speed_mid;
-            parametric_j +=
-                relative_energy_j(&s.coeffs, p.g_m_s2, speed, &q, &v) - relative_energy_j(c0, p.g_m_s2, speed, &q, &v);
+            parametric_j += s.coeffs.relative_energy_change_j(c0, p.g_m_s2, speed, &q, &v);
         }
         (t_prev, kin) = (t, next);
         rows.push(row_of(p, t, kin, &sides, (dissipated_j, parametric_j)));
@@ -97,7 +96,7 @@ fn row_of(
 ) -> LedgerRow {
     let energy = |s: &Side2| {
         let speed = s.side.down_sign() * k.speed_m_s;
-        relative_energy_j(&s.coeffs, p.g_m_s2, speed, &s.state.q, &s.state.v)
+        s.coeffs.relative_energy_j(p.g_m_s2, speed, &s.state.q, &s.state.v)
     };
     LedgerRow {
         t_s,
@@ -108,21 +107,4 @@ fn row_of(
         dissipated_j,
         parametric_j,
     }
-}
-
-/// `E_s = ½q̇ᵀMq̇ + ½qᵀKq − g·μᵀq + V_s·μᵀq̇` of one side with coefficients `c` (module docs),
-/// `speed_down` = V_s.
-fn relative_energy_j(c: &Coeffs, g: f64, speed_down: f64, q: &[f64], v: &[f64]) -> f64 {
-    let n = q.len();
-    let (mut kinetic, mut strain, mut mu_q, mut mu_v) = (0.0, 0.0, 0.0, 0.0);
-    let (mut q_prev, mut v_prev) = (0.0, 0.0);
-    for (i, (&qi, &vi)) in q.iter().zip(v).enumerate() {
-        kinetic += v_prev * v_prev + v_prev * vi + vi * vi;
-        strain += (qi - q_prev) * (qi - q_prev);
-        let mu = if i + 1 < n { 6.0 * c.me } else { 3.0 * c.me + c.end_mass_kg };
-        mu_q += mu * qi;
-        mu_v += mu * vi;
-        (q_prev, v_prev) = (qi, vi);
-    }
-    c.me * kinetic + 0.5 * c.end_mass_kg * v_prev * v_prev + 0.5 * c.ke * strain - g * mu_q + speed_down * mu_v
 }
